@@ -1,0 +1,4 @@
+#pragma once
+namespace sphmol {
+const char* version();
+}

@@ -1,0 +1,42 @@
+#pragma once
+// Cubic B-spline (Monaghan & Lattanzio 1985): seed 002 eq 15, seed 000 eq 58, seed 001 eq 8.
+// W = alpha_D (2/3 - R^2 + R^3/2) for R < 1, alpha_D/6 (2-R)^3 for 1 <= R < 2, R = r/h.
+// alpha_D = 1/h, 15/(7 pi h^2), 3/(2 pi h^3) in 1D/2D/3D; tests/unit/test_kernel_normalisation.cpp
+// checks each by GSL quadrature.
+#include <numbers>
+#include <string_view>
+
+namespace sphmol {
+
+template <int D>
+struct CubicSpline {
+  static constexpr int dimension = D;
+  static constexpr std::string_view name = "cubic_spline";
+  static constexpr double support = 2.0;
+  static constexpr bool available = true;
+  static constexpr double sigma = D == 1 ? 1.0 : D == 2 ? 15.0 / (7.0 * std::numbers::pi) : 3.0 / (2.0 * std::numbers::pi);
+
+  static double norm(double h) {
+    double hd = h;
+    for (int d = 1; d < D; ++d) hd *= h;
+    return sigma / hd;
+  }
+  static void eval(double r, double h, double& w, double& dw) {
+    const double q = r / h, a = norm(h);
+    if (q < 1.0) {
+      w = a * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
+      dw = a / h * (-2.0 * q + 1.5 * q * q);
+    } else if (q < 2.0) {
+      const double t = 2.0 - q;
+      w = a / 6.0 * t * t * t;
+      dw = -a / h * 0.5 * t * t;
+    } else {
+      w = 0.0;
+      dw = 0.0;
+    }
+  }
+  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
+  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
+};
+
+}  // namespace sphmol
