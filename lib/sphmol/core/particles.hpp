@@ -1,0 +1,40 @@
+#pragma once
+// All particles of a scene in structure-of-arrays form. Fluid particles occupy [0, n_fluid) and are
+// integrated; boundary (wall) particles follow and move by prescription, never by the ODE.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sphmol {
+
+enum class Kind : std::uint8_t { Fluid = 0, Wall = 1 };
+
+template <int D>
+struct Particles {
+  std::size_t n_fluid = 0;
+  std::array<std::vector<double>, D> x;  // positions
+  std::array<std::vector<double>, D> v;  // velocities (walls: the prescribed velocity)
+  std::vector<double> mass;
+  std::vector<double> rho;               // density (walls: fixed rest density)
+  std::vector<Kind> kind;
+  // Walls move rigidly with their prescribed velocity: x(t) = x_ref + v t.
+  std::array<std::vector<double>, D> x_ref;
+
+  std::size_t size() const { return mass.size(); }
+  std::size_t n_wall() const { return size() - n_fluid; }
+
+  void add(Kind k, const std::array<double, D>& pos, const std::array<double, D>& vel, double m, double density) {
+    for (int d = 0; d < D; ++d) {
+      x[d].push_back(pos[d]);
+      v[d].push_back(vel[d]);
+      x_ref[d].push_back(pos[d]);
+    }
+    mass.push_back(m);
+    rho.push_back(density);
+    kind.push_back(k);
+    if (k == Kind::Fluid) ++n_fluid;
+  }
+};
+
+}  // namespace sphmol

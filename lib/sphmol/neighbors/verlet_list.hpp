@@ -1,0 +1,62 @@
+#pragma once
+// A pair list built with radius (support + skin) and reused across Runge-Kutta stages and steps
+// until some particle has moved more than skin/2 from where it was at the build: then no pair can
+// have come within the support unseen. The test looks at the positions each RHS evaluation is
+// given, so it stays valid across rejected steps and stage positions alike.
+#include <array>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "sphmol/neighbors/neighbor_search.hpp"
+
+namespace sphmol {
+
+template <int D>
+class VerletList {
+ public:
+  VerletList(std::unique_ptr<NeighborSearch<D>> search, double support_radius, double skin)
+      : search_(std::move(search)), support_(support_radius), skin_(skin) {}
+
+  // Rebuilds if needed; returns true when it did.
+  bool update(const SearchInput<D>& in) {
+    if (!built_ || moved_too_far(in)) {
+      SearchInput<D> q = in;
+      q.radius = support_ + skin_;
+      search_->build(q, pairs_);
+      for (int d = 0; d < D; ++d) x_build_[d].assign(in.x[d], in.x[d] + in.n);
+      built_ = true;
+      ++rebuilds_;
+      return true;
+    }
+    return false;
+  }
+
+  const PairList& pairs() const { return pairs_; }
+  long rebuilds() const { return rebuilds_; }
+  double list_radius() const { return support_ + skin_; }
+  std::string_view search_name() const { return search_->name(); }
+
+ private:
+  bool moved_too_far(const SearchInput<D>& in) const {
+    const double limit2 = 0.25 * skin_ * skin_;
+    for (std::size_t i = 0; i < in.n; ++i) {
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double dx = in.domain->min_image(d, in.x[d][i] - x_build_[d][i]);
+        r2 += dx * dx;
+      }
+      if (r2 > limit2) return true;
+    }
+    return false;
+  }
+
+  std::unique_ptr<NeighborSearch<D>> search_;
+  double support_, skin_;
+  PairList pairs_;
+  std::array<std::vector<double>, D> x_build_;
+  bool built_ = false;
+  long rebuilds_ = 0;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,38 @@
+#pragma once
+// Laminar viscosity of Morris, Fox & Zhu (1997), J. Comput. Phys. 136:214, their eq. (8):
+//   dv_i/dt += sum_j m_j (mu_i + mu_j) / (rho_i rho_j) * (x_ij . grad_i W_ij) / (r_ij^2 + eta^2) * v_ij
+// with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2.
+#include "sphmol/rhs/term.hpp"
+
+namespace sphmol {
+
+template <int D>
+class MorrisViscosity final : public Term<D> {
+ public:
+  explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
+  std::string_view name() const override { return "morris_viscosity"; }
+  void apply(Workspace<D>& w) const override {
+    const auto& P = *w.pairs;
+    const auto& m = w.particles->mass;
+    const double eta2 = 0.01 * w.h * w.h;
+    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+      double a[D] = {};
+      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+        const std::uint32_t j = P.j[k];
+        double r2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double dx = w.separation(d, i, j);
+          r2 += dx * dx;
+        }
+        const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * w.F[k] * r2 / (r2 + eta2);
+        for (int d = 0; d < D; ++d) a[d] += s * (w.v[d][i] - w.v[d][j]);
+      }
+      for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
+    }
+  }
+
+ private:
+  double mu_;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,16 @@
+#pragma once
+// Builds the RHS of a scene from the configuration, once: the kernel pass, the neighbour search
+// with its skin, and the ordered list of terms (density -> EOS -> strain rate -> accelerations ->
+// position update). Nothing configured off is in the list.
+#include <memory>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/rhs/sph_system.hpp"
+
+namespace sphmol {
+
+template <int D>
+std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
+                                              double spacing);
+
+}  // namespace sphmol

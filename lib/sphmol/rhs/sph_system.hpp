@@ -1,0 +1,67 @@
+#pragma once
+// The particle ODE system dy/dt = f(t, y) of one scene: gathers positions and velocities from y
+// (and the prescribed wall motion at t), keeps the Verlet pair list current, evaluates the kernel
+// once per pair, then runs the scene's terms in order. Also supplies the CFL limit.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphmol/core/state_layout.hpp"
+#include "sphmol/neighbors/verlet_list.hpp"
+#include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/term.hpp"
+#include "sphmol/time/ode_system.hpp"
+
+namespace sphmol {
+
+// dt <= min(acoustic h/(c+|v|max), force sqrt(h/|a|max), viscous h^2/nu): each limit with its own
+// coefficient; a limit whose denominator is zero does not apply.
+struct CflLimits {
+  double acoustic = 0.25, force = 0.25, viscous = 0.125;
+  double sound_speed = 0.0;
+  double kinematic_viscosity = 0.0;
+};
+
+template <int D>
+class SphSystem final : public OdeSystem {
+ public:
+  SphSystem(Particles<D> particles, Domain<D> domain, double h, std::unique_ptr<KernelPass<D>> kernel,
+            std::vector<std::unique_ptr<Term<D>>> terms, std::unique_ptr<VerletList<D>> pairs, CflLimits cfl);
+
+  std::size_t size() const override { return layout_.size(); }
+  void rhs(double t, const double* y, double* ydot) override;
+  double stable_step() const override { return stable_step_; }
+  std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
+  std::size_t velocities_end() const override { return layout_.velocities_end(); }
+  long rhs_evaluations() const override { return rhs_evals_; }
+
+  const StateLayout<D>& layout() const { return layout_; }
+  const Particles<D>& particles() const { return particles_; }
+  const Domain<D>& domain() const { return domain_; }
+  double smoothing_length() const { return ws_.h; }
+  std::vector<double> initial_state() const;
+  std::vector<std::string> active_terms() const;
+  std::string_view kernel_name() const { return kernel_->kernel_name(); }
+  const VerletList<D>& pair_list() const { return *pairs_; }
+  // The density and pressure of the most recent evaluation (all particles).
+  const std::vector<double>& density() const { return ws_.rho; }
+  const std::vector<double>& pressure() const { return ws_.p; }
+
+ private:
+  Particles<D> particles_;
+  Domain<D> domain_;
+  StateLayout<D> layout_;
+  std::unique_ptr<KernelPass<D>> kernel_;
+  std::vector<std::unique_ptr<Term<D>>> terms_;
+  std::unique_ptr<VerletList<D>> pairs_;
+  CflLimits cfl_;
+  Workspace<D> ws_;
+  double stable_step_ = 0.0;
+  long rhs_evals_ = 0;
+};
+
+extern template class SphSystem<1>;
+extern template class SphSystem<2>;
+extern template class SphSystem<3>;
+
+}  // namespace sphmol

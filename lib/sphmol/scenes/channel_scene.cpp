@@ -1,0 +1,46 @@
+#include "sphmol/scenes/channel_scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/scenes/lattice_mass.hpp"
+
+namespace sphmol {
+
+ChannelScene build_channel_scene(const Config& config) {
+  const auto& g = config.geometry;
+  const auto& disc = config.discretization;
+  const double l = g.channel_height, L = g.channel_length;
+  const int ny = disc.particles_across > 0 ? disc.particles_across : static_cast<int>(std::lround(l / disc.spacing));
+  if (ny <= 0 || std::abs(ny * (l / ny) - l) > 1e-9 * l ||
+      (disc.particles_across == 0 && std::abs(ny * disc.spacing - l) > 1e-6 * l))
+    throw std::invalid_argument("discretization.spacing: channel_height must be a whole number of spacings");
+  const double dx = l / ny;
+  const int nx = static_cast<int>(std::lround(L / dx));
+  if (nx <= 0 || std::abs(nx * dx - L) > 1e-6 * L)
+    throw std::invalid_argument("geometry.channel_length: must be a whole number of particle spacings (" +
+                                std::to_string(dx) + " m)");
+  const double h = disc.smoothing_ratio * dx;
+  const double support = kernel_info<2>(disc.kernel).support * h;
+  const int layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support / dx));
+
+  ChannelScene s;
+  s.spacing = dx;
+  s.wall_layers = layers;
+  s.domain.lo = {0.0, -layers * dx};
+  s.domain.hi = {nx * dx, l + layers * dx};
+  s.domain.periodic = {true, false};
+  const double rho0 = config.fluid.density;
+  const double m = lattice_particle_mass<2>(disc.kernel, rho0, dx, h);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) s.particles.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, m, rho0);
+  for (int k = 0; k < layers; ++k)
+    for (int i = 0; i < nx; ++i) {
+      s.particles.add(Kind::Wall, {(i + 0.5) * dx, -(k + 0.5) * dx}, {0.0, 0.0}, m, rho0);
+      s.particles.add(Kind::Wall, {(i + 0.5) * dx, l + (k + 0.5) * dx}, {g.wall_velocity, 0.0}, m, rho0);
+    }
+  return s;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,91 @@
+#include "sphmol/time/arkode_erk.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sphmol {
+
+namespace {
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(std::string("ARKODE: ") + what + " failed: " + ERKStepGetReturnFlagName(flag));
+}
+}  // namespace
+
+ArkodeErk::ArkodeErk(Options o) : opt_(std::move(o)) {}
+
+ArkodeErk::~ArkodeErk() {
+  if (mem_) ERKStepFree(&mem_);
+  if (y_) N_VDestroy(y_);
+  if (ctx_) SUNContext_Free(&ctx_);
+}
+
+nlohmann::json ArkodeErk::describe() const {
+  nlohmann::json j{{"name", name()}, {"table", opt_.table}};
+  if (opt_.fixed_step) {
+    j["dt"] = *opt_.fixed_step;
+  } else {
+    j["rtol"] = opt_.rtol;
+    j["atol"] = opt_.atol;
+  }
+  return j;
+}
+
+int ArkodeErk::rhs_callback(double t, N_Vector y, N_Vector ydot, void* self) {
+  auto* me = static_cast<ArkodeErk*>(self);
+  me->sys_->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  return 0;
+}
+
+int ArkodeErk::stability_callback(N_Vector, double, double* hstab, void* self) {
+  *hstab = static_cast<ArkodeErk*>(self)->sys_->stable_step();
+  return 0;
+}
+
+void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
+  sys_ = &sys;
+  t_ = t0;
+  if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
+  y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+  // One evaluation at t0 primes the CFL limit used for the first step.
+  std::vector<double> f(sys.size());
+  sys.rhs(t0, y, f.data());
+
+  mem_ = ERKStepCreate(&ArkodeErk::rhs_callback, t0, y_, ctx_);
+  if (!mem_) throw std::runtime_error("ERKStepCreate failed");
+  check(ERKStepSetUserData(mem_, this), "SetUserData");
+  if (ERKStepSetTableName(mem_, opt_.table.c_str()) < 0)
+    throw std::runtime_error("ARKODE: unknown or non-explicit Butcher table '" + opt_.table + "'");
+  check(ERKStepSetMaxNumSteps(mem_, opt_.max_steps), "SetMaxNumSteps");
+  if (opt_.fixed_step) {
+    check(ERKStepSetFixedStep(mem_, *opt_.fixed_step), "SetFixedStep");
+  } else {
+    check(ERKStepSStolerances(mem_, opt_.rtol, opt_.atol), "SStolerances");
+    check(ERKStepSetStabilityFn(mem_, &ArkodeErk::stability_callback, this), "SetStabilityFn");
+    check(ERKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
+  }
+}
+
+void ArkodeErk::advance(double tout) {
+  check(ERKStepSetStopTime(mem_, tout), "SetStopTime");
+  double t = t_;
+  const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_NORMAL);
+  if (flag < 0)
+    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
+                             ERKStepGetReturnFlagName(flag));
+  t_ = t;
+}
+
+IntegratorStats ArkodeErk::stats() const {
+  IntegratorStats s;
+  long v = 0;
+  ERKStepGetNumSteps(mem_, &v);
+  s.steps = v;
+  ERKStepGetNumErrTestFails(mem_, &v);
+  s.rejected_steps = v;
+  ERKStepGetLastStep(mem_, &s.last_step);
+  return s;
+}
+
+}  // namespace sphmol

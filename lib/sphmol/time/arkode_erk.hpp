@@ -1,0 +1,46 @@
+#pragma once
+// SUNDIALS ARKODE ERKStep: any explicit Butcher table by name, adaptive (rtol/atol) with the CFL
+// limit supplied through the stability callback, or fixed step. The serial N_Vector wraps the
+// caller's state storage (N_VMake_Serial: no copy).
+#include <arkode/arkode_erkstep.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+
+#include <optional>
+
+#include "sphmol/time/integrator.hpp"
+
+namespace sphmol {
+
+class ArkodeErk final : public Integrator {
+ public:
+  struct Options {
+    std::string table = "ARKODE_DORMAND_PRINCE_7_4_5";
+    double rtol = 1e-6, atol = 1e-12;
+    std::optional<double> fixed_step;
+    long max_steps = 10'000'000;
+  };
+  explicit ArkodeErk(Options o);
+  ~ArkodeErk() override;
+  ArkodeErk(const ArkodeErk&) = delete;
+  ArkodeErk& operator=(const ArkodeErk&) = delete;
+
+  std::string name() const override { return "arkode_erk"; }
+  nlohmann::json describe() const override;
+  void initialize(OdeSystem& sys, double t0, double* y) override;
+  void advance(double tout) override;
+  IntegratorStats stats() const override;
+
+ private:
+  static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);
+  static int stability_callback(N_Vector y, double t, double* hstab, void* self);
+
+  Options opt_;
+  OdeSystem* sys_ = nullptr;
+  SUNContext ctx_ = nullptr;
+  N_Vector y_ = nullptr;
+  void* mem_ = nullptr;
+  double t_ = 0.0;
+};
+
+}  // namespace sphmol

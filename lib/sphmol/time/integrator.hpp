@@ -1,0 +1,33 @@
+#pragma once
+// An ODE integrator advancing a state vector it does not own (the N_Vector / leapfrog view wraps
+// the caller's storage) to requested output times.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/time/ode_system.hpp"
+
+namespace sphmol {
+
+struct IntegratorStats {
+  long steps = 0;
+  long rejected_steps = 0;  // error-test failures (adaptive ERK); 0 for fixed steps
+  double last_step = 0.0;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string name() const = 0;
+  virtual nlohmann::json describe() const = 0;  // the summary's "integrator" object
+  // y: the state, length sys.size(); it is advanced in place.
+  virtual void initialize(OdeSystem& sys, double t0, double* y) = 0;
+  // Advance y to exactly tout (> current time).
+  virtual void advance(double tout) = 0;
+  virtual IntegratorStats stats() const = 0;
+};
+
+std::unique_ptr<Integrator> make_integrator(const TimeConfig& time);
+
+}  // namespace sphmol

@@ -1,0 +1,16 @@
+#include <stdexcept>
+
+#include "sphmol/time/arkode_erk.hpp"
+#include "sphmol/time/integrator.hpp"
+#include "sphmol/time/leapfrog.hpp"
+
+namespace sphmol {
+
+std::unique_ptr<Integrator> make_integrator(const TimeConfig& time) {
+  if (time.integrator == "arkode_erk")
+    return std::make_unique<ArkodeErk>(ArkodeErk::Options{time.table, time.rtol, time.atol, time.dt, time.max_steps});
+  if (time.integrator == "leapfrog") return std::make_unique<Leapfrog>(Leapfrog::Options{time.dt, time.max_steps});
+  throw std::invalid_argument("unknown integrator '" + time.integrator + "' (known: arkode_erk, leapfrog)");
+}
+
+}  // namespace sphmol

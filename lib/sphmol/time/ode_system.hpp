@@ -1,0 +1,20 @@
+#pragma once
+// What an integrator sees: dy/dt = f(t, y), the CFL-limited stable step, and (for the leapfrog)
+// where the velocity block sits in y = [positions | velocities | other first-order fields].
+#include <cstddef>
+
+namespace sphmol {
+
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual std::size_t size() const = 0;
+  virtual void rhs(double t, const double* y, double* ydot) = 0;
+  // Largest stable step for the state of the most recent rhs() call (CFL: acoustic, force, viscous).
+  virtual double stable_step() const = 0;
+  virtual std::size_t velocities_begin() const = 0;
+  virtual std::size_t velocities_end() const = 0;
+  virtual long rhs_evaluations() const = 0;
+};
+
+}  // namespace sphmol
