@@ -24,7 +24,7 @@ struct FluidConfig {
   double density = 0.0;              // rho0 [kg/m^3], required, > 0
   double kinematic_viscosity = 0.0;  // nu [m^2/s], required, >= 0
   EosConfig eos;
-  std::vector<double> body_force;    // [m/s^2], length = dimension; default all zero
+  std::vector<double> body_force;    // [m/s^2], length = dimension; default (and if absent) all zero
 };
 
 struct GeometryConfig {
@@ -67,7 +67,8 @@ struct TimeConfig {
 
 struct OutputConfig {
   std::string directory = "out";
-  std::vector<double> times;  // output times (> 0, increasing); t_end is always added
+  std::vector<double> times;  // output times (> 0, increasing); t_end is always added, later
+                              // times are dropped with a notice
   bool profiles = true;       // write profile CSVs at output times
 };
 
@@ -80,6 +81,9 @@ struct Config {
   DiscretizationConfig discretization;
   TimeConfig time;
   OutputConfig output;
+  // One-line remarks from loading that are not errors (e.g. output times past t_end dropped),
+  // "LOCATION: key.path: text"; the caller prints them. Not part of to_yaml().
+  std::vector<std::string> notices;
 };
 
 // Loads FILE, applies the "key.path=value" overrides in order (values parsed as YAML scalars or

@@ -1,0 +1,308 @@
+// load_config: YAML text -> overrides applied to the tree -> validated Config. The schema lives
+// here, read section by section with MapReader (yaml_reader.hpp), so each key's type, default,
+// range and message are in one place; config/README.md documents the same rules.
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/config/erk_tables.hpp"
+#include "sphmol/config/yaml_reader.hpp"
+#include "sphmol/kernels/registry.hpp"
+
+namespace sphmol {
+
+namespace {
+
+std::string shown(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string trim(std::string s) {
+  const auto b = s.find_first_not_of(" \t");
+  const auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
+}
+
+// Range check: "KEY: VALUE is out of range (allowed: ALLOWED)".
+void check(const MapReader& r, const std::string& key, bool ok, double value, std::string_view allowed) {
+  if (!ok) r.fail(key, shown(value) + " is out of range (allowed: " + std::string(allowed) + ")");
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& name) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ConfigError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+}
+
+// Applies "a.b.c=value" to the tree, creating missing sections; records the origin so that
+// errors about the value name the override. Unknown paths are caught by validation, which
+// then points at this override.
+void apply_override(YAML::Node& root, const std::string& text, YamlOrigin& origin) {
+  const std::string where = "--set " + text;
+  const auto eq = text.find('=');
+  if (eq == std::string::npos)
+    throw ConfigError(where + ": malformed override: expected key.path=value (e.g. time.rtol=1e-8)");
+  const std::string path = trim(text.substr(0, eq));
+  std::vector<std::string> segments;
+  for (std::size_t start = 0;;) {
+    const auto dot = path.find('.', start);
+    segments.push_back(path.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  for (const auto& s : segments)
+    if (s.empty())
+      throw ConfigError(where + ": malformed override: empty key in '" + path +
+                        "' (expected key.path=value, e.g. time.rtol=1e-8)");
+  YAML::Node value;
+  try {
+    value = YAML::Load(text.substr(eq + 1));
+  } catch (const YAML::ParserException& e) {
+    throw ConfigError(where + ": " + path + ": YAML syntax error in the value: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull()) root.reset(YAML::Node(YAML::NodeType::Map));
+  if (!root.IsMap()) return;  // validation reports the malformed document itself
+  YAML::Node cur;
+  cur.reset(root);
+  std::string sofar;
+  for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+    sofar += (sofar.empty() ? "" : ".") + segments[i];
+    if (!cur.IsMap())
+      throw ConfigError(where + ": " + path + ": '" + sofar + "' is not a section, cannot set keys inside it");
+    YAML::Node next = cur[segments[i]];
+    if (!next.IsDefined() || next.IsNull()) cur[segments[i]] = YAML::Node(YAML::NodeType::Map);
+    YAML::Node child = cur[segments[i]];
+    cur.reset(child);
+  }
+  if (!cur.IsMap())
+    throw ConfigError(where + ": " + path + ": '" + sofar + "' is not a section, cannot set keys inside it");
+  cur[segments.back()] = value;
+  origin.add_override(path, text);
+}
+
+template <int D>
+void check_kernel(const MapReader& r, const std::string& name) {
+  std::vector<std::string> names;
+  for (auto n : kernel_names<D>()) names.emplace_back(n);
+  r.choice("kernel", name, names);
+  try {
+    (void)kernel_info<D>(name);  // rejects kernels their source does not define in D
+  } catch (const std::invalid_argument& e) {
+    r.fail("kernel", e.what());
+  }
+}
+
+Config validate(const YAML::Node& root, const YamlOrigin& origin) {
+  Config c;
+  c.source = origin.file();
+  YAML::Mark root_mark = root.Mark();
+  if (root_mark.line < 0) root_mark = YAML::Mark();  // empty document: point at line 1
+  MapReader top(origin, root, "", root_mark,
+                {"case", "dimension", "fluid", "geometry", "discretization", "time", "output"});
+
+  c.case_name = top.choice("case", top.required(top.string("case"), "case", "one of: couette, poiseuille"),
+                           {"couette", "poiseuille"});
+  if (const auto d = top.integer("dimension")) {
+    check(top, "dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
+    c.dimension = static_cast<int>(*d);
+  }
+  if (c.dimension != 2)
+    top.fail("dimension", "case '" + c.case_name + "' needs dimension 2 (got " +
+                              std::to_string(c.dimension) + ")");
+
+  // fluid
+  MapReader fluid = top.section("fluid", {"density", "kinematic_viscosity", "eos", "body_force"});
+  c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
+  check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
+  c.fluid.kinematic_viscosity = fluid.required(fluid.real("kinematic_viscosity"), "kinematic_viscosity",
+                                               "nu in m^2/s, >= 0");
+  check(fluid, "kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
+        ">= 0 m^2/s");
+  {
+    MapReader eos = fluid.section("eos", {"type", "sound_speed"});
+    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear"});
+    c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
+                                           "artificial speed of sound c in m/s, > 0");
+    check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
+  }
+  if (const auto f = fluid.reals("body_force")) {
+    if (static_cast<int>(f->size()) != c.dimension)
+      fluid.fail("body_force", "has " + std::to_string(f->size()) + " components, expected " +
+                                   std::to_string(c.dimension) + " (one per dimension)");
+    c.fluid.body_force = *f;
+  } else {
+    c.fluid.body_force.assign(static_cast<std::size_t>(c.dimension), 0.0);
+  }
+
+  // geometry
+  MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity"});
+  c.geometry.channel_height = geo.required(geo.real("channel_height"), "channel_height",
+                                           "distance between the walls in m, > 0");
+  check(geo, "channel_height", c.geometry.channel_height > 0, c.geometry.channel_height, "> 0 m");
+  c.geometry.channel_length = geo.required(geo.real("channel_length"), "channel_length",
+                                           "periodic length in x in m, > 0");
+  check(geo, "channel_length", c.geometry.channel_length > 0, c.geometry.channel_length, "> 0 m");
+  if (const auto v = geo.real("wall_velocity")) c.geometry.wall_velocity = *v;
+
+  // Case consistency: what drives the flow.
+  if (c.case_name == "poiseuille") {
+    if (c.geometry.wall_velocity != 0)
+      geo.fail("wall_velocity", "must be 0 for case 'poiseuille' (got " + shown(c.geometry.wall_velocity) +
+                                    "; a moving wall is case 'couette')");
+    if (c.fluid.body_force[0] == 0) {
+      const std::string what = "case 'poiseuille' needs a nonzero x-component (the driving force per "
+                               "unit mass, m/s^2), e.g. body_force: [1e-4, 0]";
+      if (fluid.has("body_force")) fluid.fail("body_force", what);
+      fluid.fail_missing("body_force", what);
+    }
+  } else if (c.geometry.wall_velocity == 0) {
+    const std::string what = "case 'couette' needs a nonzero top-plate speed v0 in m/s";
+    if (geo.has("wall_velocity")) geo.fail("wall_velocity", what);
+    geo.fail_missing("wall_velocity", what);
+  }
+
+  // discretization
+  MapReader disc = top.section("discretization",
+                               {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
+                                "momentum", "viscosity", "xsph", "boundary", "wall_layers",
+                                "neighbor_search", "skin"});
+  {
+    auto& d = c.discretization;
+    const auto n = disc.integer("particles_across");
+    const auto dx = disc.real("spacing");
+    if (n && dx)
+      disc.fail("spacing", "both particles_across and spacing are given (allowed: exactly one of them)");
+    if (!n && !dx)
+      disc.fail_missing("particles_across", "or discretization.spacing: give exactly one of the two");
+    if (n) {
+      check(disc, "particles_across", *n > 0 && *n <= 1'000'000'000, static_cast<double>(*n), "> 0");
+      d.particles_across = static_cast<int>(*n);
+    } else {
+      check(disc, "spacing", *dx > 0, *dx, "> 0 m");
+      d.spacing = *dx;
+    }
+    if (const auto k = disc.string("kernel")) d.kernel = *k;
+    switch (c.dimension) {
+      case 1: check_kernel<1>(disc, d.kernel); break;
+      case 2: check_kernel<2>(disc, d.kernel); break;
+      default: check_kernel<3>(disc, d.kernel); break;
+    }
+    if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
+    check(disc, "smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
+    if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation"});
+    if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117"});
+    if (const auto v = disc.string("viscosity"))
+      d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris"});
+    if (const auto v = disc.real("xsph")) d.xsph = *v;
+    check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
+    if (const auto v = disc.string("boundary")) d.boundary = disc.choice("boundary", *v, {"wall_particles"});
+    if (const auto v = disc.integer("wall_layers")) {
+      check(disc, "wall_layers", *v >= 0 && *v <= 1000, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
+      d.wall_layers = static_cast<int>(*v);
+    }
+    if (const auto v = disc.string("neighbor_search"))
+      d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "all_pairs"});
+    if (const auto v = disc.real("skin")) d.skin = *v;
+    check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
+  }
+
+  // time
+  MapReader time = top.section("time", {"t_end", "integrator", "table", "rtol", "atol", "cfl", "dt", "max_steps"});
+  {
+    auto& t = c.time;
+    t.t_end = time.required(time.real("t_end"), "t_end", "end time in s, > 0");
+    check(time, "t_end", t.t_end > 0, t.t_end, "> 0 s");
+    if (const auto v = time.string("integrator"))
+      t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog"});
+    if (const auto v = time.string("table")) {
+      if (!is_erk_table_name(*v)) {
+        const std::string near = closest_match(*v, erk_table_names());
+        time.fail("table", "'" + *v + "' is not a SUNDIALS explicit (ERK) Butcher table (" +
+                               (near.empty() ? "" : "did you mean '" + near + "'? ") +
+                               "see ARKODE_ERKTableID in arkode/arkode_butcher_erk.h, e.g. "
+                               "ARKODE_DORMAND_PRINCE_7_4_5)");
+      }
+      t.table = *v;
+    }
+    if (const auto v = time.real("rtol")) t.rtol = *v;
+    check(time, "rtol", t.rtol > 0, t.rtol, "> 0");
+    if (const auto v = time.real("atol")) t.atol = *v;
+    check(time, "atol", t.atol > 0, t.atol, "> 0");
+    MapReader cfl = time.section("cfl", {"acoustic", "force", "viscous"});
+    if (const auto v = cfl.real("acoustic")) t.cfl.acoustic = *v;
+    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic, "(0, 1]");
+    if (const auto v = cfl.real("force")) t.cfl.force = *v;
+    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force, "(0, 1]");
+    if (const auto v = cfl.real("viscous")) t.cfl.viscous = *v;
+    check(cfl, "viscous", t.cfl.viscous > 0, t.cfl.viscous, "> 0");
+    if (const auto v = time.real("dt")) {
+      check(time, "dt", *v > 0, *v, "> 0 s");
+      t.dt = *v;
+    }
+    if (const auto v = time.integer("max_steps")) {
+      check(time, "max_steps", *v > 0, static_cast<double>(*v), "> 0");
+      t.max_steps = static_cast<long>(*v);
+    }
+  }
+
+  // output
+  MapReader out = top.section("output", {"directory", "times", "profiles"});
+  {
+    auto& o = c.output;
+    if (const auto v = out.string("directory")) {
+      if (trim(*v).empty()) out.fail("directory", "must not be empty");
+      o.directory = *v;
+    }
+    if (const auto v = out.reals("times")) {
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        if ((*v)[i] <= 0) out.fail_element("times", i, shown((*v)[i]) + " is out of range (allowed: > 0 s)");
+        if (i > 0 && (*v)[i] <= (*v)[i - 1])
+          out.fail_element("times", i, shown((*v)[i]) + " is not after the previous time " +
+                                           shown((*v)[i - 1]) + " (times must be strictly increasing)");
+      }
+      std::string dropped;
+      std::size_t ndropped = 0;
+      for (double x : *v) {
+        if (x <= c.time.t_end) {
+          o.times.push_back(x);
+        } else {
+          dropped += (dropped.empty() ? "" : ", ") + shown(x);
+          ++ndropped;
+        }
+      }
+      if (ndropped > 0)
+        c.notices.push_back(out.where("times") + ": dropped " + std::to_string(ndropped) +
+                            " output time(s) past time.t_end = " + shown(c.time.t_end) + ": " + dropped);
+    }
+    if (o.times.empty() || o.times.back() < c.time.t_end) o.times.push_back(c.time.t_end);
+    if (const auto v = out.boolean("profiles")) o.profiles = *v;
+  }
+  return c;
+}
+
+}  // namespace
+
+Config load_config_string(const std::string& yaml, const std::vector<std::string>& overrides,
+                          const std::string& name) {
+  YAML::Node root = parse_yaml(yaml, name);
+  YamlOrigin origin(name);
+  for (const auto& o : overrides) apply_override(root, o, origin);
+  return validate(root, origin);
+}
+
+Config load_config(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open config file: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return load_config_string(text.str(), overrides, path);
+}
+
+}  // namespace sphmol
