@@ -175,3 +175,21 @@ TEST_CASE("Channel series reject arguments outside their domain", "[reference]")
   CHECK_THROWS_AS(poiseuille.velocity(2e-3, 1.0), std::domain_error);
   CHECK_THROWS_AS(poiseuille.velocity_fourier(0.5e-3, 0.0), std::domain_error);
 }
+
+TEST_CASE("Channel series match 40-digit values (mpmath, image sums) at seed 002 parameters", "[reference]") {
+  // Values computed independently with mpmath (dps = 40) from the image representations at the double
+  // nearest each (y, t); they are reference data, not outputs of this code.
+  struct Ref { double y, t, couette, poiseuille; };
+  const Ref refs[] = {
+      {0.00099, 0.001, 2.0576581843953034594e-5, 6.1958191206246238948e-8},
+      {0.00001, 0.001, 0.0, 6.1958191206246214533e-8},
+      {0.00025, 0.01, 2.8431814142207372546e-12, 1.9552288503627464576e-6},
+      {0.0008, 0.01, 3.9324801762571303638e-6, 1.8864197508592309127e-6},
+      {0.0005, 0.3, 1.1676002844189797287e-5, 2.3664186125665814353e-5},
+  };
+  for (const auto& r : refs) {
+    INFO("y = " << r.y << " t = " << r.t);
+    CHECK(std::abs(couette.velocity(r.y, r.t) - r.couette) <= accuracy * couette.v0);
+    CHECK(std::abs(poiseuille.velocity(r.y, r.t) - r.poiseuille) <= accuracy * poiseuille.peak_velocity());
+  }
+}

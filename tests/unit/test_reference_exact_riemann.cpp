@@ -2,6 +2,7 @@
 // and the Riemann invariant through rarefactions, seed 003 §3 shock tube.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphmol/reference/exact_riemann.hpp"

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <numbers>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphmol/reference/taylor_green.hpp"

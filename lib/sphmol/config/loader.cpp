@@ -182,7 +182,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (!n && !dx)
       disc.fail_missing("particles_across", "or discretization.spacing: give exactly one of the two");
     if (n) {
-      check(disc, "particles_across", *n > 0 && *n <= 1'000'000'000, static_cast<double>(*n), "> 0");
+      check(disc, "particles_across", *n > 0, static_cast<double>(*n), "> 0");
+      // Guards the int conversion; no real run comes near.
+      check(disc, "particles_across", *n <= 1'000'000'000, static_cast<double>(*n), "<= 1e9");
       d.particles_across = static_cast<int>(*n);
     } else {
       check(disc, "spacing", *dx > 0, *dx, "> 0 m");
@@ -204,7 +206,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
     if (const auto v = disc.string("boundary")) d.boundary = disc.choice("boundary", *v, {"wall_particles"});
     if (const auto v = disc.integer("wall_layers")) {
-      check(disc, "wall_layers", *v >= 0 && *v <= 1000, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
+      check(disc, "wall_layers", *v >= 0, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
+      check(disc, "wall_layers", *v <= 1000, static_cast<double>(*v), "<= 1000");
       d.wall_layers = static_cast<int>(*v);
     }
     if (const auto v = disc.string("neighbor_search"))

@@ -38,6 +38,10 @@ std::optional<double> parse_real(const YAML::Node& node) {
   if (!node.IsScalar() || is_quoted(node)) return std::nullopt;
   std::string_view s = node.Scalar();
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  // YAML spellings of infinity and NaN, so that they are reported as "not finite".
+  const std::string n = normalise(s);
+  if (n == ".inf" || n == "-.inf") return n[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+  if (n == ".nan") return std::numeric_limits<double>::quiet_NaN();
   double v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size() || s.empty()) return std::nullopt;
@@ -92,8 +96,10 @@ MapReader::MapReader(const YamlOrigin& origin, const YAML::Node& node, std::stri
                       join(keys_) + "), got " + describe(node));
   }
   if (!node.IsMap()) return;
-  for (auto it = node.begin(); it != node.end(); ++it) {
-    const YAML::Node& k = it->first;
+  for (const auto& kv : node) {
+    // Copies: the iterator's pair is a proxy value, references into it would dangle.
+    const YAML::Node k = kv.first;
+    const YAML::Node v = kv.second;
     const YAML::Mark km = k.Mark();
     if (!k.IsScalar()) {
       throw ConfigError(origin_->locate(path_, km) + ": " + here + ": keys must be plain names");
@@ -110,7 +116,7 @@ MapReader::MapReader(const YamlOrigin& origin, const YAML::Node& node, std::stri
       throw ConfigError(origin_->locate(full, km) + ": " + full + ": given twice (first on line " +
                         std::to_string(prev->second.mark.line + 1) + ")");
     }
-    entries_.emplace(name, Entry{it->second, km});
+    entries_.emplace(name, Entry{v, km});
   }
 }
 

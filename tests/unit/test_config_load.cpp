@@ -1,0 +1,228 @@
+// Valid configs: values, defaults, the shipped config/defaults.yaml, output-time resolution,
+// and the to_yaml round trip.
+#include <catch2/catch.hpp>
+
+#include "config_test_base.hpp"
+#include "sphmol/config/config.hpp"
+
+using namespace sphmol;
+using config_test::base;
+using config_test::with;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+
+void require_same(const Config& a, const Config& b) {
+  CHECK(a.case_name == b.case_name);
+  CHECK(a.dimension == b.dimension);
+  CHECK(a.fluid.density == b.fluid.density);
+  CHECK(a.fluid.kinematic_viscosity == b.fluid.kinematic_viscosity);
+  CHECK(a.fluid.eos.type == b.fluid.eos.type);
+  CHECK(a.fluid.eos.sound_speed == b.fluid.eos.sound_speed);
+  CHECK(a.fluid.body_force == b.fluid.body_force);
+  CHECK(a.geometry.channel_height == b.geometry.channel_height);
+  CHECK(a.geometry.channel_length == b.geometry.channel_length);
+  CHECK(a.geometry.wall_velocity == b.geometry.wall_velocity);
+  const auto &da = a.discretization, &db = b.discretization;
+  CHECK(da.particles_across == db.particles_across);
+  CHECK(da.spacing == db.spacing);
+  CHECK(da.kernel == db.kernel);
+  CHECK(da.smoothing_ratio == db.smoothing_ratio);
+  CHECK(da.density == db.density);
+  CHECK(da.momentum == db.momentum);
+  CHECK(da.viscosity == db.viscosity);
+  CHECK(da.xsph == db.xsph);
+  CHECK(da.boundary == db.boundary);
+  CHECK(da.wall_layers == db.wall_layers);
+  CHECK(da.neighbor_search == db.neighbor_search);
+  CHECK(da.skin == db.skin);
+  const auto &ta = a.time, &tb = b.time;
+  CHECK(ta.t_end == tb.t_end);
+  CHECK(ta.integrator == tb.integrator);
+  CHECK(ta.table == tb.table);
+  CHECK(ta.rtol == tb.rtol);
+  CHECK(ta.atol == tb.atol);
+  CHECK(ta.cfl.acoustic == tb.cfl.acoustic);
+  CHECK(ta.cfl.force == tb.cfl.force);
+  CHECK(ta.cfl.viscous == tb.cfl.viscous);
+  CHECK(ta.dt == tb.dt);
+  CHECK(ta.max_steps == tb.max_steps);
+  CHECK(a.output.directory == b.output.directory);
+  CHECK(a.output.times == b.output.times);
+  CHECK(a.output.profiles == b.output.profiles);
+}
+
+}  // namespace
+
+TEST_CASE("config: a valid config loads with its values and the defaults", "[config]") {
+  const Config c = load_config_string(base, {}, "case.yaml");
+  CHECK(c.source == "case.yaml");
+  CHECK(c.case_name == "couette");
+  CHECK(c.dimension == 2);
+  CHECK(c.fluid.density == 1000.0);
+  CHECK(c.fluid.kinematic_viscosity == 1.0e-6);
+  CHECK(c.fluid.eos.sound_speed == 0.01);
+  CHECK(c.geometry.channel_height == 1.0e-3);
+  CHECK(c.geometry.channel_length == 5.0e-4);
+  CHECK(c.geometry.wall_velocity == 1.25e-5);
+  CHECK(c.discretization.particles_across == 20);
+  CHECK(c.time.t_end == 0.5);
+  // Defaults, resolved.
+  CHECK(c.fluid.eos.type == "linear");
+  CHECK(c.fluid.body_force == std::vector<double>{0.0, 0.0});  // one zero per dimension
+  CHECK(c.discretization.spacing == 0.0);
+  CHECK(c.discretization.kernel == "cubic_spline");
+  CHECK(c.discretization.smoothing_ratio == 1.3);
+  CHECK(c.discretization.density == "summation");
+  CHECK(c.discretization.momentum == "symmetric_117");
+  CHECK(c.discretization.viscosity == "strain_rate");
+  CHECK(c.discretization.xsph == 0.0);
+  CHECK(c.discretization.boundary == "wall_particles");
+  CHECK(c.discretization.wall_layers == 0);
+  CHECK(c.discretization.neighbor_search == "kdtree");
+  CHECK(c.discretization.skin == 0.3);
+  CHECK(c.time.integrator == "arkode_erk");
+  CHECK(c.time.table == "ARKODE_DORMAND_PRINCE_7_4_5");
+  CHECK(c.time.rtol == 1e-6);
+  CHECK(c.time.atol == 1e-12);
+  CHECK(c.time.cfl.acoustic == 0.25);
+  CHECK(c.time.cfl.force == 0.25);
+  CHECK(c.time.cfl.viscous == 0.125);
+  CHECK_FALSE(c.time.dt.has_value());
+  CHECK(c.time.max_steps == 10'000'000);
+  CHECK(c.output.directory == "out");
+  CHECK(c.output.times == std::vector<double>{0.1, 0.2, 0.5});  // t_end appended
+  CHECK(c.output.profiles);
+  CHECK(c.notices.empty());
+}
+
+TEST_CASE("config: every key given explicitly", "[config]") {
+  const std::string yaml = R"(case: poiseuille
+dimension: 2
+fluid: {density: 998.2, kinematic_viscosity: 0, eos: {type: linear, sound_speed: 3}, body_force: [2e-4, -1]}
+geometry: {channel_height: 2, channel_length: 1, wall_velocity: 0}
+discretization:
+  spacing: 0.05
+  kernel: cubic_spline
+  smoothing_ratio: 1.5
+  density: summation
+  momentum: symmetric_117
+  viscosity: morris
+  xsph: 1
+  boundary: wall_particles
+  wall_layers: 4
+  neighbor_search: all_pairs
+  skin: 0
+time:
+  t_end: 2
+  integrator: leapfrog
+  table: ARKODE_VERNER_8_5_6
+  rtol: 1e-9
+  atol: 1e-14
+  cfl: {acoustic: 1, force: 0.5, viscous: 2}
+  dt: 1e-4
+  max_steps: 1e7
+output: {directory: "res/run 1", times: [2], profiles: no}
+)";
+  const Config c = load_config_string(yaml);
+  CHECK(c.source == "<string>");
+  CHECK(c.case_name == "poiseuille");
+  CHECK(c.fluid.density == 998.2);
+  CHECK(c.fluid.kinematic_viscosity == 0.0);
+  CHECK(c.fluid.eos.sound_speed == 3.0);
+  CHECK(c.fluid.body_force == std::vector<double>{2e-4, -1.0});
+  CHECK(c.geometry.channel_height == 2.0);
+  CHECK(c.discretization.particles_across == 0);
+  CHECK(c.discretization.spacing == 0.05);
+  CHECK(c.discretization.smoothing_ratio == 1.5);
+  CHECK(c.discretization.viscosity == "morris");
+  CHECK(c.discretization.xsph == 1.0);
+  CHECK(c.discretization.wall_layers == 4);
+  CHECK(c.discretization.neighbor_search == "all_pairs");
+  CHECK(c.discretization.skin == 0.0);
+  CHECK(c.time.integrator == "leapfrog");
+  CHECK(c.time.table == "ARKODE_VERNER_8_5_6");
+  CHECK(c.time.rtol == 1e-9);
+  CHECK(c.time.atol == 1e-14);
+  CHECK(c.time.cfl.acoustic == 1.0);
+  CHECK(c.time.cfl.force == 0.5);
+  CHECK(c.time.cfl.viscous == 2.0);
+  REQUIRE(c.time.dt.has_value());
+  CHECK(*c.time.dt == 1e-4);
+  CHECK(c.time.max_steps == 10'000'000);
+  CHECK(c.output.directory == "res/run 1");
+  CHECK(c.output.times == std::vector<double>{2.0});  // t_end given: not added twice
+  CHECK_FALSE(c.output.profiles);
+}
+
+TEST_CASE("config: config/defaults.yaml loads and holds the documented defaults", "[config]") {
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/config/defaults.yaml");
+  const Config d;  // the defaults of config.hpp
+  CHECK(c.case_name == "poiseuille");
+  CHECK(c.dimension == d.dimension);
+  CHECK(c.fluid.eos.type == d.fluid.eos.type);
+  CHECK(c.discretization.kernel == d.discretization.kernel);
+  CHECK(c.discretization.smoothing_ratio == d.discretization.smoothing_ratio);
+  CHECK(c.discretization.density == d.discretization.density);
+  CHECK(c.discretization.momentum == d.discretization.momentum);
+  CHECK(c.discretization.viscosity == d.discretization.viscosity);
+  CHECK(c.discretization.xsph == d.discretization.xsph);
+  CHECK(c.discretization.boundary == d.discretization.boundary);
+  CHECK(c.discretization.wall_layers == d.discretization.wall_layers);
+  CHECK(c.discretization.neighbor_search == d.discretization.neighbor_search);
+  CHECK(c.discretization.skin == d.discretization.skin);
+  CHECK(c.time.integrator == d.time.integrator);
+  CHECK(c.time.table == d.time.table);
+  CHECK(c.time.rtol == d.time.rtol);
+  CHECK(c.time.atol == d.time.atol);
+  CHECK(c.time.cfl.acoustic == d.time.cfl.acoustic);
+  CHECK(c.time.cfl.force == d.time.cfl.force);
+  CHECK(c.time.cfl.viscous == d.time.cfl.viscous);
+  CHECK(c.time.dt == d.time.dt);
+  CHECK(c.time.max_steps == d.time.max_steps);
+  CHECK(c.output.directory == d.output.directory);
+  CHECK(c.output.profiles == d.output.profiles);
+  CHECK(c.notices.empty());
+}
+
+TEST_CASE("config: output times past t_end are dropped with a notice", "[config]") {
+  const Config c = load_config_string(with("[0.1, 0.2]", "[0.1, 0.5, 0.6, 0.9]"), {}, "case.yaml");
+  CHECK(c.output.times == std::vector<double>{0.1, 0.5});  // t_end present: not duplicated
+  REQUIRE(c.notices.size() == 1);
+  CHECK(c.notices[0] == "case.yaml:17: output.times: dropped 2 output time(s) past time.t_end = 0.5: 0.6, 0.9");
+
+  // Shortening t_end by an override drops times the same way.
+  const Config s = load_config_string(base, {"time.t_end=0.15"}, "case.yaml");
+  CHECK(s.output.times == std::vector<double>{0.1, 0.15});
+  REQUIRE(s.notices.size() == 1);
+  CHECK_THAT(s.notices[0], Contains("dropped 1 output time(s) past time.t_end = 0.15: 0.2"));
+}
+
+TEST_CASE("config: to_yaml round-trips through load_config_string", "[config]") {
+  SECTION("defaults filled in") {
+    const Config a = load_config_string(base, {}, "case.yaml");
+    const std::string y = to_yaml(a);
+    // Fully resolved: defaults appear in the text.
+    CHECK_THAT(y, Contains("kernel: cubic_spline"));
+    CHECK_THAT(y, Contains("table: ARKODE_DORMAND_PRINCE_7_4_5"));
+    CHECK_THAT(y, Contains("body_force: [0, 0]"));
+    CHECK_THAT(y, Contains("times: [0.1, 0.2, 0.5]"));
+    const Config b = load_config_string(y, {}, "case.yaml");
+    require_same(a, b);
+    CHECK(to_yaml(b) == y);
+  }
+  SECTION("spacing, fixed dt, awkward numbers and directory") {
+    const Config a = load_config_string(
+        with("  particles_across: 20", "  spacing: 3.3333333333333335e-05",
+             with("  t_end: 0.5", "  t_end: 0.30000000000000004\n  dt: 1e-7",
+                  with("output:\n", "output:\n  directory: \"out dir/#1: \\\"x\\\"\"\n  profiles: false\n"))),
+        {}, "case.yaml");
+    REQUIRE(a.output.directory == "out dir/#1: \"x\"");
+    REQUIRE(a.time.dt.has_value());
+    const Config b = load_config_string(to_yaml(a), {}, "case.yaml");
+    require_same(a, b);
+    CHECK(b.discretization.spacing == 3.3333333333333335e-05);
+    CHECK(b.time.t_end == 0.30000000000000004);
+  }
+}
