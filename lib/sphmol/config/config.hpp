@@ -43,6 +43,10 @@ struct DiscretizationConfig {
   std::string viscosity = "strain_rate";          // strain_rate (000 eq 122) | morris
   double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
   std::string boundary = "wall_particles";        // wall_particles
+  // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
+  // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).
+  std::string wall_model = "morris";
+  double wall_beta_max = 1.5;       // Morris' cap on the extrapolation factor, >= 1
   int wall_layers = 0;              // 0 = enough layers to fill the kernel support
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0

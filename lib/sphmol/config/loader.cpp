@@ -171,7 +171,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   // discretization
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
-                                "momentum", "viscosity", "xsph", "boundary", "wall_layers",
+                                "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin"});
   {
     auto& d = c.discretization;
@@ -205,6 +205,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = disc.real("xsph")) d.xsph = *v;
     check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
     if (const auto v = disc.string("boundary")) d.boundary = disc.choice("boundary", *v, {"wall_particles"});
+    if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris"});
+    if (const auto v = disc.real("wall_beta_max")) d.wall_beta_max = *v;
+    check(disc, "wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");
     if (const auto v = disc.integer("wall_layers")) {
       check(disc, "wall_layers", *v >= 0, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
       check(disc, "wall_layers", *v <= 1000, static_cast<double>(*v), "<= 1000");

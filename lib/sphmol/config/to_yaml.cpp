@@ -67,6 +67,8 @@ std::string to_yaml(const Config& c) {
     << "  viscosity: " << d.viscosity << "\n"
     << "  xsph: " << num(d.xsph) << "\n"
     << "  boundary: " << d.boundary << "\n"
+    << "  wall_model: " << d.wall_model << "\n"
+    << "  wall_beta_max: " << num(d.wall_beta_max) << "\n"
     << "  wall_layers: " << d.wall_layers << "\n"
     << "  neighbor_search: " << d.neighbor_search << "\n"
     << "  skin: " << num(d.skin) << "\n";

@@ -20,16 +20,23 @@ struct Particles {
   std::vector<Kind> kind;
   // Walls move rigidly with their prescribed velocity: x(t) = x_ref + v t.
   std::array<std::vector<double>, D> x_ref;
+  // For a wall particle: the unit normal of its wall surface, pointing into the fluid, and its depth
+  // below that surface (>= 0). Zero for fluid particles. Used by the Morris wall-velocity model.
+  std::array<std::vector<double>, D> wall_normal;
+  std::vector<double> wall_depth;
 
   std::size_t size() const { return mass.size(); }
   std::size_t n_wall() const { return size() - n_fluid; }
 
-  void add(Kind k, const std::array<double, D>& pos, const std::array<double, D>& vel, double m, double density) {
+  void add(Kind k, const std::array<double, D>& pos, const std::array<double, D>& vel, double m, double density,
+           const std::array<double, D>& normal = {}, double depth = 0.0) {
     for (int d = 0; d < D; ++d) {
       x[d].push_back(pos[d]);
       v[d].push_back(vel[d]);
       x_ref[d].push_back(pos[d]);
+      wall_normal[d].push_back(normal[d]);
     }
+    wall_depth.push_back(depth);
     mass.push_back(m);
     rho.push_back(density);
     kind.push_back(k);

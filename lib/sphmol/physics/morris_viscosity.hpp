@@ -1,7 +1,8 @@
 #pragma once
 // Laminar viscosity of Morris, Fox & Zhu (1997), J. Comput. Phys. 136:214, their eq. (8):
 //   dv_i/dt += sum_j m_j (mu_i + mu_j) / (rho_i rho_j) * (x_ij . grad_i W_ij) / (r_ij^2 + eta^2) * v_ij
-// with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2.
+// with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. Fluid-wall velocity
+// differences are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -25,7 +26,7 @@ class MorrisViscosity final : public Term<D> {
           r2 += dx * dx;
         }
         const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * w.F[k] * r2 / (r2 + eta2);
-        for (int d = 0; d < D; ++d) a[d] += s * (w.v[d][i] - w.v[d][j]);
+        for (int d = 0; d < D; ++d) a[d] += s * w.vfac[k] * (w.v[d][i] - w.v[d][j]);
       }
       for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
     }

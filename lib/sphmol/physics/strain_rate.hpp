@@ -3,7 +3,8 @@
 //   eps_ab(i) = sum_j V_j [ v_b(ji) dW/dx_a + v_a(ji) dW/dx_b ] - 2/3 delta_ab sum_j V_j v_c(ji) dW/dx_c
 // with V_j = m_j / rho_j and v(ji) = v_j - v_i. Computed for wall rows too, because the momentum
 // equation (000 eq 117) needs eps at the wall neighbours; wall rows see only fluid particles, and a
-// missing wall-wall pair contributes nothing for walls that move together.
+// missing wall-wall pair contributes nothing for walls that move together. Velocity differences of
+// fluid-wall pairs are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -23,7 +24,7 @@ class StrainRate final : public Term<D> {
         double dx[D], dv[D];
         for (int d = 0; d < D; ++d) {
           dx[d] = w.separation(d, i, j);
-          dv[d] = w.v[d][j] - w.v[d][i];
+          dv[d] = w.vfac[k] * (w.v[d][j] - w.v[d][i]);
         }
         for (int a = 0; a < D; ++a)
           for (int b = 0; b < D; ++b) g[a][b] += s * dv[b] * dx[a];

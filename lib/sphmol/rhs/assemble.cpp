@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/eos_linear.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
@@ -28,6 +29,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (fluid.eos.type != "linear") throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
   terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed));
   if (disc.momentum != "symmetric_117") throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
+  if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max));
+  else if (disc.wall_model != "prescribed")
+    throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   if (disc.viscosity == "strain_rate") {
     terms.push_back(std::make_unique<StrainRate<D>>());
     terms.push_back(std::make_unique<PressureGradient117<D>>());

@@ -70,7 +70,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   in.kind = particles_.kind.data();
   in.n = n;
   in.domain = &domain_;
-  pairs_->update(in);
+  if (pairs_->update(in)) ws_.vfac.assign(pairs_->pairs().pairs(), 1.0);
   ws_.pairs = &pairs_->pairs();
   kernel_->apply(ws_);
 

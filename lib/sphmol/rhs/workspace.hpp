@@ -23,6 +23,10 @@ struct Workspace {
   std::array<std::vector<double>, D> x, v;  // current positions (wrapped) and velocities
   std::vector<double> rho, p;
   std::vector<double> W, F;                 // per pair
+  // Per pair: the factor on the velocity difference seen by viscous terms. 1 between fluid particles;
+  // for a fluid-wall pair it is set by the wall model (1 for prescribed wall velocities, Morris'
+  // extrapolation factor beta otherwise), so terms need no branch on particle kind or configuration.
+  std::vector<double> vfac;
   std::array<std::vector<double>, D * D> strain;  // strain-rate tensor eps_ab, row-major
 
   // Outputs for fluid particles (point into the caller's ydot).

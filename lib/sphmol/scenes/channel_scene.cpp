@@ -37,8 +37,9 @@ ChannelScene build_channel_scene(const Config& config) {
     for (int i = 0; i < nx; ++i) s.particles.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, m, rho0);
   for (int k = 0; k < layers; ++k)
     for (int i = 0; i < nx; ++i) {
-      s.particles.add(Kind::Wall, {(i + 0.5) * dx, -(k + 0.5) * dx}, {0.0, 0.0}, m, rho0);
-      s.particles.add(Kind::Wall, {(i + 0.5) * dx, l + (k + 0.5) * dx}, {g.wall_velocity, 0.0}, m, rho0);
+      const double depth = (k + 0.5) * dx;
+      s.particles.add(Kind::Wall, {(i + 0.5) * dx, -depth}, {0.0, 0.0}, m, rho0, {0.0, 1.0}, depth);
+      s.particles.add(Kind::Wall, {(i + 0.5) * dx, l + depth}, {g.wall_velocity, 0.0}, m, rho0, {0.0, -1.0}, depth);
     }
   return s;
 }
