@@ -81,7 +81,7 @@ std::vector<HydrostaticRoot> find_roots(const std::function<double(double)>& f,
 
 HydrostaticRow hydrostatic_row(const KernelInfo<2>& kernel, double a_p, double eps, double k_min, double k_max,
                                int scan) {
-  gsl_set_error_handler_off();
+  gsl_error_handler_t* old_handler = gsl_set_error_handler_off();
   HydrostaticRow row;
   row.kernel = std::string(kernel.name);
   row.a_p = a_p;
@@ -123,6 +123,7 @@ HydrostaticRow hydrostatic_row(const KernelInfo<2>& kernel, double a_p, double e
     gsl_min_fminimizer_free(m);
   }
   row.passes = row.best_err <= eps;
+  gsl_set_error_handler(old_handler);
   return row;
 }
 

@@ -25,7 +25,7 @@ struct ConsistencySums {
 
 template <int D>
 ConsistencySums<D> consistency_sums(const ParticleSet<D>& set, const std::array<double, D>& x, double h,
-                                    const KernelInfo<D>& kernel) {
+                                    const KernelInfo<D>& kernel, double k_smoothing = 0.0) {
   ConsistencySums<D> s;
   for (std::size_t b = 0; b < set.x.size(); ++b) {
     std::array<double, D> dx;
@@ -38,7 +38,10 @@ ConsistencySums<D> consistency_sums(const ParticleSet<D>& set, const std::array<
     if (r >= kernel.support * h) continue;
     ++s.neighbours;
     const double w = kernel.W(r, h) * set.V[b];
-    const double f = r > 0.0 ? kernel.dWdr(r, h) / r * set.V[b] : 0.0;  // grad_x W = W'(r) dx / r
+    // grad_x W = W'(r) dx / r; with k_smoothing = h/d > 0 the k-dependent derivative is used
+    // (001 eq 13b for the composite kernel).
+    const double dw = k_smoothing > 0.0 ? kernel.dWdr_k(r, h, k_smoothing) : kernel.dWdr(r, h);
+    const double f = r > 0.0 ? dw / r * set.V[b] : 0.0;
     s.S0 += w;
     for (int a = 0; a < D; ++a) {
       s.S1[a] += dx[a] * w;
