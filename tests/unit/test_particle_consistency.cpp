@@ -26,14 +26,14 @@ TEST_CASE("cubic B-spline with h = d is an exact partition of unity on a 1D latt
 }
 
 template <int D>
-void check_sets(const char* name) {
+void check_sets(const char* name, double s0_tol) {
   const auto k = sphmol::kernel_info<D>(name);
   const double d = 1.0, h = 1.3;
   std::array<double, D> x{};
   INFO(name << " " << D << "D");
   // Regular lattice, interior particle: odd sums vanish by symmetry, S0 is close to 1.
   const auto reg = consistency_sums<D>(regular_lattice<D>(6, d), x, h, k);
-  CHECK(std::abs(reg.S0 - 1.0) < 2e-3);
+  CHECK(std::abs(reg.S0 - 1.0) < s0_tol);
   for (int a = 0; a < D; ++a) {
     CHECK(std::abs(reg.S1[a]) < 1e-14);
     CHECK(std::abs(reg.G0[a]) < 1e-14);
@@ -55,7 +55,7 @@ void check_sets(const char* name) {
 }
 
 TEST_CASE("consistency sums on regular, perturbed and wall particle sets", "[consistency]") {
-  check_sets<2>("quintic_morris");
-  check_sets<3>("quintic_morris");
-  check_sets<2>("wendland_c2");
+  check_sets<2>("quintic_morris", 2e-4);
+  check_sets<3>("quintic_morris", 2e-3);
+  check_sets<2>("wendland_c2", 2e-2);
 }
