@@ -32,9 +32,9 @@ struct Options {
 template <int D>
 void print_catalogue() {
   std::printf("== %dD kernels (normalisation = integral of W over R^%d by GSL quadrature; M_k in h^k, "
-              "M'_k in h^(k-1), seed 000 eqs 64, 69) ==\n", D, D);
-  std::printf("%-22s %7s %15s %11s %11s %11s %11s | %9s %9s %9s %9s\n", "kernel", "support", "normalisation",
-              "M1", "M2", "M3", "M4", "M'0", "M'1", "M'2", "M'3");
+              "M'_k in h^(k-1), M''_k in h^(k-2); seed 000 eqs 64, 69, 76; odd moments vanish by parity) ==\n", D, D);
+  std::printf("%-22s %7s %15s %10s %10s %10s %10s | %9s %9s %9s %9s | %9s %9s %9s\n", "kernel", "support",
+              "normalisation", "M1", "M2", "M3", "M4", "M'0", "M'1", "M'2", "M'3", "M''0", "M''2", "M''4");
   for (const auto& e : sphmol::kernel_catalogue<D>()) {
     if (!opt.kernel.empty() && e.name != opt.kernel) continue;
     if (!e.available) {
@@ -42,9 +42,10 @@ void print_catalogue() {
       continue;
     }
     const auto m = sphmol::analysis::kernel_moments(e.info);
-    std::printf("%-22s %7.3g %15.12f %11.3e %11.6f %11.3e %11.6f | %9.2e %9.6f %9.2e %9.6f%s\n",
+    std::printf("%-22s %7.3g %15.12f %10.2e %10.6f %10.2e %10.6f | %9.2e %9.6f %9.2e %9.6f | %9.2e %9.6f %9.5f%s\n",
                 std::string(e.name).c_str(), e.info.support, m.M[0], m.M[1], m.M[2], m.M[3], m.M[4], m.dM[0], m.dM[1],
-                m.dM[2], m.dM[3], e.info.derivative_is_exact ? "" : "  (derivative: separate function)");
+                m.dM[2], m.dM[3], m.d2M[0], m.d2M[2], m.d2M[4],
+                e.info.derivative_is_exact ? "" : "  (derivative: separate function)");
   }
 }
 
