@@ -12,6 +12,9 @@
 namespace {
 using AllKernels = decltype(std::tuple_cat(sphmol::KernelTypes<1>{}, sphmol::KernelTypes<2>{},
                                            sphmol::KernelTypes<3>{}));
+// Every registered kernel type models the SphKernel concept.
+static_assert([]<class... K>(std::tuple<K...>*) { return (sphmol::SphKernel<K> && ...); }(
+    static_cast<AllKernels*>(nullptr)));
 }
 
 TEMPLATE_LIST_TEST_CASE("dW/dr matches a finite difference of W", "[kernel]", AllKernels) {
