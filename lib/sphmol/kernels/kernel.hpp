@@ -6,6 +6,14 @@
 // Convention (shared by every kernel file): W(r, h) = sigma_D / h^D * f(r/h), with compact
 // support r < support * h. The sources write kernels either in R = r/h (seed 000, 001, 002) or in
 // R = r/(kappa h) (seed 003); each kernel file converts to r/h and says so.
+//
+// Optional members (read through the helpers below, so older kernels need not define them):
+//   source               — where the formula comes from ("seed 001 eq 9 / seed 003 eq 2.41")
+//   unavailable_reason   — why `available` is false in this D
+//   derivative_is_exact  — false when dWdr is not d/dr of W (seed 001 composite kernel, eq 13b)
+//   dWdr_k(r, h, k)      — derivative that depends on the smoothing coefficient k = h/d too
+//   mass()               — integral of W over R^D when it is deliberately not 1 (unrenormalised
+//                          truncated Gaussian); 1 otherwise
 #include <concepts>
 #include <string_view>
 
@@ -21,5 +29,37 @@ concept SphKernel = requires(double r, double h, double& w, double& dw) {
   { K::dWdr(r, h) } -> std::same_as<double>;
   K::eval(r, h, w, dw);  // value and radial derivative at once (the hot-loop entry)
 };
+
+// h^D without pow().
+template <int D>
+constexpr double h_power(double h) {
+  double hd = h;
+  for (int d = 1; d < D; ++d) hd *= h;
+  return hd;
+}
+
+template <class K>
+constexpr std::string_view kernel_source() {
+  if constexpr (requires { K::source; }) return K::source; else return "";
+}
+template <class K>
+constexpr std::string_view kernel_unavailable_reason() {
+  if constexpr (requires { K::unavailable_reason; }) return K::unavailable_reason;
+  else return "not defined in this dimension by its source";
+}
+template <class K>
+constexpr bool kernel_derivative_is_exact() {
+  if constexpr (requires { K::derivative_is_exact; }) return K::derivative_is_exact; else return true;
+}
+template <class K>
+double kernel_mass() {
+  if constexpr (requires { K::mass(); }) return K::mass(); else return 1.0;
+}
+// Radial derivative when the particle spacing d = h/k is known. Only kernels whose derivative
+// is a separate, k-dependent function (seed 001 eq 13b) differ from dWdr.
+template <class K>
+double kernel_dWdr_k(double r, double h, double k) {
+  if constexpr (requires { K::dWdr_k(r, h, k); }) return K::dWdr_k(r, h, k); else return K::dWdr(r, h);
+}
 
 }  // namespace sphmol
