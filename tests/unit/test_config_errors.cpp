@@ -156,7 +156,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  kernel: gaussian_bell")) ==
         "case.yaml:14: discretization.kernel: unknown value 'gaussian_bell' (allowed: cubic_spline)");
   CHECK(error_of(with("sound_speed: 0.01", "sound_speed: 0.01\n    type: tait")) ==
-        "case.yaml:8: fluid.eos.type: unknown value 'tait' (allowed: linear)");
+        "case.yaml:8: fluid.eos.type: unknown value 'tait' (allowed: linear, linear_relative)");
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  density: continuity")),
              StartsWith("case.yaml:14: discretization.density: unknown value 'continuity' (allowed: summation)"));
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  momentum: asymmetric")),

@@ -16,7 +16,7 @@ struct ConfigError : std::runtime_error {
 };
 
 struct EosConfig {
-  std::string type = "linear";  // "linear": p = c^2 rho (Morris, seed 002 eq 20)
+  std::string type = "linear";  // "linear": p = c^2 rho (Morris, seed 002 eq 20); "linear_relative": p = c^2 (rho - rho0)
   double sound_speed = 0.0;     // c [m/s], required, > 0
 };
 
@@ -40,13 +40,13 @@ struct DiscretizationConfig {
   double smoothing_ratio = 1.3;     // h / dx, > 0
   std::string density = "summation";             // summation
   std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117)
-  std::string viscosity = "strain_rate";          // strain_rate (000 eq 122) | morris
+  std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122)
   double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
   std::string boundary = "wall_particles";        // wall_particles
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
   // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).
   std::string wall_model = "morris";
-  double wall_beta_max = 1.5;       // Morris' cap on the extrapolation factor, >= 1
+  double wall_beta_max = 8.0;       // cap on the extrapolation factor, >= 1 (see boundary/morris_wall_velocity.hpp)
   int wall_layers = 0;              // 0 = enough layers to fill the kernel support
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0

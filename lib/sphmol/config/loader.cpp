@@ -127,7 +127,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         ">= 0 m^2/s");
   {
     MapReader eos = fluid.section("eos", {"type", "sound_speed"});
-    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear"});
+    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative"});
     c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
                                            "artificial speed of sound c in m/s, > 0");
     check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");

@@ -22,19 +22,13 @@ struct CubicSpline {
     for (int d = 1; d < D; ++d) hd *= h;
     return sigma / hd;
   }
+  // Branch-free form of the same spline, (1/6)[(2-q)+^3 - 4(1-q)+^3]: the pair loop evaluates it
+  // for neighbours on both sides of q = 1, where a branch would be mispredicted half the time.
   static void eval(double r, double h, double& w, double& dw) {
     const double q = r / h, a = norm(h);
-    if (q < 1.0) {
-      w = a * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
-      dw = a / h * (-2.0 * q + 1.5 * q * q);
-    } else if (q < 2.0) {
-      const double t = 2.0 - q;
-      w = a / 6.0 * t * t * t;
-      dw = -a / h * 0.5 * t * t;
-    } else {
-      w = 0.0;
-      dw = 0.0;
-    }
+    const double t2 = q < 2.0 ? 2.0 - q : 0.0, t1 = q < 1.0 ? 1.0 - q : 0.0;
+    w = a / 6.0 * (t2 * t2 * t2 - 4.0 * t1 * t1 * t1);
+    dw = a / h * (2.0 * t1 * t1 - 0.5 * t2 * t2);
   }
   static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
   static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }

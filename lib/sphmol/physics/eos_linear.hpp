@@ -1,6 +1,9 @@
 #pragma once
 // Equation of state p = c^2 rho (Morris et al. 1997; seed 002 eq 20, seed 000 eq 126): an
 // artificially compressible fluid whose sound speed c is chosen so that density varies ~1 %.
+// With `relative`, p = c^2 (rho - rho0): the same pressure gradient in the continuum, but without the
+// background pressure c^2 rho0, which the symmetric SPH gradient (000 eq 117) turns into a spurious
+// force wherever the particle arrangement is not symmetric (e.g. fluid rows sliding over a wall).
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -8,14 +11,16 @@ namespace sphmol {
 template <int D>
 class LinearEos final : public Term<D> {
  public:
-  explicit LinearEos(double sound_speed) : c2_(sound_speed * sound_speed) {}
-  std::string_view name() const override { return "eos_linear"; }
+  LinearEos(double sound_speed, double rest_density, bool relative)
+      : c2_(sound_speed * sound_speed), rho_ref_(relative ? rest_density : 0.0), relative_(relative) {}
+  std::string_view name() const override { return relative_ ? "eos_linear_relative" : "eos_linear"; }
   void apply(Workspace<D>& w) const override {
-    for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * w.rho[i];
+    for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * (w.rho[i] - rho_ref_);
   }
 
  private:
-  double c2_;
+  double c2_, rho_ref_;
+  bool relative_;
 };
 
 }  // namespace sphmol

@@ -13,7 +13,7 @@ class MorrisViscosity final : public Term<D> {
   explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
   std::string_view name() const override { return "morris_viscosity"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
+    const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
@@ -22,7 +22,7 @@ class MorrisViscosity final : public Term<D> {
         const std::uint32_t j = P.j[k];
         double r2 = 0.0;
         for (int d = 0; d < D; ++d) {
-          const double dx = w.separation(d, i, j);
+          const double dx = w.dx[d][k];
           r2 += dx * dx;
         }
         const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * w.F[k] * r2 / (r2 + eta2);

@@ -10,7 +10,7 @@ class PressureGradient117 final : public Term<D> {
  public:
   std::string_view name() const override { return "pressure_gradient_117"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
+    const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
@@ -18,7 +18,7 @@ class PressureGradient117 final : public Term<D> {
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
         const std::uint32_t j = P.j[k];
         const double s = m[j] * (pi + w.p[j] / (w.rho[j] * w.rho[j])) * w.F[k];
-        for (int d = 0; d < D; ++d) a[d] -= s * w.separation(d, i, j);
+        for (int d = 0; d < D; ++d) a[d] -= s * w.dx[d][k];
       }
       for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
     }

@@ -5,6 +5,8 @@
 // equation (000 eq 117) needs eps at the wall neighbours; wall rows see only fluid particles, and a
 // missing wall-wall pair contributes nothing for walls that move together. Velocity differences of
 // fluid-wall pairs are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
+#include <Eigen/Dense>
+
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -14,27 +16,64 @@ class StrainRate final : public Term<D> {
  public:
   std::string_view name() const override { return "strain_rate"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
-    const auto& m = w.particles->mass;
-    for (std::size_t i = 0; i < w.n; ++i) {
-      double g[D][D] = {};  // g[a][b] = sum_j V_j v_b(ji) dW/dx_a
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        const double s = m[j] / w.rho[j] * w.F[k];
-        double dx[D], dv[D];
-        for (int d = 0; d < D; ++d) {
-          dx[d] = w.separation(d, i, j);
-          dv[d] = w.vfac[k] * (w.v[d][j] - w.v[d][i]);
-        }
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) g[a][b] += s * dv[b] * dx[a];
-      }
-      double div = 0.0;
-      for (int a = 0; a < D; ++a) div += g[a][a];
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b)
-          w.strain[a * D + b][i] = g[a][b] + g[b][a] - (a == b ? 2.0 / 3.0 * div : 0.0);
+    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+      double g[D][D];
+      gradient_sums(w, i, g, nullptr);
+      store(w, i, g);
     }
+    // Wall rows list only fluid neighbours: their support is cut in half. The velocities they see are
+    // the wall model's (for the Morris model, a linear continuation of the fluid profile), so a
+    // first-order correction g <- M^-1 g with M_ac = -sum_j V_j F_ij dx_a dx_c recovers the gradient
+    // of a linear field exactly from the half support.
+    for (std::size_t i = w.n_fluid; i < w.n; ++i) {
+      double g[D][D], M[D][D];
+      gradient_sums(w, i, g, M);
+      Eigen::Matrix<double, D, D> Mm, G;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) {
+          Mm(a, b) = M[a][b];
+          G(a, b) = g[a][b];
+        }
+      const auto lu = Mm.fullPivLu();
+      if (lu.isInvertible()) {
+        G = lu.solve(G).eval();
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) g[a][b] = G(a, b);
+      }
+      store(w, i, g);
+    }
+  }
+
+ private:
+  // g[a][b] = sum_j V_j dv_b dW/dx_a with dv = vfac (v_j - v_i); M (if wanted) = -sum_j V_j F dx dx^T.
+  static void gradient_sums(const Workspace<D>& w, std::size_t i, double (&g)[D][D], double (*M)[D]) {
+    const auto& P = w.pairs;
+    const auto& m = w.particles->mass;
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) {
+        g[a][b] = 0.0;
+        if (M) M[a][b] = 0.0;
+      }
+    for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+      const std::uint32_t j = P.j[k];
+      const double s = m[j] / w.rho[j] * w.F[k];
+      double dx[D], dv[D];
+      for (int d = 0; d < D; ++d) {
+        dx[d] = w.dx[d][k];
+        dv[d] = w.vfac[k] * (w.v[d][j] - w.v[d][i]);
+      }
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) {
+          g[a][b] += s * dv[b] * dx[a];
+          if (M) M[a][b] -= s * dx[a] * dx[b];
+        }
+    }
+  }
+  static void store(Workspace<D>& w, std::size_t i, const double (&g)[D][D]) {
+    double div = 0.0;
+    for (int a = 0; a < D; ++a) div += g[a][a];
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) w.strain[a * D + b][i] = g[a][b] + g[b][a] - (a == b ? 2.0 / 3.0 * div : 0.0);
   }
 };
 

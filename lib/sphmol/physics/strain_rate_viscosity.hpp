@@ -12,7 +12,7 @@ class StrainRateViscosity117 final : public Term<D> {
   explicit StrainRateViscosity117(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
   std::string_view name() const override { return "strain_rate_viscosity_117"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
+    const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       const double ci = mu_ / (w.rho[i] * w.rho[i]);
@@ -21,7 +21,7 @@ class StrainRateViscosity117 final : public Term<D> {
         const std::uint32_t j = P.j[k];
         const double cj = mu_ / (w.rho[j] * w.rho[j]);
         double dx[D];
-        for (int d = 0; d < D; ++d) dx[d] = w.separation(d, i, j);
+        for (int d = 0; d < D; ++d) dx[d] = w.dx[d][k];
         const double s = m[j] * w.F[k];
         for (int p = 0; p < D; ++p) {
           double t = 0.0;

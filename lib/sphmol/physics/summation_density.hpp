@@ -11,7 +11,7 @@ class SummationDensity final : public Term<D> {
  public:
   std::string_view name() const override { return "summation_density"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
+    const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double rho = m[i] * w.W0;

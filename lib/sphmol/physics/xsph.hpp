@@ -12,7 +12,7 @@ class Xsph final : public Term<D> {
   explicit Xsph(double epsilon) : eps_(epsilon) {}
   std::string_view name() const override { return "xsph"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = *w.pairs;
+    const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double c[D] = {};

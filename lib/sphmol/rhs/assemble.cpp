@@ -26,8 +26,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   std::vector<std::unique_ptr<Term<D>>> terms;
   if (disc.density != "summation") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
   terms.push_back(std::make_unique<SummationDensity<D>>());
-  if (fluid.eos.type != "linear") throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
-  terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed));
+  if (fluid.eos.type != "linear" && fluid.eos.type != "linear_relative")
+    throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
+  terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.type == "linear_relative"));
   if (disc.momentum != "symmetric_117") throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
   if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max));
   else if (disc.wall_model != "prescribed")

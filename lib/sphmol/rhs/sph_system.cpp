@@ -70,9 +70,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   in.kind = particles_.kind.data();
   in.n = n;
   in.domain = &domain_;
-  if (pairs_->update(in)) ws_.vfac.assign(pairs_->pairs().pairs(), 1.0);
-  ws_.pairs = &pairs_->pairs();
-  kernel_->apply(ws_);
+  pairs_->update(in);
+  kernel_->apply(pairs_->pairs(), ws_);
 
   for (int d = 0; d < D; ++d) {
     ws_.dxdt[d] = ydot + layout_.position(d);

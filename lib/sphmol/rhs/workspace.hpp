@@ -1,7 +1,9 @@
 #pragma once
 // Everything one RHS evaluation reads and writes. Per-particle arrays cover all particles (fluid
-// then wall); per-pair arrays follow the CSR pair list. Kernel values W and F = (dW/dr)/r are
-// computed once per pair per evaluation (grad_i W_ij = F_ij * (x_i - x_j)) and reused by every term.
+// then wall). The kernel pass compacts the Verlet list (which includes the skin) into the pairs
+// actually inside the support, `pairs`, and stores per pair the separation dx = x_i - x_j (minimum
+// image), W and F = (dW/dr)/r, so that grad_i W_ij = F_ij dx_ij. Terms read these and never
+// recompute a distance or a kernel.
 #include <array>
 #include <vector>
 
@@ -16,12 +18,13 @@ struct Workspace {
   std::size_t n = 0, n_fluid = 0;
   const Particles<D>* particles = nullptr;  // mass, kind, wall motion
   const Domain<D>* domain = nullptr;
-  const PairList* pairs = nullptr;
+  PairList pairs;  // active pairs (r < support), same row structure as the Verlet list
   double h = 0.0;
   double W0 = 0.0;  // W(0, h): the self-contribution to summation density
 
   std::array<std::vector<double>, D> x, v;  // current positions (wrapped) and velocities
   std::vector<double> rho, p;
+  std::array<std::vector<double>, D> dx;    // per pair: x_i - x_j
   std::vector<double> W, F;                 // per pair
   // Per pair: the factor on the velocity difference seen by viscous terms. 1 between fluid particles;
   // for a fluid-wall pair it is set by the wall model (1 for prescribed wall velocities, Morris'
@@ -32,7 +35,6 @@ struct Workspace {
   // Outputs for fluid particles (point into the caller's ydot).
   std::array<double*, D> dxdt{}, dvdt{};
 
-  double separation(int d, std::size_t i, std::size_t j) const { return domain->min_image(d, x[d][i] - x[d][j]); }
 };
 
 }  // namespace sphmol

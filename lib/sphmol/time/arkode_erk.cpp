@@ -8,6 +8,8 @@
 namespace sphmol {
 
 namespace {
+constexpr double kCflFraction = 0.5;
+
 void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(std::string("ARKODE: ") + what + " failed: " + ERKStepGetReturnFlagName(flag));
 }
@@ -39,7 +41,9 @@ int ArkodeErk::rhs_callback(double t, N_Vector y, N_Vector ydot, void* self) {
 }
 
 int ArkodeErk::stability_callback(N_Vector, double, double* hstab, void* self) {
-  *hstab = static_cast<ArkodeErk*>(self)->sys_->stable_step();
+  // ARKODE multiplies hstab by its CFL fraction (which must be < 1); the time.cfl coefficients already
+  // hold the safety margin, so hand it the limit divided by that fraction.
+  *hstab = static_cast<ArkodeErk*>(self)->sys_->stable_step() / kCflFraction;
   return 0;
 }
 
@@ -63,6 +67,7 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   } else {
     check(ERKStepSStolerances(mem_, opt_.rtol, opt_.atol), "SStolerances");
     check(ERKStepSetStabilityFn(mem_, &ArkodeErk::stability_callback, this), "SetStabilityFn");
+    check(ERKStepSetCFLFraction(mem_, kCflFraction), "SetCFLFraction");
     check(ERKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
   }
 }
