@@ -1,0 +1,53 @@
+#pragma once
+// A verification case: builds its scene and RHS from the config, and measures the solution against
+// its reference at output times. Cases register by name (run/case_registry.hpp); the generic run
+// loop (run/run_case.cpp) integrates and calls the case and every output observer at output times.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/rhs/sph_system.hpp"
+
+namespace sphmol {
+
+// Where a run writes its files; `enabled` is false for in-memory runs (tests, studies).
+struct OutputSink {
+  std::string directory;
+  bool enabled = true;
+  std::string path(const std::string& file) const { return directory + "/" + file; }
+};
+
+template <int D>
+class Case {
+ public:
+  virtual ~Case() = default;
+  // Builds the particles, domain and RHS. Called once.
+  virtual std::unique_ptr<SphSystem<D>> build(const Config& config) = 0;
+  // Name of the reference solution (for the summary).
+  virtual std::string reference() const = 0;
+  // Error measures at an output time, under the SPEC §3 keys of the case (e.g. e_rms, e_max).
+  // May write per-time files (profiles) through `out`.
+  virtual nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
+  // The summary's final_errors; by default the last measurement without its "t".
+  virtual nlohmann::json final_errors(const nlohmann::json& errors) const {
+    if (errors.empty()) return nlohmann::json::object();
+    nlohmann::json last = errors.back();
+    last.erase("t");
+    return last;
+  }
+  // Anything else the case adds to the summary (reference parameters, wave positions, ...).
+  virtual void annotate(nlohmann::json& summary) const {}
+};
+
+// Called at every output time after the case's measurement (VTK writers, checkpoints, ...).
+template <int D>
+class OutputObserver {
+ public:
+  virtual ~OutputObserver() = default;
+  virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
+  virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+};
+
+}  // namespace sphmol

@@ -1,0 +1,15 @@
+#include "sphmol/run/case_registry.hpp"
+
+#include "sphmol/scenes/channel_case.hpp"
+
+namespace sphmol {
+
+const std::map<std::string, CaseFactory>& case_registry() {
+  static const std::map<std::string, CaseFactory> registry = {
+      {"couette", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
+      {"poiseuille", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
+  };
+  return registry;
+}
+
+}  // namespace sphmol

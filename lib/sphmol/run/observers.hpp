@@ -1,0 +1,13 @@
+#pragma once
+// The output observers a config asks for (VTK files, checkpoints, ...), created once per run.
+#include <memory>
+#include <vector>
+
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+template <int D>
+std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config);
+
+}  // namespace sphmol

@@ -1,0 +1,23 @@
+#pragma once
+// Couette and Poiseuille start-up flows (seed 002 §4): the channel scene, the series reference and
+// the e_rms / e_max error of u / v0 over fluid particles, with a profile CSV per output time.
+#include "sphmol/run/case.hpp"
+#include "sphmol/scenes/channel_reference.hpp"
+
+namespace sphmol {
+
+class ChannelCase final : public Case<2> {
+ public:
+  std::unique_ptr<SphSystem<2>> build(const Config& config) override;
+  std::string reference() const override { return ref_.name; }
+  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  ChannelReference ref_;
+  bool profiles_ = true;
+  int wall_layers_ = 0;
+  double spacing_ = 0.0;
+};
+
+}  // namespace sphmol
