@@ -154,7 +154,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
         "case.yaml:14: discretization.viscosity: unknown value 'mooris' (did you mean 'morris'? allowed: "
         "strain_rate, morris)");
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  kernel: gaussian_bell")) ==
-        "case.yaml:14: discretization.kernel: unknown value 'gaussian_bell' (allowed: cubic_spline)");
+        "case.yaml:14: discretization.kernel: unknown value 'gaussian_bell' (allowed: cubic_spline, lucy, gaussian, truncated_exponential, quartic_liu, quintic_morris, quadratic_johnson, super_gaussian, desbrun_spiky, muller_poly6, composite, wendland_c2)");
   CHECK(error_of(with("sound_speed: 0.01", "sound_speed: 0.01\n    type: tait")) ==
         "case.yaml:8: fluid.eos.type: unknown value 'tait' (allowed: linear, linear_relative)");
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  density: continuity")),
@@ -164,7 +164,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  boundary: ghost")),
              StartsWith("case.yaml:14: discretization.boundary: unknown value 'ghost' (allowed: wall_particles)"));
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  neighbor_search: cells")) ==
-        "case.yaml:14: discretization.neighbor_search: unknown value 'cells' (allowed: kdtree, all_pairs)");
+        "case.yaml:14: discretization.neighbor_search: unknown value 'cells' (allowed: kdtree, cell_list, all_pairs)");
   CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  integrator: euler")) ==
         "case.yaml:16: time.integrator: unknown value 'euler' (allowed: arkode_erk, leapfrog)");
 }

@@ -76,7 +76,7 @@ TEST_CASE("config: a valid config loads with its values and the defaults", "[con
   CHECK(c.discretization.smoothing_ratio == 1.3);
   CHECK(c.discretization.density == "summation");
   CHECK(c.discretization.momentum == "symmetric_117");
-  CHECK(c.discretization.viscosity == "strain_rate");
+  CHECK(c.discretization.viscosity == "morris");
   CHECK(c.discretization.xsph == 0.0);
   CHECK(c.discretization.boundary == "wall_particles");
   CHECK(c.discretization.wall_layers == 0);

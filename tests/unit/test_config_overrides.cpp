@@ -54,7 +54,7 @@ TEST_CASE("config overrides: errors name the override", "[config]") {
         "--set output.times=[0.3, 0.2]: output.times[1]: 0.2 is not after the previous time 0.3 (times must be "
         "strictly increasing)");
   CHECK(error_of(base, {"discretization.kernel=wendland"}) ==
-        "--set discretization.kernel=wendland: discretization.kernel: unknown value 'wendland' (allowed: cubic_spline)");
+        "--set discretization.kernel=wendland: discretization.kernel: unknown value 'wendland' (allowed: cubic_spline, lucy, gaussian, truncated_exponential, quartic_liu, quintic_morris, quadratic_johnson, super_gaussian, desbrun_spiky, muller_poly6, composite, wendland_c2)");
   CHECK(error_of(base, {"output.times=0.3"}) ==
         "--set output.times=0.3: output.times: expected a list of numbers such as [0.1, 0.2], got '0.3'");
   CHECK(error_of(base, {"discretization.spacing=1e-4"}) ==

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "sphmol/neighbors/all_pairs_search.hpp"
+#include "sphmol/neighbors/cell_list_search.hpp"
 #include "sphmol/neighbors/kdtree_search.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
 
@@ -65,11 +66,14 @@ Cloud<D> lattice_cloud(int per_side, bool periodic) {
 
 template <int D>
 void require_same_pairs(const Cloud<D>& c, double radius) {
-  PairList ref, tree;
+  PairList ref, tree, cells;
   AllPairsSearch<D>().build(c.input(radius), ref);
   KdTreeSearch<D>().build(c.input(radius), tree);
+  CellListSearch<D>().build(c.input(radius), cells);
   REQUIRE(ref.offset == tree.offset);
   REQUIRE(ref.j == tree.j);
+  REQUIRE(ref.offset == cells.offset);
+  REQUIRE(ref.j == cells.j);
   // Never a pair of two wall particles; every pair listed from both sides.
   std::size_t walls_only = 0;
   for (std::size_t i = 0; i < ref.rows(); ++i)
@@ -81,7 +85,7 @@ void require_same_pairs(const Cloud<D>& c, double radius) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE_SIG("kd-tree and all-pairs give identical pair sets", "[neighbors]", ((int D), D), 1, 2, 3) {
+TEMPLATE_TEST_CASE_SIG("kd-tree, cell list and all-pairs give identical pair sets", "[neighbors]", ((int D), D), 1, 2, 3) {
   const double radius = D == 1 ? 0.03 : D == 2 ? 0.09 : 0.2;
   SECTION("random, open box") { require_same_pairs(random_cloud<D>(D == 3 ? 600 : 800, false, 0.2, 1), radius); }
   SECTION("random, periodic box") { require_same_pairs(random_cloud<D>(D == 3 ? 600 : 800, true, 0.2, 2), radius); }
@@ -90,6 +94,14 @@ TEMPLATE_TEST_CASE_SIG("kd-tree and all-pairs give identical pair sets", "[neigh
     // support and must be excluded by both searches alike.
     const int n = D == 3 ? 10 : 20;
     require_same_pairs(lattice_cloud<D>(n, true), 2.0 / n);
+  }
+  SECTION("periodic box only two cells wide") { require_same_pairs(random_cloud<D>(300, true, 0.2, 5), 0.45); }
+  SECTION("a particle outside the open box") {
+    auto c = random_cloud<D>(400, false, 0.2, 6);
+    c.x[0][0] = 1.05;  // escaped: the cell list must still find its pairs
+    c.x[0][1] = 1.0 + 0.5 * radius;
+    c.kind[0] = c.kind[1] = Kind::Fluid;
+    require_same_pairs(c, radius);
   }
   SECTION("lattice, open box") { require_same_pairs(lattice_cloud<D>(D == 3 ? 10 : 20, false), D == 3 ? 0.25 : 0.13); }
 }

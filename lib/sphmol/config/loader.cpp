@@ -214,7 +214,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.wall_layers = static_cast<int>(*v);
     }
     if (const auto v = disc.string("neighbor_search"))
-      d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "all_pairs"});
+      d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "cell_list", "all_pairs"});
     if (const auto v = disc.real("skin")) d.skin = *v;
     check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
   }

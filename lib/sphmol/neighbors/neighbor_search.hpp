@@ -29,7 +29,7 @@ class NeighborSearch {
   virtual void build(const SearchInput<D>& in, PairList& out) = 0;
 };
 
-// "kdtree" or "all_pairs".
+// "kdtree", "cell_list" or "all_pairs".
 template <int D>
 std::unique_ptr<NeighborSearch<D>> make_neighbor_search(std::string_view name);
 
