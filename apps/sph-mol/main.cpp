@@ -2,6 +2,8 @@
 // subcommands (kernels, ...) register themselves through subcommand.hpp.
 #include <CLI/CLI.hpp>
 
+#include <omp.h>
+
 #include <iostream>
 
 #include "sphmol/config/config.hpp"
@@ -47,8 +49,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   std::string config_path, output;
   std::vector<std::string> overrides;
+  int threads = 1;
   app.add_option("--config", config_path, "case configuration (YAML), see config/README.md")->check(CLI::ExistingFile);
   app.add_option("--output", output, "output directory (overrides output.directory)");
+  app.add_option("--threads", threads, "OpenMP threads for the RHS and vector operations (0 = all cores)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--set", overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
   for (auto& s : sphmol::app::subcommands()) {
     auto* sub = app.add_subcommand(s.name, s.description);
@@ -59,6 +64,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  if (threads > 0) omp_set_num_threads(threads);
   for (auto& s : sphmol::app::subcommands())
     if (app.got_subcommand(s.name)) return s.run();
   if (config_path.empty()) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
@@ -118,4 +119,20 @@ TEST_CASE("a bad config stops sph-mol with exit code 2 and writes nothing", "[in
   CHECK(rc == 2);
   CHECK_FALSE(fs::exists(dir));
   CHECK(slurp(dir + ".log").find("fluid.kinematic_viscosity") != std::string::npos);
+}
+
+TEST_CASE("results are bit-identical for 1 and 2 threads", "[integration][threads]") {
+  // Rows are independent and each row sums in list order, so the thread count changes nothing.
+  std::vector<std::string> o{"time.t_end=0.05", "output.times=[0.05]"};
+  omp_set_num_threads(1);
+  const auto one = run("poiseuille.yaml", o);
+  omp_set_num_threads(2);
+  const auto two = run("poiseuille.yaml", o);
+  omp_set_num_threads(1);
+  CHECK(one["threads"] == 1);
+  CHECK(two["threads"] == 2);
+  CHECK(one["final_errors"]["e_rms"].get<double>() == two["final_errors"]["e_rms"].get<double>());
+  CHECK(one["final_errors"]["e_max"].get<double>() == two["final_errors"]["e_max"].get<double>());
+  CHECK(one["steps"] == two["steps"]);
+  CHECK(one["rhs_evals"] == two["rhs_evals"]);
 }

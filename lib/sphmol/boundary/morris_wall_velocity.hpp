@@ -24,6 +24,7 @@ class MorrisWallVelocity final : public Term<D> {
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& pt = *w.particles;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       const bool wall_row = i >= w.n_fluid;
       // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.

@@ -15,6 +15,7 @@ class LinearEos final : public Term<D> {
       : c2_(sound_speed * sound_speed), rho_ref_(relative ? rest_density : 0.0), relative_(relative) {}
   std::string_view name() const override { return relative_ ? "eos_linear_relative" : "eos_linear"; }
   void apply(Workspace<D>& w) const override {
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * (w.rho[i] - rho_ref_);
   }
 

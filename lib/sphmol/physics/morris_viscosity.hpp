@@ -16,6 +16,7 @@ class MorrisViscosity final : public Term<D> {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double a[D] = {};
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {

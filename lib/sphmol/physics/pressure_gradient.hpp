@@ -12,6 +12,7 @@ class PressureGradient117 final : public Term<D> {
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
       double a[D] = {};

@@ -16,6 +16,7 @@ class StrainRate final : public Term<D> {
  public:
   std::string_view name() const override { return "strain_rate"; }
   void apply(Workspace<D>& w) const override {
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double g[D][D];
       gradient_sums(w, i, g, nullptr);
@@ -25,6 +26,7 @@ class StrainRate final : public Term<D> {
     // the wall model's (for the Morris model, a linear continuation of the fluid profile), so a
     // first-order correction g <- M^-1 g with M_ac = -sum_j V_j F_ij dx_a dx_c recovers the gradient
     // of a linear field exactly from the half support.
+#pragma omp parallel for schedule(static)
     for (std::size_t i = w.n_fluid; i < w.n; ++i) {
       double g[D][D], M[D][D];
       gradient_sums(w, i, g, M);

@@ -14,6 +14,7 @@ class StrainRateViscosity117 final : public Term<D> {
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       const double ci = mu_ / (w.rho[i] * w.rho[i]);
       double a[D] = {};

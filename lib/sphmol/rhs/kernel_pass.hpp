@@ -29,55 +29,76 @@ class KernelPassFor final : public KernelPass<D> {
   double value_at_zero(double h) const override { return K::W(0.0, h); }
   // Kernels follow W(r, h) = W(r/h, 1) / h^D (kernels/kernel.hpp), so the loop evaluates at h = 1,
   // where every division by h folds away, and scales once (checked for every kernel by a unit test).
-  // The compaction writes every candidate and advances only for pairs inside the support: no
-  // data-dependent branch.
+  // Rows run in parallel: a first pass counts each row's pairs inside the support, a prefix sum
+  // places the rows, and the second pass fills them, so the active list stays one contiguous CSR
+  // whatever the thread count and every row is written by one thread.
   void apply(const PairList& verlet, Workspace<D>& w) const override {
     const double inv_h = 1.0 / w.h, rc2 = K::support * w.h * K::support * w.h;
     const double w_scale = 1.0 / h_power<D>(w.h), dw_scale = w_scale * inv_h;
-    const std::size_t rows = verlet.rows(), cap = verlet.pairs();
+    const long rows = static_cast<long>(verlet.rows());
     PairList& P = w.pairs;
-    P.offset.resize(rows + 1);
-    P.j.resize(cap + 1);  // one slot of slack for the last unconditional write
-    for (int d = 0; d < D; ++d) w.dx[d].resize(cap + 1);
-    w.W.resize(cap + 1);
-    w.F.resize(cap + 1);
-    w.vfac.resize(cap + 1);
-    std::uint32_t* pj = P.j.data();
-    double *pW = w.W.data(), *pF = w.F.data(), *pv = w.vfac.data();
-    double* pdx[D];
     const double* px[D];
     double period[D], inv_period[D];
     for (int d = 0; d < D; ++d) {
-      pdx[d] = w.dx[d].data();
       px[d] = w.x[d].data();
       period[d] = w.domain->period(d);
       inv_period[d] = w.domain->inv_period(d);
     }
     const std::uint32_t* vj = verlet.j.data();
-    std::uint32_t k = 0;
-    P.offset[0] = 0;
-    for (std::size_t i = 0; i < rows; ++i) {
-      for (std::uint32_t q = verlet.offset[i]; q < verlet.offset[i + 1]; ++q) {
+    const std::uint32_t* vo = verlet.offset.data();
+    auto separation = [&](std::size_t i, std::uint32_t j, double (&dx)[D]) {
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        dx[d] = px[d][i] - px[d][j];
+        dx[d] -= period[d] * std::nearbyint(dx[d] * inv_period[d]);
+        r2 += dx[d] * dx[d];
+      }
+      return r2;
+    };
+
+    P.offset.resize(static_cast<std::size_t>(rows) + 1);
+    std::uint32_t* po = P.offset.data();
+    po[0] = 0;
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < rows; ++i) {
+      std::uint32_t count = 0;
+      for (std::uint32_t q = vo[i]; q < vo[i + 1]; ++q) {
+        double dx[D];
+        count += separation(static_cast<std::size_t>(i), vj[q], dx) < rc2 ? 1u : 0u;
+      }
+      po[i + 1] = count;
+    }
+    for (long i = 0; i < rows; ++i) po[i + 1] += po[i];
+    const std::size_t n_active = po[rows];
+    P.j.resize(n_active);
+    for (int d = 0; d < D; ++d) w.dx[d].resize(n_active);
+    w.W.resize(n_active);
+    w.F.resize(n_active);
+    w.vfac.resize(n_active);
+    std::uint32_t* pj = P.j.data();
+    double *pW = w.W.data(), *pF = w.F.data(), *pv = w.vfac.data();
+    double* pdx[D];
+    for (int d = 0; d < D; ++d) pdx[d] = w.dx[d].data();
+
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < rows; ++i) {
+      std::uint32_t k = po[i];
+      for (std::uint32_t q = vo[i]; q < vo[i + 1]; ++q) {
         const std::uint32_t j = vj[q];
-        double r2 = 0.0;
-        for (int d = 0; d < D; ++d) {
-          double dx = px[d][i] - px[d][j];
-          dx -= period[d] * std::nearbyint(dx * inv_period[d]);
-          pdx[d][k] = dx;
-          r2 += dx * dx;
-        }
+        double dx[D];
+        const double r2 = separation(static_cast<std::size_t>(i), j, dx);
+        if (r2 >= rc2) continue;
         const double r = std::sqrt(r2);
         double wv, dw;
         K::eval(r * inv_h, 1.0, wv, dw);
         pj[k] = j;
+        for (int d = 0; d < D; ++d) pdx[d][k] = dx[d];
         pW[k] = wv * w_scale;
         pF[k] = r > 0.0 ? dw * dw_scale / r : 0.0;  // coincident particles exert no gradient
         pv[k] = 1.0;                                 // the wall model, if any, overwrites fluid-wall pairs
-        k += r2 < rc2 ? 1u : 0u;
+        ++k;
       }
-      P.offset[i + 1] = k;
     }
-    P.j.resize(k);
   }
 };
 

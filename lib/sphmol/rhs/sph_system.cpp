@@ -58,6 +58,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   for (int d = 0; d < D; ++d) {
     const double* xs = y + layout_.position(d);
     const double* vs = y + layout_.velocity(d);
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < nf; ++i) {
       ws_.x[d][i] = domain_.wrap(d, xs[i]);
       ws_.v[d][i] = vs[i];
@@ -82,6 +83,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   for (const auto& term : terms_) term->apply(ws_);
 
   double vmax2 = 0.0, amax2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
   for (std::size_t i = 0; i < nf; ++i) {
     double v2 = 0.0, a2 = 0.0;
     for (int d = 0; d < D; ++d) {

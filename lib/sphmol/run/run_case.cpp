@@ -1,5 +1,7 @@
 #include "sphmol/run/run_case.hpp"
 
+#include <omp.h>
+
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -54,7 +56,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["rhs_evals"] = sys->rhs_evaluations();
   j["neighbor_rebuilds"] = sys->pair_list().rebuilds();
   j["wall_seconds"] = wall;
-  j["threads"] = 1;
+  j["threads"] = omp_get_max_threads();
   j["active_terms"] = sys->active_terms();
   j["state_fields"] = sys->layout().field_names();
   j["errors"] = errors;

@@ -1,5 +1,8 @@
 #include "sphmol/time/arkode_erk.hpp"
 
+#include <nvector/nvector_openmp.h>
+#include <omp.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -51,7 +54,11 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   sys_ = &sys;
   t_ = t0;
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
-  y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+  // The N_Vector wraps the caller's storage (no copy); with several threads the OpenMP vector
+  // runs the integrator's vector operations in parallel as well.
+  const int threads = omp_get_max_threads();
+  y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(sys.size()), y, threads, ctx_)
+                   : N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());
