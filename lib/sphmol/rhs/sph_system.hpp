@@ -43,6 +43,8 @@ class SphSystem final : public OdeSystem {
   std::vector<std::string> active_terms() const;
   std::string_view kernel_name() const { return kernel_->kernel_name(); }
   const VerletList<D>& pair_list() const { return *pairs_; }
+  // Pairs inside the kernel support at the most recent evaluation (directed: each pair twice).
+  std::size_t active_pairs() const { return ws_.pairs.pairs(); }
   // The density and pressure of the most recent evaluation (all particles).
   const std::vector<double>& density() const { return ws_.rho; }
   const std::vector<double>& pressure() const { return ws_.p; }
