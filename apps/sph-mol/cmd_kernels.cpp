@@ -14,6 +14,7 @@
 
 #include "sphmol/analysis/hydrostatic_error.hpp"
 #include "sphmol/analysis/kernel_moments.hpp"
+#include "sphmol/analysis/corrected_consistency.hpp"
 #include "sphmol/analysis/particle_consistency.hpp"
 #include "sphmol/analysis/particle_sets.hpp"
 #include "sphmol/kernels/registry.hpp"
@@ -26,6 +27,7 @@ struct Options {
   std::string analysis;
   std::string output;
   std::string kernel;
+  std::string correction = "none";
   double eps = 0.01;
 } opt;
 
@@ -56,23 +58,30 @@ void print_consistency() {
   const int n = 6;                      // lattice half-width in d: covers support 3h
   std::printf("== %dD discrete consistency at the origin particle, d = 1, h = 1.3 d (seed 000 eqs 90-91: "
               "S0 -> 1, S1 -> 0; gradient sums G0 -> 0, G1 -> I) ==\n", D);
-  std::printf("%-22s %-10s %4s %14s %12s %12s %14s %12s\n", "kernel", "set", "N", "S0-1", "|S1|", "|G0|",
+  std::printf("%-22s %-15s %4s %14s %12s %12s %14s %12s\n", "kernel", "set", "N", "S0-1", "|S1|", "|G0|",
               "max|G1-I|", "");
   const ParticleSet<D> sets[3] = {regular_lattice<D>(n, d), perturbed_lattice<D>(n, d, 0.2, 20211979),
                                   wall_lattice<D>(n, d)};
-  const char* names[3] = {"regular", "perturbed", "wall"};
+  const char* names[6] = {"regular", "perturbed", "wall", "regular+rkpm", "perturbed+rkpm", "wall+rkpm"};
   std::array<double, D> x{};
   for (const auto& e : sphmol::kernel_catalogue<D>()) {
     if (!e.available || (!opt.kernel.empty() && e.name != opt.kernel)) continue;
-    for (int s = 0; s < 3; ++s) {
-      const auto c = consistency_sums<D>(sets[s], x, h, e.info, h / d);
+    for (int s = 0; s < 6; ++s) {
+      const bool corrected = s >= 3;
+      if (corrected && opt.correction != "rkpm") break;
+      ConsistencySums<D> c;
+      if (!corrected) c = consistency_sums<D>(sets[s], x, h, e.info, h / d);
+      else if (!rkpm_consistency_sums<D>(sets[s - 3], x, h, e.info, h / d, c)) {
+        std::printf("%-22s %-15s  singular moment matrix\n", std::string(e.name).c_str(), names[s]);
+        continue;
+      }
       double s1 = 0, g0 = 0, g1 = 0;
       for (int a = 0; a < D; ++a) {
         s1 += c.S1[a] * c.S1[a];
         g0 += c.G0[a] * c.G0[a];
         for (int b = 0; b < D; ++b) g1 = std::max(g1, std::abs(c.G1[a][b] - (a == b ? 1.0 : 0.0)));
       }
-      std::printf("%-22s %-10s %4d %14.6e %12.4e %12.4e %14.6e\n", std::string(e.name).c_str(), names[s],
+      std::printf("%-22s %-15s %4d %14.6e %12.4e %12.4e %14.6e\n", std::string(e.name).c_str(), names[s],
                   c.neighbours, c.S0 - 1.0, std::sqrt(s1), std::sqrt(g0), g1);
     }
   }
@@ -212,6 +221,10 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--output,-o", opt.output, "Directory for hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv");
       sub.add_option("--kernel,-k", opt.kernel, "Restrict to one kernel");
       sub.add_option("--eps", opt.eps, "Tolerance of condition 22 (default 0.01)");
+      sub.add_option("--correction", opt.correction,
+                     "none (default) or rkpm: also print the consistency sums with the RKPM / moment-matrix "
+                     "correction (seed 000 eqs 92-99), which restores linear consistency at the wall")
+          ->check(CLI::IsMember({"none", "rkpm"}));
     },
     run}};
 
