@@ -4,12 +4,14 @@
 // alpha_D = 1/h, 15/(7 pi h^2), 3/(2 pi h^3) in 1D/2D/3D; tests/unit/test_kernel_normalisation.cpp
 // checks each by GSL quadrature.
 #include <numbers>
+
+#include "sphmol/kernels/kernel.hpp"
 #include <string_view>
 
 namespace sphmol {
 
 template <int D>
-struct CubicSpline {
+struct CubicSpline : KernelFromEval<CubicSpline<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "cubic_spline";
   static constexpr std::string_view source = "seed 000 eq 58 / seed 001 eq 8 / seed 003 eq 2.40";
@@ -30,8 +32,6 @@ struct CubicSpline {
     w = a / 6.0 * (t2 * t2 * t2 - 4.0 * t1 * t1 * t1);
     dw = a / h * (2.0 * t1 * t1 - 0.5 * t2 * t2);
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -12,7 +12,7 @@
 namespace sphmol {
 
 template <int D>
-struct DesbrunSpikyKernel {
+struct DesbrunSpikyKernel : KernelFromEval<DesbrunSpikyKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "desbrun_spiky";
   static constexpr std::string_view source = "seed 001 eq 11 read as (2-q)^3 (Desbrun & Cani 1996); 1D constant from the integral";
@@ -27,8 +27,6 @@ struct DesbrunSpikyKernel {
     w = a * t * t * t;
     dw = -3.0 * a / h * t * t;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -24,7 +24,7 @@ inline double gaussian_ball_mass() {
 }
 
 template <int D>
-struct GaussianKernel {
+struct GaussianKernel : KernelFromEval<GaussianKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "gaussian";
   static constexpr std::string_view source = "seed 000 eq 57, truncated at 3h and renormalised";
@@ -38,8 +38,6 @@ struct GaussianKernel {
     w = sigma / h_power<D>(h) * std::exp(-q * q);
     dw = -2.0 * q / h * w;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -30,6 +30,21 @@ concept SphKernel = requires(double r, double h, double& w, double& dw) {
   K::eval(r, h, w, dw);  // value and radial derivative at once (the hot-loop entry)
 };
 
+// W and dW/dr as separate calls, derived from a kernel's eval(r, h, w, dw) (CRTP base of every kernel).
+template <class K>
+struct KernelFromEval {
+  static double W(double r, double h) {
+    double w, dw;
+    K::eval(r, h, w, dw);
+    return w;
+  }
+  static double dWdr(double r, double h) {
+    double w, dw;
+    K::eval(r, h, w, dw);
+    return dw;
+  }
+};
+
 // h^D without pow().
 template <int D>
 constexpr double h_power(double h) {

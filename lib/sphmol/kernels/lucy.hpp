@@ -9,7 +9,7 @@
 namespace sphmol {
 
 template <int D>
-struct LucyKernel {
+struct LucyKernel : KernelFromEval<LucyKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "lucy";
   static constexpr std::string_view source = "seed 000 eq 55 (Lucy 1977)";
@@ -24,8 +24,6 @@ struct LucyKernel {
     w = a * (1.0 + 3.0 * q) * t * t * t;
     dw = a / h * (-12.0 * q * t * t);
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -10,7 +10,7 @@
 namespace sphmol {
 
 template <int D>
-struct MullerPoly6Kernel {
+struct MullerPoly6Kernel : KernelFromEval<MullerPoly6Kernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "muller_poly6";
   static constexpr std::string_view source = "seed 001 eq 12 (1D constant from the integral)";
@@ -25,8 +25,6 @@ struct MullerPoly6Kernel {
     w = a * t * t * t;
     dw = -6.0 * a / h * q * t * t;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

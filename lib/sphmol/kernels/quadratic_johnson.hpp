@@ -11,7 +11,7 @@
 namespace sphmol {
 
 template <int D>
-struct QuadraticJohnsonKernel {
+struct QuadraticJohnsonKernel : KernelFromEval<QuadraticJohnsonKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quadratic_johnson";
   static constexpr std::string_view source = "seed 001 eq 10 / seed 003 eq 2.44";
@@ -26,8 +26,6 @@ struct QuadraticJohnsonKernel {
     w = a * (0.75 - 0.75 * q + 0.1875 * q * q);
     dw = a / h * (-0.75 + 0.375 * q);
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -13,7 +13,7 @@
 namespace sphmol {
 
 template <int D>
-struct QuarticLiuKernel {
+struct QuarticLiuKernel : KernelFromEval<QuarticLiuKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quartic_liu";
   static constexpr std::string_view source = "seed 001 eq 9 / seed 003 eq 2.41";
@@ -28,8 +28,6 @@ struct QuarticLiuKernel {
     w = a * (2.0 / 3.0 + q * q * (-9.0 / 8.0 + q * (19.0 / 24.0 - 5.0 / 32.0 * q)));
     dw = a / h * q * (-9.0 / 4.0 + q * (19.0 / 8.0 - 5.0 / 8.0 * q));
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -14,7 +14,7 @@
 namespace sphmol {
 
 template <int D>
-struct QuinticMorrisKernel {
+struct QuinticMorrisKernel : KernelFromEval<QuinticMorrisKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quintic_morris";
   static constexpr std::string_view source = "seed 001 eq 7 / seed 003 eq 2.42 (constants from the integral)";
@@ -40,8 +40,6 @@ struct QuinticMorrisKernel {
     w = a * f;
     dw = a / h * df;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

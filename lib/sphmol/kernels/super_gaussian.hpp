@@ -26,7 +26,7 @@ inline double super_gaussian_ball_mass() {
 }
 
 template <int D>
-struct SuperGaussianKernel {
+struct SuperGaussianKernel : KernelFromEval<SuperGaussianKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "super_gaussian";
   static constexpr std::string_view source = "seed 001 eq 6, renormalised over q < 3 (printed constants wrong)";
@@ -41,8 +41,6 @@ struct SuperGaussianKernel {
     w = a * (1.5 - q * q) * e;
     dw = a / h * q * (2.0 * q * q - 5.0) * e;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

@@ -16,7 +16,7 @@
 namespace sphmol {
 
 template <int D>
-struct TruncatedExponentialKernel {
+struct TruncatedExponentialKernel : KernelFromEval<TruncatedExponentialKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "truncated_exponential";
   static constexpr std::string_view source = "seed 003 eq 2.43 (kappa = 3), printed constant, not renormalised";
@@ -31,8 +31,6 @@ struct TruncatedExponentialKernel {
     w = sigma / h_power<D>(h) * std::exp(-q * q);
     dw = -2.0 * q / h * w;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol

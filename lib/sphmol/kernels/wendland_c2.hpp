@@ -11,7 +11,7 @@
 namespace sphmol {
 
 template <int D>
-struct WendlandC2Kernel {
+struct WendlandC2Kernel : KernelFromEval<WendlandC2Kernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "wendland_c2";
   static constexpr std::string_view source = "Wendland 1995 psi_3,1 (not in the seeds)";
@@ -26,8 +26,6 @@ struct WendlandC2Kernel {
     w = a * t3 * t * (2.0 * q + 1.0);
     dw = -5.0 * a / h * q * t3;
   }
-  static double W(double r, double h) { double w, dw; eval(r, h, w, dw); return w; }
-  static double dWdr(double r, double h) { double w, dw; eval(r, h, w, dw); return dw; }
 };
 
 }  // namespace sphmol
