@@ -55,14 +55,15 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     rhs_before = restart->rhs_evals;
     wall_before = restart->wall_seconds;
   }
-  // Everything that can reject the input has run: only now does the output directory appear.
-  if (out.enabled) std::filesystem::create_directories(out.directory);
   integrator->initialize(*sys, t, y.data());
   if (restart) {
     integrator->restore_state(restart->integrator_state);
     for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
       observers[k]->restore_state(restart->observers[k], out);
   }
+  // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
+  // now does the output directory appear.
+  if (out.enabled) std::filesystem::create_directories(out.directory);
   const double t_first = t;
   bool needs_fields = false;
   for (const auto& o : observers) needs_fields = needs_fields || o->needs_fields();
