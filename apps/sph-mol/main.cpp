@@ -35,6 +35,8 @@ int run(const std::string& config_path, const std::string& output, const std::ve
     opt.restart_from = restart;
     opt.handle_signals = true;
     const auto s = sphmol::run_case(config, opt);
+    if (s.contains("warnings"))
+      for (const auto& w : s["warnings"]) std::cerr << "sph-mol: warning: " << w.get<std::string>() << '\n';
     if (const int code = sphmol::interrupted_exit_code(s)) {
       std::cerr << "sph-mol: interrupted at t = " << s["t_reached"].get<double>() << " s; summary and checkpoint in "
                 << (output.empty() ? config.output.directory : output) << "\n";

@@ -170,10 +170,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (!signal && config.output.plots && out.enabled) {
     const PlotResult plots = make_plots(c.plots(out), out);
     j["plots"] = plots.written;
-    for (const auto& w : plots.warnings) {
-      j["warnings"].push_back(w);
-      if (opt.log) *opt.log << "sph-mol: warning: " << w << '\n';
-    }
+    for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   }
   return j;
 }
