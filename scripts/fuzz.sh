@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
-cmake --preset fuzz >/dev/null
+cmake --preset fuzz >/tmp/sphmol-fuzz-configure.log 2>&1 || { cat /tmp/sphmol-fuzz-configure.log; exit 1; }
 cmake --build --preset fuzz --target sphmol-config-fuzz -j "$(nproc)"
 seeds=build/fuzz/seeds corpus=build/fuzz/corpus artifacts=build/fuzz/artifacts
 mkdir -p "$seeds" "$corpus" "$artifacts"
