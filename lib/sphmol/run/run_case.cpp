@@ -108,7 +108,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       t = integrator->step_toward(stop);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
     }
-    if (signal) break;
+    // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
+    // so the interrupt checkpoint never misses a measurement at its own time.
     if (t >= times[next_out]) {
       nlohmann::json m = c.measure(*sys, y.data(), t, out);
       if (needs_fields) {
@@ -125,6 +126,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       checkpoint();
       next_cp = static_cast<double>(++k_cp) * every;
     }
+    if (signal) break;
   }
   progress.clear();
   if (signal) {
