@@ -4,16 +4,23 @@
 
 #include <omp.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <iostream>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/version.hpp"
+#include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "subcommand.hpp"
 
 namespace {
 
-int run(const std::string& config_path, const std::string& output, const std::vector<std::string>& overrides) {
+// Exit codes: 0 done, 1 run failed, 2 bad input (config, command line, checkpoint; nothing is
+// written), 128 + signal when interrupted (130 SIGINT, 143 SIGTERM; checkpoint + summary written).
+int run(const std::string& config_path, const std::string& output, const std::vector<std::string>& overrides,
+        const std::string& restart = {}, bool quiet = false) {
   sphmol::Config config;
   try {
     config = sphmol::load_config(config_path, overrides);
@@ -25,8 +32,18 @@ int run(const std::string& config_path, const std::string& output, const std::ve
   try {
     sphmol::RunOptions opt;
     opt.output_dir = output;
-    opt.log = &std::cerr;
+    opt.log = quiet ? nullptr : &std::cerr;
+    if (!quiet && ::isatty(STDERR_FILENO)) opt.progress = &std::cerr;
+    opt.restart_from = restart;
+    opt.handle_signals = true;
     const auto s = sphmol::run_case(config, opt);
+    if (s.contains("warnings"))
+      for (const auto& w : s["warnings"]) std::cerr << "sph-mol: warning: " << w.get<std::string>() << '\n';
+    if (const int code = sphmol::interrupted_exit_code(s)) {
+      std::cerr << "sph-mol: interrupted at t = " << s["t_reached"].get<double>() << " s; summary and checkpoint in "
+                << (output.empty() ? config.output.directory : output) << "\n";
+      return code;
+    }
     const std::string dir = output.empty() ? config.output.directory : output;
     std::cout << "case " << s["case"].get<std::string>() << ": " << s["particles"]["fluid"] << " fluid + "
               << s["particles"]["wall"] << " wall particles, integrator " << s["integrator"]["name"].get<std::string>()
@@ -34,6 +51,9 @@ int run(const std::string& config_path, const std::string& output, const std::ve
               << s["rhs_evals"] << ", neighbour rebuilds " << s["neighbor_rebuilds"] << ", wall time "
               << s["wall_seconds"].get<double>() << " s\n  final errors " << s["final_errors"].dump()
               << "\n  results in " << dir << "/summary.json\n";
+  } catch (const sphmol::CheckpointError& e) {
+    std::cerr << "sph-mol: restart error: " << e.what() << '\n';
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "sph-mol: run failed: " << e.what() << '\n';
     return 1;
@@ -50,6 +70,11 @@ int main(int argc, char** argv) {
   std::string config_path, output;
   std::vector<std::string> overrides;
   int threads = 1;
+  std::string restart;
+  bool quiet = false;
+  app.add_option("--restart", restart,
+                 "continue from a checkpoint directory DIR/checkpoint-<t> (its config.yaml; --set still applies)");
+  app.add_flag("--quiet,-q", quiet, "no progress line and no per-output log lines on stderr");
   app.add_option("--config", config_path, "case configuration (YAML), see config/README.md")->check(CLI::ExistingFile);
   app.add_option("--output", output, "output directory (overrides output.directory)");
   app.add_option("--threads", threads, "OpenMP threads for the RHS and vector operations (0 = all cores)")
@@ -62,14 +87,29 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);  // prints the message (or --help / --version)
+    return code == 0 ? 0 : 2;      // a bad command line is bad input, like a bad config
   }
   if (threads > 0) omp_set_num_threads(threads);
   for (auto& s : sphmol::app::subcommands())
     if (app.got_subcommand(s.name)) return s.run();
+  if (!restart.empty()) {
+    if (!config_path.empty()) {
+      std::cerr << "sph-mol: --restart takes the config from the checkpoint; do not give --config too "
+                   "(change values with --set)\n";
+      return 2;
+    }
+    const std::string cfg = (std::filesystem::path(restart) / "config.yaml").string();
+    if (!std::filesystem::is_regular_file(cfg)) {
+      std::cerr << "sph-mol: restart error: " << cfg << " not found (--restart expects a DIR/checkpoint-<t> "
+                << "directory written by output.checkpoint_every or an interrupted run)\n";
+      return 2;
+    }
+    return run(cfg, output, overrides, restart, quiet);
+  }
   if (config_path.empty()) {
     std::cerr << app.help() << "\nsph-mol: --config FILE is required to run a case\n";
     return 2;
   }
-  return run(config_path, output, overrides);
+  return run(config_path, output, overrides, {}, quiet);
 }

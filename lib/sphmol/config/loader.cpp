@@ -259,7 +259,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
 
   // output
-  MapReader out = top.section("output", {"directory", "times", "profiles"});
+  MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "plots",
+                                         "checkpoint_every"});
   {
     auto& o = c.output;
     if (const auto v = out.string("directory")) {
@@ -289,6 +290,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (o.times.empty() || o.times.back() < c.time.t_end) o.times.push_back(c.time.t_end);
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
+    if (const auto v = out.boolean("vtk")) o.vtk = *v;
+    if (const auto v = out.boolean("vtk_walls")) o.vtk_walls = *v;
+    if (const auto v = out.boolean("plots")) o.plots = *v;
+    if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
+    check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
   return c;
 }

@@ -90,7 +90,11 @@ std::string to_yaml(const Config& c) {
   y << "output:\n"
     << "  directory: " << quoted(o.directory) << "\n"
     << "  times: " << list(o.times) << "\n"
-    << "  profiles: " << (o.profiles ? "true" : "false") << "\n";
+    << "  profiles: " << (o.profiles ? "true" : "false") << "\n"
+    << "  vtk: " << (o.vtk ? "true" : "false") << "\n"
+    << "  vtk_walls: " << (o.vtk_walls ? "true" : "false") << "\n"
+    << "  plots: " << (o.plots ? "true" : "false") << "\n"
+    << "  checkpoint_every: " << num(o.checkpoint_every) << "\n";
   return y.str();
 }
 

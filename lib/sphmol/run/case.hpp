@@ -19,6 +19,13 @@ struct OutputSink {
   std::string path(const std::string& file) const { return directory + "/" + file; }
 };
 
+// One plot: `png` is the file name in the output directory; `script` is gnuplot input that reads
+// the run's files (paths relative to the output directory) and writes `png`.
+struct PlotScript {
+  std::string png;
+  std::string script;
+};
+
 template <int D>
 class Case {
  public:
@@ -39,6 +46,9 @@ class Case {
   }
   // Anything else the case adds to the summary (reference parameters, wave positions, ...).
   virtual void annotate(nlohmann::json& summary) const {}
+  // Plots made after the run (run/plots.hpp): gnuplot scripts, each writing one PNG in the output
+  // directory. Empty by default; a case adds its own (ChannelCase: profiles vs the exact solution).
+  virtual std::vector<PlotScript> plots(const OutputSink& out) const { return {}; }
 };
 
 // Called at every output time after the case's measurement (VTK writers, checkpoints, ...).
@@ -48,6 +58,12 @@ class OutputObserver {
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // True if at_output reads the system's per-particle fields (density, pressure): the run loop then
+  // evaluates the RHS at (t, y) first, so the fields belong to the state being written.
+  virtual bool needs_fields() const { return false; }
+  // Carried through checkpoints, so a restarted run continues the observer (e.g. the .pvd list).
+  virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
+  virtual void restore_state(const nlohmann::json& state, const OutputSink& out) {}
 };
 
 }  // namespace sphmol

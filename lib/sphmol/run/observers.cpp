@@ -1,10 +1,13 @@
 #include "sphmol/run/observers.hpp"
 
+#include "sphmol/run/vtk_observer.hpp"
+
 namespace sphmol {
 
 template <int D>
-std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config&) {
+std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config) {
   std::vector<std::unique_ptr<OutputObserver<D>>> list;
+  if (config.output.vtk) list.push_back(std::make_unique<VtkObserver<D>>(config.output.vtk_walls));
   return list;
 }
 

@@ -5,12 +5,18 @@
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/case_registry.hpp"
+#include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/observers.hpp"
+#include "sphmol/run/plots.hpp"
+#include "sphmol/run/progress.hpp"
+#include "sphmol/run/signals.hpp"
 #include "sphmol/time/integrator.hpp"
 
 namespace sphmol {
@@ -30,18 +36,108 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   std::vector<double> y = sys->initial_state();
   auto integrator = make_integrator(config.time);
   auto observers = make_observers<D>(config);
-  integrator->initialize(*sys, 0.0, y.data());
 
+  // Restart: the checkpoint's state, time, integrator state and measurements so far.
+  double t = 0.0;
   nlohmann::json errors = nlohmann::json::array();
-  for (double t_out : config.output.times) {
-    integrator->advance(t_out);
-    nlohmann::json m = c.measure(*sys, y.data(), t_out, out);
-    for (auto& o : observers) o->at_output(*sys, y.data(), t_out, out);
-    if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
-    errors.push_back(std::move(m));
+  long rhs_before = 0;
+  double wall_before = 0.0;
+  std::optional<Checkpoint> restart;
+  if (!opt.restart_from.empty()) {
+    restart = read_checkpoint(opt.restart_from);
+    if (restart->case_name != config.case_name || restart->dimension != D || restart->y.size() != y.size() ||
+        restart->integrator != integrator->name())
+      throw CheckpointError(opt.restart_from + ": checkpoint (case " + restart->case_name + ", " +
+                            std::to_string(restart->y.size()) + " state values, integrator " + restart->integrator +
+                            ") does not match the config (case " + config.case_name + ", " +
+                            std::to_string(y.size()) + " state values, integrator " + integrator->name() + ")");
+    y = restart->y;
+    t = restart->t;
+    errors = restart->errors;
+    rhs_before = restart->rhs_evals;
+    wall_before = restart->wall_seconds;
   }
-  for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  integrator->initialize(*sys, t, y.data());
+  if (restart) {
+    integrator->restore_state(restart->integrator_state);
+    for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
+      observers[k]->restore_state(restart->observers[k], out);
+  }
+  // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
+  // now does the output directory appear.
+  if (out.enabled) std::filesystem::create_directories(out.directory);
+  const double t_first = t;
+  bool needs_fields = false;
+  for (const auto& o : observers) needs_fields = needs_fields || o->needs_fields();
+  std::vector<double> scratch;
+
+  const auto wall_now = [&] {
+    return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const auto checkpoint = [&] {
+    if (!out.enabled) return;
+    Checkpoint cp;
+    cp.case_name = config.case_name;
+    cp.dimension = D;
+    cp.t = t;
+    cp.y = y;
+    cp.integrator = integrator->name();
+    cp.integrator_state = integrator->save_state();
+    cp.errors = errors;
+    for (const auto& o : observers) cp.observers.push_back(o->save_state());
+    cp.rhs_evals = rhs_before + sys->rhs_evaluations();
+    cp.wall_seconds = wall_now();
+    write_checkpoint(out.directory, cp, to_yaml(config));
+  };
+
+  // Stop at every output time and every multiple of checkpoint_every; step by step in between.
+  const auto& times = config.output.times;
+  std::size_t next_out = 0;
+  while (next_out < times.size() && times[next_out] <= t) ++next_out;
+  const double every = config.output.checkpoint_every;
+  const double inf = std::numeric_limits<double>::infinity();
+  long k_cp = every > 0 ? static_cast<long>(t / every) : 0;
+  while (every > 0 && static_cast<double>(k_cp) * every <= t) ++k_cp;
+  double next_cp = every > 0 ? static_cast<double>(k_cp) * every : inf;
+
+  std::optional<SignalGuard> guard;
+  if (opt.handle_signals) guard.emplace();
+  ProgressLine progress(opt.progress, t_first, config.time.t_end);
+  int signal = 0;
+  while (next_out < times.size()) {
+    const double stop = std::min(times[next_out], next_cp);
+    while (t < stop && !(signal = pending_signal())) {
+      t = integrator->step_toward(stop);
+      progress.update(t, integrator->stats().last_step, integrator->stats().steps);
+    }
+    // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
+    // so the interrupt checkpoint never misses a measurement at its own time.
+    if (t >= times[next_out]) {
+      nlohmann::json m = c.measure(*sys, y.data(), t, out);
+      if (needs_fields) {
+        scratch.resize(sys->size());
+        sys->rhs(t, y.data(), scratch.data());  // density and pressure of this very state
+      }
+      for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+      progress.clear();
+      if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
+      errors.push_back(std::move(m));
+      ++next_out;
+    }
+    if (t >= next_cp) {
+      checkpoint();
+      next_cp = static_cast<double>(++k_cp) * every;
+    }
+    if (signal) break;
+  }
+  progress.clear();
+  if (signal) {
+    checkpoint();
+    if (opt.log) *opt.log << "interrupted by signal " << signal << " at t = " << t << " s; checkpoint written\n";
+  } else {
+    for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
+  }
+  const double wall = wall_now();
   const IntegratorStats st = integrator->stats();
   const auto& P = sys->particles();
 
@@ -53,7 +149,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
   j["rejected_steps"] = st.rejected_steps;
-  j["rhs_evals"] = sys->rhs_evaluations();
+  j["rhs_evals"] = rhs_before + sys->rhs_evaluations();
   j["neighbor_rebuilds"] = sys->pair_list().rebuilds();
   j["wall_seconds"] = wall;
   j["threads"] = omp_get_max_threads();
@@ -69,6 +165,17 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"verlet_pairs", sys->pair_list().pairs().pairs()}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
+  j["status"] = signal ? "interrupted" : "completed";
+  if (signal) {
+    j["signal"] = signal;
+    j["t_reached"] = t;
+  }
+  if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
+  if (!signal && config.output.plots && out.enabled) {
+    const PlotResult plots = make_plots(c.plots(out), out);
+    j["plots"] = plots.written;
+    for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
+  }
   return j;
 }
 
@@ -88,7 +195,6 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const auto it = registry.find(config.case_name);
   if (it == registry.end()) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
   OutputSink out{options.output_dir.empty() ? config.output.directory : options.output_dir, options.write_files};
-  if (out.enabled) std::filesystem::create_directories(out.directory);
   const CaseFactory& f = it->second;
   nlohmann::json summary;
   switch (config.dimension) {
@@ -103,6 +209,10 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     write_file_atomically(out.path("summary.json"), summary.dump(2) + "\n");
   }
   return summary;
+}
+
+int interrupted_exit_code(const nlohmann::json& summary) {
+  return summary.value("status", "") == "interrupted" ? 128 + summary.value("signal", 0) : 0;
 }
 
 }  // namespace sphmol

@@ -14,7 +14,13 @@ struct RunOptions {
   std::string output_dir;    // empty: config.output.directory
   bool write_files = true;
   std::ostream* log = nullptr;  // one line per output time; null = silent
+  std::ostream* progress = nullptr;  // live progress line (a terminal's stderr); null = none
+  std::string restart_from;     // a checkpoint-<t> directory to continue from (run/checkpoint.hpp)
+  bool handle_signals = false;  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted"
 };
+
+// 128 + the signal that interrupted the run (summary "signal"), or 0 if it completed.
+int interrupted_exit_code(const nlohmann::json& summary);
 
 // Returns the summary (also written to DIR/summary.json when write_files).
 nlohmann::json run_case(const Config& config, const RunOptions& options = {});

@@ -1,5 +1,8 @@
 #include "sphmol/scenes/channel_case.hpp"
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -34,6 +37,34 @@ void ChannelCase::annotate(nlohmann::json& summary) const {
   summary["v0"] = ref_.v0;
   summary["discretization"]["spacing"] = spacing_;
   summary["discretization"]["wall_layers"] = wall_layers_;
+}
+
+std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
+  if (!profiles_) return {};
+  std::vector<std::pair<double, std::string>> files;
+  for (const auto& e : std::filesystem::directory_iterator(out.directory)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("profile_t", 0) != 0 || e.path().extension() != ".csv") continue;
+    files.emplace_back(std::strtod(name.c_str() + 9, nullptr), name);
+  }
+  if (files.empty()) return {};
+  std::sort(files.begin(), files.end());
+  std::ostringstream s;
+  s << "# SPH velocity profiles vs " << ref_.name << " (sph-mol " << "ChannelCase)\n"
+    << "set terminal pngcairo size 900,640 font ',11'\n"
+    << "set output 'profiles.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#y'\n"  // skips the comment and the 'y,u_sph,u_exact' header
+    << "set title \"" << ref_.name << ": u(y) at the output times; points SPH, lines exact\" noenhanced\n"
+    << "set xlabel 'u [m/s]'\nset ylabel 'y [m]'\nset key outside right top\nset grid\n"
+    << "plot \\\n";
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const auto& [t, f] = files[i];
+    s << "  '" << f << "' using 2:1 with points pt 7 ps 0.6 lc " << i + 1 << " title 't = " << t << " s', \\\n"
+      << "  '" << f << "' using 3:1 with lines lw 1.5 lc " << i + 1 << " notitle"
+      << (i + 1 < files.size() ? ", \\\n" : "\n");
+  }
+  return {{"profiles.png", s.str()}};
 }
 
 }  // namespace sphmol

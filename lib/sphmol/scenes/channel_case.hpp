@@ -12,6 +12,10 @@ class ChannelCase final : public Case<2> {
   std::string reference() const override { return ref_.name; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
+  // profiles.png: SPH velocity (points) and the exact series (lines) across the channel at every
+  // output time, from the profile CSVs in the output directory (also those of an earlier run that a
+  // restart continued).
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   ChannelReference ref_;

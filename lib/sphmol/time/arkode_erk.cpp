@@ -2,8 +2,10 @@
 
 #include <nvector/nvector_openmp.h>
 #include <omp.h>
+#include "sphmol/io/double_codec.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -89,13 +91,40 @@ void ArkodeErk::advance(double tout) {
   t_ = t;
 }
 
+double ArkodeErk::step_toward(double tout) {
+  if (t_ >= tout) return t_;
+  check(ERKStepSetStopTime(mem_, tout), "SetStopTime");
+  double t = t_;
+  // One internal step; the stop time keeps it from passing tout (same steps as advance()).
+  const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
+  if (flag < 0)
+    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
+                             ERKStepGetReturnFlagName(flag));
+  t_ = (flag == ARK_TSTOP_RETURN) ? tout : t;
+  return t_;
+}
+
+nlohmann::json ArkodeErk::save_state() const {
+  double h = 0.0;
+  ERKStepGetCurrentStep(mem_, &h);
+  const IntegratorStats s = stats();
+  return {{"step", encode_doubles({h})}, {"steps", s.steps}, {"rejected_steps", s.rejected_steps}};
+}
+
+void ArkodeErk::restore_state(const nlohmann::json& s) {
+  const double h = decode_doubles(s.at("step").get<std::string>()).at(0);
+  if (!opt_.fixed_step && h > 0.0 && std::isfinite(h)) check(ERKStepSetInitStep(mem_, h), "SetInitStep");
+  steps_before_ = s.at("steps").get<long>();
+  rejected_before_ = s.at("rejected_steps").get<long>();
+}
+
 IntegratorStats ArkodeErk::stats() const {
   IntegratorStats s;
   long v = 0;
   ERKStepGetNumSteps(mem_, &v);
-  s.steps = v;
+  s.steps = v + steps_before_;
   ERKStepGetNumErrTestFails(mem_, &v);
-  s.rejected_steps = v;
+  s.rejected_steps = v + rejected_before_;
   ERKStepGetLastStep(mem_, &s.last_step);
   return s;
 }

@@ -30,6 +30,12 @@ class ArkodeErk final : public Integrator {
   void initialize(OdeSystem& sys, double t0, double* y) override;
   void advance(double tout) override;
   IntegratorStats stats() const override;
+  double step_toward(double tout) override;
+  // Saves the current step size; a restart begins with it as the initial step. The Runge-Kutta
+  // history and error-controller memory are not saved, so a restart agrees within the tolerance,
+  // not bit for bit.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);
@@ -41,6 +47,7 @@ class ArkodeErk final : public Integrator {
   N_Vector y_ = nullptr;
   void* mem_ = nullptr;
   double t_ = 0.0;
+  long steps_before_ = 0, rejected_before_ = 0;  // counted before a restart
 };
 
 }  // namespace sphmol

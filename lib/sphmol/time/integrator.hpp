@@ -26,6 +26,19 @@ class Integrator {
   // Advance y to exactly tout (> current time).
   virtual void advance(double tout) = 0;
   virtual IntegratorStats stats() const = 0;
+
+  // One step toward tout, never past it (the last one lands on it); returns the new time.
+  // advance(tout) takes the same steps; the run loop steps one at a time so it can show progress
+  // and react to a signal between steps. The default (one advance) suits integrators without it.
+  virtual double step_toward(double tout) {
+    advance(tout);
+    return tout;
+  }
+  // Checkpoint/restart: what the integrator needs beyond (t, y) to continue. restore_state() is
+  // called right after initialize(sys, t, y) with the checkpoint's t and y. The default (nothing
+  // saved) restarts the integrator fresh from (t, y): correct, but not step-for-step identical.
+  virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
+  virtual void restore_state(const nlohmann::json& state) {}
 };
 
 std::unique_ptr<Integrator> make_integrator(const TimeConfig& time);

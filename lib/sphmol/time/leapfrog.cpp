@@ -1,5 +1,7 @@
 #include "sphmol/time/leapfrog.hpp"
 
+#include "sphmol/io/double_codec.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -22,6 +24,7 @@ void Leapfrog::initialize(OdeSystem& sys, double t0, double* y) {
   ymid_.assign(n, 0.0);
   fmid_.assign(n, 0.0);
   sys.rhs(t0, y, f_.data());  // a_0 and c_0 start the predictor
+  cfl_step_ = sys.stable_step();
   const std::size_t vb = sys.velocities_begin(), nv = sys.velocities_end() - vb;
   c_.resize(nv);
   for (std::size_t k = 0; k < nv; ++k) c_[k] = f_[k] - y[vb + k];
@@ -37,6 +40,7 @@ void Leapfrog::step(double dt) {
   for (std::size_t k = vb; k < ve; ++k) ymid_[k] = y[k] + 0.5 * dt * f_[k];
   for (std::size_t k = ve; k < n; ++k) ymid_[k] = y[k] + 0.5 * dt * f_[k];
   sys_->rhs(t_ + 0.5 * dt, ymid_.data(), fmid_.data());
+  cfl_step_ = sys_->stable_step();
   // Kick, second half drift with v_{n+1}, midpoint for the rest.
   for (std::size_t k = vb; k < ve; ++k) y[k] += dt * fmid_[k];
   for (std::size_t k = 0; k < nv; ++k) {
@@ -50,19 +54,42 @@ void Leapfrog::step(double dt) {
   stats_.last_step = dt;
 }
 
+double Leapfrog::step_toward(double tout) {
+  if (t_ >= tout) return t_;
+  double dt = opt_.fixed_step ? *opt_.fixed_step : cfl_step_;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw std::runtime_error("leapfrog: step size collapsed to " + std::to_string(dt) + " at t = " + std::to_string(t_));
+  // Land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
+  const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
+  if (last) dt = tout - t_;
+  if (stats_.steps >= opt_.max_steps)
+    throw std::runtime_error("leapfrog: time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " + std::to_string(t_));
+  step(dt);
+  if (last) t_ = tout;
+  return t_;
+}
+
 void Leapfrog::advance(double tout) {
-  while (t_ < tout) {
-    double dt = opt_.fixed_step ? *opt_.fixed_step : sys_->stable_step();
-    if (!(dt > 0.0) || !std::isfinite(dt))
-      throw std::runtime_error("leapfrog: step size collapsed to " + std::to_string(dt) + " at t = " + std::to_string(t_));
-    // Land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
-    const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
-    if (last) dt = tout - t_;
-    if (stats_.steps >= opt_.max_steps)
-      throw std::runtime_error("leapfrog: time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " + std::to_string(t_));
-    step(dt);
-    if (last) t_ = tout;
-  }
+  while (t_ < tout) step_toward(tout);
+}
+
+nlohmann::json Leapfrog::save_state() const {
+  // Hex of the raw doubles: exact, and NaN/inf survive (JSON numbers would not).
+  return {{"f", encode_doubles(f_)}, {"c", encode_doubles(c_)}, {"cfl_step", encode_doubles({cfl_step_})},
+          {"steps", stats_.steps}, {"last_step", encode_doubles({stats_.last_step})}};
+}
+
+void Leapfrog::restore_state(const nlohmann::json& s) {
+  const auto f = decode_doubles(s.at("f").get<std::string>());
+  const auto c = decode_doubles(s.at("c").get<std::string>());
+  const auto h = decode_doubles(s.at("cfl_step").get<std::string>());
+  if (f.size() != f_.size() || c.size() != c_.size() || h.size() != 1)
+    throw std::runtime_error("leapfrog: checkpoint state does not match this system (sizes differ)");
+  f_ = f;
+  c_ = c;
+  cfl_step_ = h[0];
+  stats_.steps = s.at("steps").get<long>();
+  stats_.last_step = decode_doubles(s.at("last_step").get<std::string>()).at(0);
 }
 
 }  // namespace sphmol

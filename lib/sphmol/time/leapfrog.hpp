@@ -25,6 +25,10 @@ class Leapfrog final : public Integrator {
   void initialize(OdeSystem& sys, double t0, double* y) override;
   void advance(double tout) override;
   IntegratorStats stats() const override { return stats_; }
+  double step_toward(double tout) override;
+  // Saves the last RHS, the XSPH correction and the CFL step: a restart is bit-identical.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   void step(double dt);
@@ -36,6 +40,9 @@ class Leapfrog final : public Integrator {
   std::vector<double> f_, ymid_, fmid_;
   std::vector<double> c_;  // XSPH correction dx/dt - v of the latest evaluation, per position component
   IntegratorStats stats_;
+  // CFL step of the latest own evaluation, cached so that other rhs() calls on the system (output
+  // fields, VTK) cannot change the step sequence.
+  double cfl_step_ = 0.0;
 };
 
 }  // namespace sphmol
