@@ -6,6 +6,7 @@
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
+#include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/eos_linear.hpp"
@@ -50,6 +51,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   } else {
     throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
   }
+  if (fluid.eos.background_pressure > 0.0) terms.push_back(std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
   std::array<double, D> g{};
   bool any_force = false;
   for (int d = 0; d < D && d < static_cast<int>(fluid.body_force.size()); ++d) {
