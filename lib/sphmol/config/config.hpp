@@ -19,6 +19,7 @@ struct EosConfig {
   std::string type = "linear";  // "linear": p = c^2 rho (Morris, seed 002 eq 20); "linear_relative": p = c^2 (rho - rho0)
   double sound_speed = 0.0;     // c [m/s], required, > 0
   double background_pressure = 0.0;  // [Pa] added to every particle's pressure after the EOS, >= 0
+  bool clamp_negative = false;       // "tait": p = max(p, 0) (free surfaces with summation density)
   double gamma = 7.0;           // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (seed 003 eq 2.75); > 0
 };
 

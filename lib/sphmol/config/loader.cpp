@@ -128,13 +128,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   check(fluid, "kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
         ">= 0 m^2/s");
   {
-    MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure"});
+    MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
     if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative", "tait"});
     if (const auto g = eos.real("gamma")) {
       if (c.fluid.eos.type != "tait") eos.fail("gamma", "is the Tait exponent; it needs type: tait");
       c.fluid.eos.gamma = *g;
     }
     check(eos, "gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
+    if (const auto v = eos.boolean("clamp_negative")) {
+      if (c.fluid.eos.type != "tait") eos.fail("clamp_negative", "applies to type: tait only");
+      c.fluid.eos.clamp_negative = *v;
+    }
     if (const auto v = eos.real("background_pressure")) c.fluid.eos.background_pressure = *v;
     check(eos, "background_pressure", c.fluid.eos.background_pressure >= 0, c.fluid.eos.background_pressure, ">= 0 Pa");
     c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",

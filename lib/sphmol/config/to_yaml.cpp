@@ -49,7 +49,9 @@ std::string to_yaml(const Config& c) {
     << "  eos:\n"
     << "    type: " << f.eos.type << "\n"
     << "    sound_speed: " << num(f.eos.sound_speed) << "\n";
-  if (f.eos.type == "tait") y << "    gamma: " << num(f.eos.gamma) << "\n";
+  if (f.eos.type == "tait")
+    y << "    gamma: " << num(f.eos.gamma) << "\n"
+      << "    clamp_negative: " << (f.eos.clamp_negative ? "true" : "false") << "\n";
   y << "    background_pressure: " << num(f.eos.background_pressure) << "\n";
   y << "  body_force: " << list(f.body_force) << "\n"
     << "  body_force_ramp: " << num(f.body_force_ramp) << "\n";

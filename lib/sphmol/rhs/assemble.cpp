@@ -41,7 +41,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   std::function<double(double)> rho_of_p;
   if (fluid.eos.type == "tait") {
     const TaitLaw law(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma);
-    terms.push_back(std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma));
+    terms.push_back(std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma,
+                                                 fluid.eos.clamp_negative));
     rho_of_p = [law](double p) { return law.density(p); };
   } else if (fluid.eos.type == "linear" || fluid.eos.type == "linear_relative") {
     const bool rel = fluid.eos.type == "linear_relative";
