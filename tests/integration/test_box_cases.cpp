@@ -45,6 +45,6 @@ TEST_CASE("cavity: centre lines approach Ghia et al. (20 x 20, t = 3 s)", "[inte
   REQUIRE(s["compared"].get<bool>());
   const auto& f = s["final_errors"];
   INFO(f.dump());
-  CHECK(f["u_rms"].get<double>() < 0.1);
-  CHECK(f["v_rms"].get<double>() < 0.1);
+  CHECK(f["u_rms"].get<double>() < 0.08);
+  CHECK(f["v_rms"].get<double>() < 0.08);
 }

@@ -19,7 +19,7 @@ TEST_CASE("config errors: the base fixture itself is valid", "[config]") {
 TEST_CASE("config errors: unknown keys, with did-you-mean", "[config]") {
   CHECK(error_of(with("  density: 1000", "  densty: 1000")) ==
         "case.yaml:4: fluid.densty: unknown key (did you mean 'density'? allowed in fluid: density, "
-        "kinematic_viscosity, eos, body_force)");
+        "kinematic_viscosity, eos, body_force, body_force_ramp)");
   CHECK_THAT(error_of(with("output:", "ouptut:")),
              StartsWith("case.yaml:16: ouptut: unknown key (did you mean 'output'?"));
   CHECK_THAT(error_of(with("  t_end: 0.5", "  t_end: 0.5\n  cfl:\n    acustic: 0.2")),
