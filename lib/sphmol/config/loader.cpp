@@ -196,8 +196,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       fluid.fail_missing("body_force", what);
     }
   } else if ((c.case_name == "couette" || c.case_name == "cavity") && c.geometry.wall_velocity == 0) {
-    const std::string what = "case '" + c.case_name + "' needs a nonzero " +
-                             (c.case_name == "cavity" ? "lid" : "top-plate") + " speed in m/s";
+    const std::string what = c.case_name == "cavity" ? "case 'cavity' needs a nonzero lid speed in m/s"
+                                                     : "case 'couette' needs a nonzero top-plate speed v0 in m/s";
     if (geo.has("wall_velocity")) geo.fail("wall_velocity", what);
     geo.fail_missing("wall_velocity", what);
   }
