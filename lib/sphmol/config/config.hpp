@@ -18,6 +18,9 @@ struct ConfigError : std::runtime_error {
 struct EosConfig {
   std::string type = "linear";  // "linear": p = c^2 rho (Morris, seed 002 eq 20); "linear_relative": p = c^2 (rho - rho0)
   double sound_speed = 0.0;     // c [m/s], required, > 0
+  double background_pressure = 0.0;  // [Pa] added to every particle's pressure after the EOS, >= 0
+  bool clamp_negative = false;       // "tait": p = max(p, 0) (free surfaces with summation density)
+  double gamma = 7.0;           // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (seed 003 eq 2.75); > 0
 };
 
 struct FluidConfig {
@@ -25,12 +28,23 @@ struct FluidConfig {
   double kinematic_viscosity = 0.0;  // nu [m^2/s], required, >= 0
   EosConfig eos;
   std::vector<double> body_force;    // [m/s^2], length = dimension; default (and if absent) all zero
+  double body_force_ramp = 0.0;      // [s] body force ramped in smoothly over this time; 0 = at once
 };
 
 struct GeometryConfig {
   double channel_height = 0.0;  // l [m], required for couette/poiseuille, > 0
   double channel_length = 0.0;  // periodic length in x [m], required, > 0
-  double wall_velocity = 0.0;   // Couette top-plate speed v0 [m/s]; must be 0 for poiseuille
+  double wall_velocity = 0.0;   // Couette top-plate speed v0 [m/s]; must be 0 for poiseuille; cavity lid speed
+  // taylor_green / cavity: the box [Lx, Ly]; hydrostatic: the fluid column [width, depth]. Required there.
+  std::vector<double> box;
+  double velocity_amplitude = 1.0;  // taylor_green: U [m/s], > 0
+};
+
+struct RepulsiveConfig {  // seed 003 eq 2.76, for boundary: virtual_repulsive
+  double strength = 0.0;  // D [m^2/s^2], required there, > 0
+  double p1 = 12.0;       // > p2
+  double p2 = 4.0;        // > 0
+  double r0 = 1.0;        // cut-off radius in particle spacings, > 0 and inside the kernel support
 };
 
 struct DiscretizationConfig {
@@ -42,7 +56,12 @@ struct DiscretizationConfig {
   std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122)
   double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
-  std::string boundary = "wall_particles";        // wall_particles
+  std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive
+  std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
+  // wall_particles: "rest" (walls keep rest density and its EOS pressure) or "extrapolated" (Adami 2012
+  // pressure from the fluid, with the body force; boundary/wall_pressure_extrapolated.hpp)
+  std::string wall_pressure = "rest";
+  RepulsiveConfig repulsive;
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
   // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).
   std::string wall_model = "morris";
@@ -82,7 +101,7 @@ struct OutputConfig {
 
 struct Config {
   std::string source;  // file path the config came from ("<string>" for in-memory)
-  std::string case_name;   // couette | poiseuille
+  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity
   int dimension = 2;       // 1, 2 or 3 (channel cases need 2)
   FluidConfig fluid;
   GeometryConfig geometry;

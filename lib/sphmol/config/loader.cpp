@@ -107,8 +107,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   MapReader top(origin, root, "", root_mark,
                 {"case", "dimension", "fluid", "geometry", "discretization", "time", "output"});
 
-  c.case_name = top.choice("case", top.required(top.string("case"), "case", "one of: couette, poiseuille"),
-                           {"couette", "poiseuille"});
+  c.case_name = top.choice("case", top.required(top.string("case"), "case",
+                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity"),
+                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity"});
+  const bool channel_case = c.case_name == "couette" || c.case_name == "poiseuille";
   if (const auto d = top.integer("dimension")) {
     check(top, "dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
     c.dimension = static_cast<int>(*d);
@@ -118,7 +120,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                               std::to_string(c.dimension) + ")");
 
   // fluid
-  MapReader fluid = top.section("fluid", {"density", "kinematic_viscosity", "eos", "body_force"});
+  MapReader fluid = top.section("fluid", {"density", "kinematic_viscosity", "eos", "body_force", "body_force_ramp"});
   c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
   check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
   c.fluid.kinematic_viscosity = fluid.required(fluid.real("kinematic_viscosity"), "kinematic_viscosity",
@@ -126,8 +128,19 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   check(fluid, "kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
         ">= 0 m^2/s");
   {
-    MapReader eos = fluid.section("eos", {"type", "sound_speed"});
-    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative"});
+    MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
+    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative", "tait"});
+    if (const auto g = eos.real("gamma")) {
+      if (c.fluid.eos.type != "tait") eos.fail("gamma", "is the Tait exponent; it needs type: tait");
+      c.fluid.eos.gamma = *g;
+    }
+    check(eos, "gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
+    if (const auto v = eos.boolean("clamp_negative")) {
+      if (c.fluid.eos.type != "tait") eos.fail("clamp_negative", "applies to type: tait only");
+      c.fluid.eos.clamp_negative = *v;
+    }
+    if (const auto v = eos.real("background_pressure")) c.fluid.eos.background_pressure = *v;
+    check(eos, "background_pressure", c.fluid.eos.background_pressure >= 0, c.fluid.eos.background_pressure, ">= 0 Pa");
     c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
                                            "artificial speed of sound c in m/s, > 0");
     check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
@@ -140,16 +153,36 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   } else {
     c.fluid.body_force.assign(static_cast<std::size_t>(c.dimension), 0.0);
   }
+  if (const auto v = fluid.real("body_force_ramp")) c.fluid.body_force_ramp = *v;
+  check(fluid, "body_force_ramp", c.fluid.body_force_ramp >= 0, c.fluid.body_force_ramp, ">= 0 s; 0 = at once");
 
   // geometry
-  MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity"});
-  c.geometry.channel_height = geo.required(geo.real("channel_height"), "channel_height",
-                                           "distance between the walls in m, > 0");
-  check(geo, "channel_height", c.geometry.channel_height > 0, c.geometry.channel_height, "> 0 m");
-  c.geometry.channel_length = geo.required(geo.real("channel_length"), "channel_length",
-                                           "periodic length in x in m, > 0");
-  check(geo, "channel_length", c.geometry.channel_length > 0, c.geometry.channel_length, "> 0 m");
+  MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity", "box",
+                                           "velocity_amplitude"});
+  if (channel_case) {
+    c.geometry.channel_height = geo.required(geo.real("channel_height"), "channel_height",
+                                             "distance between the walls in m, > 0");
+    check(geo, "channel_height", c.geometry.channel_height > 0, c.geometry.channel_height, "> 0 m");
+    c.geometry.channel_length = geo.required(geo.real("channel_length"), "channel_length",
+                                             "periodic length in x in m, > 0");
+    check(geo, "channel_length", c.geometry.channel_length > 0, c.geometry.channel_length, "> 0 m");
+    if (geo.has("box")) geo.fail("box", "is for the box cases (taylor_green, hydrostatic, cavity), not '" + c.case_name + "'");
+  } else {
+    for (const char* k : {"channel_height", "channel_length"})
+      if (geo.has(k)) geo.fail(k, "is for the channel cases (couette, poiseuille); case '" + c.case_name + "' uses geometry.box");
+    const auto b = geo.required(geo.reals("box"), "box", "[Lx, Ly] in m (hydrostatic: [width, depth] of the water column)");
+    if (static_cast<int>(b.size()) != c.dimension)
+      geo.fail("box", "has " + std::to_string(b.size()) + " components, expected " + std::to_string(c.dimension));
+    for (std::size_t i = 0; i < b.size(); ++i)
+      if (b[i] <= 0) geo.fail_element("box", i, shown(b[i]) + " is out of range (allowed: > 0 m)");
+    c.geometry.box = b;
+  }
   if (const auto v = geo.real("wall_velocity")) c.geometry.wall_velocity = *v;
+  if (const auto v = geo.real("velocity_amplitude")) {
+    if (c.case_name != "taylor_green") geo.fail("velocity_amplitude", "is the Taylor-Green amplitude U; only for case 'taylor_green'");
+    c.geometry.velocity_amplitude = *v;
+  }
+  check(geo, "velocity_amplitude", c.geometry.velocity_amplitude > 0, c.geometry.velocity_amplitude, "> 0 m/s");
 
   // Case consistency: what drives the flow.
   if (c.case_name == "poiseuille") {
@@ -162,8 +195,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       if (fluid.has("body_force")) fluid.fail("body_force", what);
       fluid.fail_missing("body_force", what);
     }
-  } else if (c.geometry.wall_velocity == 0) {
-    const std::string what = "case 'couette' needs a nonzero top-plate speed v0 in m/s";
+  } else if ((c.case_name == "couette" || c.case_name == "cavity") && c.geometry.wall_velocity == 0) {
+    const std::string what = c.case_name == "cavity" ? "case 'cavity' needs a nonzero lid speed in m/s"
+                                                     : "case 'couette' needs a nonzero top-plate speed v0 in m/s";
     if (geo.has("wall_velocity")) geo.fail("wall_velocity", what);
     geo.fail_missing("wall_velocity", what);
   }
@@ -172,7 +206,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
-                                "neighbor_search", "skin"});
+                                "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -204,8 +238,42 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris"});
     if (const auto v = disc.real("xsph")) d.xsph = *v;
     check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
-    if (const auto v = disc.string("boundary")) d.boundary = disc.choice("boundary", *v, {"wall_particles"});
+    if (const auto v = disc.string("boundary"))
+      d.boundary = disc.choice("boundary", *v, {"wall_particles", "ghost", "virtual_repulsive"});
     if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris"});
+    // Combinations that mean nothing are errors, not silently ignored keys.
+    if (d.boundary != "wall_particles") {
+      if (channel_case || c.case_name == "taylor_green")
+        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity), not '" +
+                                  c.case_name + "'");
+      if (disc.has("wall_model") && d.wall_model == "morris")
+        disc.fail("wall_model", "morris extrapolates through wall particles; boundary '" + d.boundary +
+                                    "' has none (ghost velocities already carry the wall condition)");
+      d.wall_model = "prescribed";
+    }
+    if (const auto v = disc.string("wall_slip")) {
+      if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
+      d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
+    }
+    if (const auto v = disc.string("wall_pressure")) {
+      d.wall_pressure = disc.choice("wall_pressure", *v, {"rest", "extrapolated"});
+      if (d.wall_pressure != "rest" && d.boundary != "wall_particles")
+        disc.fail("wall_pressure", "applies to boundary: wall_particles only");
+    }
+    if (disc.has("repulsive") && d.boundary != "virtual_repulsive")
+      disc.fail("repulsive", "parameters of seed 003 eq 2.76 apply to boundary: virtual_repulsive only");
+    if (d.boundary == "virtual_repulsive") {
+      MapReader rep = disc.section("repulsive", {"strength", "p1", "p2", "r0"});
+      auto& r = d.repulsive;
+      r.strength = rep.required(rep.real("strength"), "strength", "D of seed 003 eq 2.76 in m^2/s^2, > 0");
+      check(rep, "strength", r.strength > 0, r.strength, "> 0 m^2/s^2");
+      if (const auto v = rep.real("p1")) r.p1 = *v;
+      if (const auto v = rep.real("p2")) r.p2 = *v;
+      if (const auto v = rep.real("r0")) r.r0 = *v;
+      check(rep, "p2", r.p2 > 0, r.p2, "> 0");
+      check(rep, "p1", r.p1 > r.p2, r.p1, "> p2 (repulsive inside r0)");
+      check(rep, "r0", r.r0 > 0, r.r0, "> 0 (particle spacings)");
+    }
     if (const auto v = disc.real("wall_beta_max")) d.wall_beta_max = *v;
     check(disc, "wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");
     if (const auto v = disc.integer("wall_layers")) {

@@ -48,12 +48,21 @@ std::string to_yaml(const Config& c) {
     << "  kinematic_viscosity: " << num(f.kinematic_viscosity) << "\n"
     << "  eos:\n"
     << "    type: " << f.eos.type << "\n"
-    << "    sound_speed: " << num(f.eos.sound_speed) << "\n"
-    << "  body_force: " << list(f.body_force) << "\n";
-  y << "geometry:\n"
-    << "  channel_height: " << num(g.channel_height) << "\n"
-    << "  channel_length: " << num(g.channel_length) << "\n"
-    << "  wall_velocity: " << num(g.wall_velocity) << "\n";
+    << "    sound_speed: " << num(f.eos.sound_speed) << "\n";
+  if (f.eos.type == "tait")
+    y << "    gamma: " << num(f.eos.gamma) << "\n"
+      << "    clamp_negative: " << (f.eos.clamp_negative ? "true" : "false") << "\n";
+  y << "    background_pressure: " << num(f.eos.background_pressure) << "\n";
+  y << "  body_force: " << list(f.body_force) << "\n"
+    << "  body_force_ramp: " << num(f.body_force_ramp) << "\n";
+  y << "geometry:\n";
+  if (g.box.empty())
+    y << "  channel_height: " << num(g.channel_height) << "\n"
+      << "  channel_length: " << num(g.channel_length) << "\n";
+  else
+    y << "  box: " << list(g.box) << "\n";
+  y << "  wall_velocity: " << num(g.wall_velocity) << "\n";
+  if (c.case_name == "taylor_green") y << "  velocity_amplitude: " << num(g.velocity_amplitude) << "\n";
   y << "discretization:\n";
   // Exactly one of the two is set; the other stays at its 0 "not given" value.
   if (d.particles_across > 0)
@@ -67,6 +76,15 @@ std::string to_yaml(const Config& c) {
     << "  viscosity: " << d.viscosity << "\n"
     << "  xsph: " << num(d.xsph) << "\n"
     << "  boundary: " << d.boundary << "\n"
+    << "  wall_pressure: " << d.wall_pressure << "\n";
+  if (d.boundary == "ghost") y << "  wall_slip: " << d.wall_slip << "\n";
+  if (d.boundary == "virtual_repulsive")
+    y << "  repulsive:\n"
+      << "    strength: " << num(d.repulsive.strength) << "\n"
+      << "    p1: " << num(d.repulsive.p1) << "\n"
+      << "    p2: " << num(d.repulsive.p2) << "\n"
+      << "    r0: " << num(d.repulsive.r0) << "\n";
+  y
     << "  wall_model: " << d.wall_model << "\n"
     << "  wall_beta_max: " << num(d.wall_beta_max) << "\n"
     << "  wall_layers: " << d.wall_layers << "\n"

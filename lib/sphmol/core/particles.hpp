@@ -24,6 +24,9 @@ struct Particles {
   // below that surface (>= 0). Zero for fluid particles. Used by the Morris wall-velocity model.
   std::array<std::vector<double>, D> wall_normal;
   std::vector<double> wall_depth;
+  // 1 for a wall that stays at x_ref while carrying the velocity v (a belt, such as the lid of a
+  // driven cavity: its surface moves, its particles must not leave the box). 0 otherwise.
+  std::vector<std::uint8_t> stationary;
 
   std::size_t size() const { return mass.size(); }
   std::size_t n_wall() const { return size() - n_fluid; }
@@ -37,6 +40,7 @@ struct Particles {
       wall_normal[d].push_back(normal[d]);
     }
     wall_depth.push_back(depth);
+    stationary.push_back(0);
     mass.push_back(m);
     rho.push_back(density);
     kind.push_back(k);

@@ -32,6 +32,9 @@ class VerletList {
     return false;
   }
 
+  // Forces a rebuild at the next update (the particle set itself changed, e.g. ghost particles).
+  void invalidate() { built_ = false; }
+
   const PairList& pairs() const { return pairs_; }
   long rebuilds() const { return rebuilds_; }
   double list_radius() const { return support_ + skin_; }
@@ -40,6 +43,7 @@ class VerletList {
  private:
   bool moved_too_far(const SearchInput<D>& in) const {
     const double limit2 = 0.25 * skin_ * skin_;
+    if (in.n != x_build_[0].size()) return true;  // particles were added or removed
     for (std::size_t i = 0; i < in.n; ++i) {
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) {

@@ -1,8 +1,13 @@
 #include "sphmol/rhs/assemble.hpp"
 
+#include <functional>
 #include <stdexcept>
 
 #include "sphmol/boundary/morris_wall_velocity.hpp"
+#include "sphmol/boundary/repulsive_force.hpp"
+#include "sphmol/boundary/wall_pressure_extrapolated.hpp"
+#include "sphmol/physics/background_pressure.hpp"
+#include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/eos_linear.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
@@ -16,7 +21,7 @@ namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
-                                              double spacing) {
+                                              double spacing, const BoxWalls<D>* walls) {
   const auto& disc = config.discretization;
   const auto& fluid = config.fluid;
   const double h = disc.smoothing_ratio * spacing;
@@ -26,9 +31,36 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   std::vector<std::unique_ptr<Term<D>>> terms;
   if (disc.density != "summation") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
   terms.push_back(std::make_unique<SummationDensity<D>>());
-  if (fluid.eos.type != "linear" && fluid.eos.type != "linear_relative")
+  std::unique_ptr<GhostGenerator<D>> ghosts;
+  if (disc.boundary == "ghost") {
+    if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
+    // Images of every particle within the kernel support of a wall; the set is rebuilt each evaluation.
+    ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support() * h);
+    terms.push_back(std::make_unique<GhostStateCopy<D>>(ghosts.get()));
+  }
+  std::function<double(double)> rho_of_p;
+  if (fluid.eos.type == "tait") {
+    const TaitLaw law(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma);
+    terms.push_back(std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma,
+                                                 fluid.eos.clamp_negative));
+    rho_of_p = [law](double p) { return law.density(p); };
+  } else if (fluid.eos.type == "linear" || fluid.eos.type == "linear_relative") {
+    const bool rel = fluid.eos.type == "linear_relative";
+    const double c2 = fluid.eos.sound_speed * fluid.eos.sound_speed, rho0 = fluid.density;
+    terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed, fluid.density, rel));
+    rho_of_p = [c2, rho0, rel](double p) { return p / c2 + (rel ? rho0 : 0.0); };
+  } else {
     throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
-  terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.type == "linear_relative"));
+  }
+  if (fluid.eos.background_pressure > 0.0) terms.push_back(std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
+  std::array<double, D> g{};
+  bool any_force = false;
+  for (int d = 0; d < D && d < static_cast<int>(fluid.body_force.size()); ++d) {
+    g[d] = fluid.body_force[d];
+    any_force = any_force || g[d] != 0.0;
+  }
+  if (disc.wall_pressure == "extrapolated")
+    terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
   if (disc.momentum != "symmetric_117") throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
   if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max));
   else if (disc.wall_model != "prescribed")
@@ -43,25 +75,28 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
-  std::array<double, D> g{};
-  bool any_force = false;
-  for (int d = 0; d < D && d < static_cast<int>(fluid.body_force.size()); ++d) {
-    g[d] = fluid.body_force[d];
-    any_force = any_force || g[d] != 0.0;
+  if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
+  if (disc.boundary == "virtual_repulsive") {
+    const RepulsiveLaw law{disc.repulsive.strength, disc.repulsive.p1, disc.repulsive.p2, disc.repulsive.r0 * spacing};
+    if (law.r0 >= kernel->support() * h)
+      throw std::invalid_argument("discretization.repulsive.r0: must lie inside the kernel support (" +
+                                  std::to_string(kernel->support() * h / spacing) + " spacings)");
+    terms.push_back(std::make_unique<RepulsiveBoundary<D>>(law));
   }
-  if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g));
   if (disc.xsph > 0.0) terms.push_back(std::make_unique<Xsph<D>>(disc.xsph));
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);
   CflLimits cfl{config.time.cfl.acoustic, config.time.cfl.force, config.time.cfl.viscous, fluid.eos.sound_speed,
                 fluid.kinematic_viscosity};
-  return std::make_unique<SphSystem<D>>(std::move(particles), domain, h, std::move(kernel), std::move(terms),
-                                        std::move(list), cfl);
+  auto sys = std::make_unique<SphSystem<D>>(std::move(particles), domain, h, std::move(kernel), std::move(terms),
+                                            std::move(list), cfl);
+  if (ghosts) sys->set_generator(std::move(ghosts));
+  return sys;
 }
 
-template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double);
-template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double);
-template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double);
+template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double, const BoxWalls<1>*);
+template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double, const BoxWalls<2>*);
+template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double, const BoxWalls<3>*);
 
 }  // namespace sphmol

@@ -4,6 +4,7 @@
 // position update). Nothing configured off is in the list.
 #include <memory>
 
+#include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 
@@ -11,6 +12,7 @@ namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
-                                              double spacing);
+                                              double spacing, const BoxWalls<D>* walls = nullptr);
+// `walls`: the scene's planar walls, needed by boundary: ghost (mirror images are generated from them).
 
 }  // namespace sphmol

@@ -18,6 +18,7 @@ SphSystem<D>::SphSystem(Particles<D> particles, Domain<D> domain, double h, std:
       cfl_(cfl) {
   layout_.n = particles_.n_fluid;
   ws_.n = particles_.size();
+  n_base_ = ws_.n;
   ws_.n_fluid = particles_.n_fluid;
   ws_.particles = &particles_;
   ws_.domain = &domain_;
@@ -54,7 +55,8 @@ std::vector<std::string> SphSystem<D>::active_terms() const {
 template <int D>
 void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
-  const std::size_t nf = layout_.n, n = ws_.n;
+  ws_.t = t;
+  const std::size_t nf = layout_.n, nb = n_base_;
   for (int d = 0; d < D; ++d) {
     const double* xs = y + layout_.position(d);
     const double* vs = y + layout_.velocity(d);
@@ -63,8 +65,13 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       ws_.x[d][i] = domain_.wrap(d, xs[i]);
       ws_.v[d][i] = vs[i];
     }
-    for (std::size_t i = nf; i < n; ++i) ws_.x[d][i] = domain_.wrap(d, particles_.x_ref[d][i] + particles_.v[d][i] * t);
+    for (std::size_t i = nf; i < nb; ++i)
+      ws_.x[d][i] = domain_.wrap(d, particles_.x_ref[d][i] + (particles_.stationary[i] ? 0.0 : particles_.v[d][i] * t));
   }
+  // Generated (ghost) particles are appended here, from the fluid state just gathered, so that the
+  // neighbour update and every term see them like ordinary wall particles.
+  if (generator_ && generator_->generate(nb, particles_, ws_)) pairs_->invalidate();
+  const std::size_t n = ws_.n;
 
   SearchInput<D> in;
   for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();

@@ -9,6 +9,7 @@
 #include "sphmol/core/state_layout.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/particle_generator.hpp"
 #include "sphmol/rhs/term.hpp"
 #include "sphmol/time/ode_system.hpp"
 
@@ -35,6 +36,12 @@ class SphSystem final : public OdeSystem {
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
   long rhs_evaluations() const override { return rhs_evals_; }
 
+  // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
+  void set_generator(std::unique_ptr<ParticleGenerator<D>> g) { generator_ = std::move(g); }
+  // Appends a term after the scene's terms (a case's monitor, e.g. particle drift at every evaluation).
+  void append_term(std::unique_ptr<Term<D>> t) { terms_.push_back(std::move(t)); }
+  std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
+
   const StateLayout<D>& layout() const { return layout_; }
   const Particles<D>& particles() const { return particles_; }
   const Domain<D>& domain() const { return domain_; }
@@ -57,6 +64,8 @@ class SphSystem final : public OdeSystem {
   std::vector<std::unique_ptr<Term<D>>> terms_;
   std::unique_ptr<VerletList<D>> pairs_;
   CflLimits cfl_;
+  std::unique_ptr<ParticleGenerator<D>> generator_;
+  std::size_t n_base_ = 0;  // the scene's own particles; generated ones follow
   Workspace<D> ws_;
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;

@@ -21,6 +21,7 @@ struct Workspace {
   PairList pairs;  // active pairs (r < support), same row structure as the Verlet list
   double h = 0.0;
   double W0 = 0.0;  // W(0, h): the self-contribution to summation density
+  double t = 0.0;   // time of this evaluation (time-dependent terms: ramped body force)
 
   std::array<std::vector<double>, D> x, v;  // current positions (wrapped) and velocities
   std::vector<double> rho, p;

@@ -1,6 +1,9 @@
 #include "sphmol/run/case_registry.hpp"
 
+#include "sphmol/scenes/cavity_case.hpp"
 #include "sphmol/scenes/channel_case.hpp"
+#include "sphmol/scenes/hydrostatic_case.hpp"
+#include "sphmol/scenes/taylor_green_case.hpp"
 
 namespace sphmol {
 
@@ -8,6 +11,9 @@ const std::map<std::string, CaseFactory>& case_registry() {
   static const std::map<std::string, CaseFactory> registry = {
       {"couette", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
       {"poiseuille", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
+      {"taylor_green", {nullptr, [] { return std::make_unique<TaylorGreenCase>(); }, nullptr, "two-dimensional only"}},
+      {"hydrostatic", {nullptr, [] { return std::make_unique<HydrostaticCase>(); }, nullptr, "two-dimensional only"}},
+      {"cavity", {nullptr, [] { return std::make_unique<CavityCase>(); }, nullptr, "two-dimensional only"}},
   };
   return registry;
 }

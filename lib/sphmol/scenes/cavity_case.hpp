@@ -1,0 +1,32 @@
+#pragma once
+// Lid-driven cavity: unit box, all four walls, the top one moving at geometry.wall_velocity (a belt:
+// its particles stay put). Reference: Ghia, Ghia & Shin (1982) centre lines for Re = U L / nu if the
+// tables have that Re (else the run reports "no reference" and no errors). At output times:
+//   u_rms, u_max = RMS / max over the table points of (u_sph(0.5, y) - u_ghia) / U, and v likewise on
+//   y = 0.5; the table's end points on the walls (prescribed values, not results) are left out.
+// SPH values at a point are Shepard-interpolated: sum_j V_j u_j W / sum_j V_j W over fluid particles.
+// Steadiness: rel_ke_change = |KE(t_k) - KE(t_{k-1})| / KE(t_k) between successive outputs, reported
+// per output; final_errors also says whether the last change is below 1e-3.
+#include <optional>
+#include <vector>
+
+#include "sphmol/reference/ghia_table.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+class CavityCase final : public Case<2> {
+ public:
+  std::unique_ptr<SphSystem<2>> build(const Config& config) override;
+  std::string reference() const override;
+  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  std::optional<GhiaTable> ghia_;
+  double U_ = 1.0, L_ = 1.0, Re_ = 0.0, spacing_ = 0.0, ke_prev_ = -1.0;
+  std::string kernel_;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,29 @@
+#pragma once
+// Water column at rest in a tank (seed 001 §5): fluid [0, width] x [0, depth] starting at uniform
+// density, walls left, right and below (the side walls reach 1.2 x depth), gravity body force ramped
+// in (fluid.body_force_ramp). Reference p = rho0 g (depth - y). At output times t >= settle time
+// (2 x body_force_ramp), over fluid particles:
+//   p_rms, p_max = RMS / max of (p_i - rho0 g (depth - y_i)) / (rho0 g depth);
+// max_drift = largest displacement of any fluid particle from its start, over every RHS evaluation of
+// the whole run (analysis/drift_monitor.hpp), in particle spacings.
+// p_i is the pressure of the RHS evaluation that ended the last step (within one step of t).
+#include <memory>
+
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+class HydrostaticCase final : public Case<2> {
+ public:
+  std::unique_ptr<SphSystem<2>> build(const Config& config) override;
+  std::string reference() const override { return "hydrostatic p = rho0 g (depth - y)"; }
+  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  double rho0_ = 0.0, g_ = 0.0, depth_ = 0.0, spacing_ = 0.0, settle_ = 0.0;
+  std::shared_ptr<double> drift_ = std::make_shared<double>(0.0);
+};
+
+}  // namespace sphmol

@@ -1,0 +1,68 @@
+// Config keys of the box cases, Tait EOS and boundaries: accepted combinations round-trip through
+// to_yaml, nonsense combinations are errors naming the key.
+#include <catch2/catch.hpp>
+
+#include "config_test_base.hpp"
+#include "sphmol/config/config.hpp"
+
+using namespace config_test;
+using Catch::Matchers::Contains;
+
+namespace {
+const std::string cavity = R"(case: cavity
+fluid:
+  density: 1
+  kinematic_viscosity: 0.01
+  eos:
+    sound_speed: 10
+geometry:
+  box: [1, 1]
+  wall_velocity: 1
+discretization:
+  particles_across: 20
+time:
+  t_end: 1
+)";
+std::string set(const std::string& yaml, const std::vector<std::string>& o) { return error_of(yaml, o); }
+}  // namespace
+
+TEST_CASE("config: box cases, Tait and boundary keys load and round-trip", "[config]") {
+  CHECK(error_of(cavity) == "<no error>");
+  const auto c = sphmol::load_config_string(cavity, {"fluid.eos.type=tait", "fluid.eos.gamma=7.5", "fluid.eos.clamp_negative=true",
+                                                     "discretization.boundary=ghost", "discretization.wall_slip=free_slip",
+                                                     "fluid.body_force_ramp=0.5"});
+  CHECK(c.fluid.eos.gamma == 7.5);
+  CHECK(c.fluid.eos.clamp_negative);
+  CHECK(c.discretization.wall_model == "prescribed");
+  CHECK(c.discretization.wall_slip == "free_slip");
+  const auto back = sphmol::load_config_string(sphmol::to_yaml(c));
+  CHECK(sphmol::to_yaml(back) == sphmol::to_yaml(c));
+  const auto r = sphmol::load_config_string(cavity, {"case=hydrostatic", "discretization.boundary=virtual_repulsive",
+                                                     "discretization.repulsive.strength=8.8", "discretization.repulsive.p1=9.5"});
+  CHECK(r.discretization.repulsive.strength == 8.8);
+  CHECK(r.discretization.repulsive.p1 == 9.5);
+  CHECK(r.discretization.repulsive.p2 == 4.0);
+  CHECK(sphmol::to_yaml(sphmol::load_config_string(sphmol::to_yaml(r))) == sphmol::to_yaml(r));
+}
+
+TEST_CASE("config: nonsense boundary / EOS combinations are errors", "[config]") {
+  CHECK_THAT(set(cavity, {"discretization.boundary=ghost", "discretization.wall_model=morris"}),
+             Contains("discretization.wall_model: morris extrapolates"));
+  CHECK_THAT(set(cavity, {"discretization.wall_slip=free_slip"}), Contains("applies to boundary: ghost only"));
+  CHECK_THAT(set(cavity, {"discretization.boundary=virtual_repulsive"}), Contains("discretization.repulsive.strength"));
+  CHECK_THAT(set(cavity, {"discretization.repulsive.strength=1"}), Contains("apply to boundary: virtual_repulsive only"));
+  CHECK_THAT(set(cavity, {"case=hydrostatic", "discretization.boundary=virtual_repulsive", "discretization.repulsive.strength=1",
+                          "discretization.repulsive.p1=3"}),
+             Contains("discretization.repulsive.p1: 3 is out of range"));
+  CHECK_THAT(set(cavity, {"discretization.boundary=ghost", "discretization.wall_pressure=extrapolated"}),
+             Contains("applies to boundary: wall_particles only"));
+  CHECK_THAT(set(cavity, {"fluid.eos.gamma=7"}), Contains("needs type: tait"));
+  CHECK_THAT(set(cavity, {"fluid.eos.clamp_negative=true"}), Contains("applies to type: tait only"));
+  CHECK_THAT(set(cavity, {"case=taylor_green", "discretization.boundary=ghost"}), Contains("not 'taylor_green'"));
+  CHECK_THAT(set(base, {"discretization.boundary=ghost"}), Contains("not 'couette'"));
+  CHECK_THAT(set(cavity, {"geometry.wall_velocity=0"}), Contains("case 'cavity' needs a nonzero lid speed"));
+  CHECK_THAT(set(cavity, {"geometry.box=[1]"}), Contains("geometry.box: has 1 components"));
+  CHECK_THAT(set(cavity, {"geometry.channel_height=1"}), Contains("is for the channel cases"));
+  CHECK_THAT(set(base, {"geometry.box=[1, 1]"}), Contains("is for the box cases"));
+  CHECK_THAT(set(cavity, {"fluid.body_force_ramp=-1"}), Contains("fluid.body_force_ramp: -1 is out of range"));
+}
