@@ -20,17 +20,22 @@ class VerletList {
 
   // Rebuilds if needed; returns true when it did.
   bool update(const SearchInput<D>& in) {
-    if (!built_ || moved_too_far(in)) {
+    if (!built_ || support_ > built_support_ || moved_too_far(in)) {
       SearchInput<D> q = in;
       q.radius = support_ + skin_;
       search_->build(q, pairs_);
       for (int d = 0; d < D; ++d) x_build_[d].assign(in.x[d], in.x[d] + in.n);
       built_ = true;
+      built_support_ = support_;
       ++rebuilds_;
       return true;
     }
     return false;
   }
+
+  // Variable smoothing length: the support radius the pairs must cover from now on. A list built for a
+  // smaller radius is rebuilt at the next update; a larger one stays valid (it is a superset).
+  void set_support(double support_radius) { support_ = support_radius; }
 
   const PairList& pairs() const { return pairs_; }
   long rebuilds() const { return rebuilds_; }
@@ -52,7 +57,7 @@ class VerletList {
   }
 
   std::unique_ptr<NeighborSearch<D>> search_;
-  double support_, skin_;
+  double support_, skin_, built_support_ = 0.0;
   PairList pairs_;
   std::array<std::vector<double>, D> x_build_;
   bool built_ = false;

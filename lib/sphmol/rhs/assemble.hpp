@@ -1,8 +1,10 @@
 #pragma once
 // Builds the RHS of a scene from the configuration, once: the kernel pass, the neighbour search
 // with its skin, and the ordered list of terms (density -> EOS -> strain rate -> accelerations ->
-// position update). Nothing configured off is in the list.
+// position update). Nothing configured off is in the list. `energy`: initial e of every particle,
+// for scenes with the energy equation.
 #include <memory>
+#include <vector>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
@@ -11,6 +13,6 @@ namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
-                                              double spacing);
+                                              double spacing, std::vector<double> energy = {});
 
 }  // namespace sphmol

@@ -9,6 +9,7 @@
 #include "sphmol/core/state_layout.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
 #include "sphmol/time/ode_system.hpp"
 
@@ -28,6 +29,10 @@ class SphSystem final : public OdeSystem {
   SphSystem(Particles<D> particles, Domain<D> domain, double h, std::unique_ptr<KernelPass<D>> kernel,
             std::vector<std::unique_ptr<Term<D>>> terms, std::unique_ptr<VerletList<D>> pairs, CflLimits cfl);
 
+  // Adds the optional state blocks (before initial_state()). `energy` holds e for all particles
+  // (fluid: initial value; walls: the fixed value the EOS uses); empty when the scene has no energy.
+  void configure_fields(const StateFields& fields, std::vector<double> energy);
+
   std::size_t size() const override { return layout_.size(); }
   void rhs(double t, const double* y, double* ydot) override;
   double stable_step() const override { return stable_step_; }
@@ -46,6 +51,9 @@ class SphSystem final : public OdeSystem {
   // The density and pressure of the most recent evaluation (all particles).
   const std::vector<double>& density() const { return ws_.rho; }
   const std::vector<double>& pressure() const { return ws_.p; }
+  const std::vector<double>& sound_speed() const { return ws_.c; }
+  const std::vector<double>& energy() const { return ws_.e; }
+  const std::vector<double>& smoothing_lengths() const { return ws_.hs; }
 
  private:
   Particles<D> particles_;
@@ -56,6 +64,9 @@ class SphSystem final : public OdeSystem {
   std::unique_ptr<VerletList<D>> pairs_;
   CflLimits cfl_;
   Workspace<D> ws_;
+  StateFields fields_;
+  std::vector<double> h_ref_, rho_ref_;  // h(0), rho(0) per particle for SmoothingLengthMode::density
+  double support_ = 0.0;                 // kernel support in units of h
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
 };

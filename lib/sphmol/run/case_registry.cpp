@@ -1,6 +1,7 @@
 #include "sphmol/run/case_registry.hpp"
 
 #include "sphmol/scenes/channel_case.hpp"
+#include "sphmol/scenes/shock_tube_case.hpp"
 
 namespace sphmol {
 
@@ -8,6 +9,8 @@ const std::map<std::string, CaseFactory>& case_registry() {
   static const std::map<std::string, CaseFactory> registry = {
       {"couette", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
       {"poiseuille", {nullptr, [] { return std::make_unique<ChannelCase>(); }, nullptr, "two-dimensional only"}},
+      {"shock_tube", {[] { return std::make_unique<ShockTubeCase<1>>(); }, [] { return std::make_unique<ShockTubeCase<2>>(); },
+                      nullptr, "one- or two-dimensional"}},
   };
   return registry;
 }
