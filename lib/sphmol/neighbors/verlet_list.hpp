@@ -4,6 +4,7 @@
 // have come within the support unseen. The test looks at the positions each RHS evaluation is
 // given, so it stays valid across rejected steps and stage positions alike.
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -20,7 +21,7 @@ class VerletList {
 
   // Rebuilds if needed; returns true when it did.
   bool update(const SearchInput<D>& in) {
-    if (!built_ || support_ > built_support_ || moved_too_far(in)) {
+    if (!built_ || moved_too_far(in)) {
       SearchInput<D> q = in;
       q.radius = support_ + skin_;
       search_->build(q, pairs_);
@@ -33,8 +34,9 @@ class VerletList {
     return false;
   }
 
-  // Variable smoothing length: the support radius the pairs must cover from now on. A list built for a
-  // smaller radius is rebuilt at the next update; a larger one stays valid (it is a superset).
+  // Variable smoothing length: the support radius the pairs must cover from now on. Growth since the
+  // build eats into the skin (the list is rebuilt once growth plus twice the largest displacement
+  // exceed it); a shrunk support leaves the list a valid superset.
   void set_support(double support_radius) { support_ = support_radius; }
 
   const PairList& pairs() const { return pairs_; }
@@ -44,7 +46,10 @@ class VerletList {
 
  private:
   bool moved_too_far(const SearchInput<D>& in) const {
-    const double limit2 = 0.25 * skin_ * skin_;
+    // A support grown by g since the build leaves skin - g for the particles' motion.
+    const double room = skin_ - std::max(0.0, support_ - built_support_);
+    if (room <= 0.0) return true;
+    const double limit2 = 0.25 * room * room;
     for (std::size_t i = 0; i < in.n; ++i) {
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) {
