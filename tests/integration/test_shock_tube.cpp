@@ -67,3 +67,18 @@ TEST_CASE("state fields: Couette integrates positions and velocities only", "[st
   REQUIRE_FALSE(s.is_null());
   CHECK(s["state_fields"] == nlohmann::json({"position", "velocity"}));
 }
+
+TEST_CASE("shock tube 1D variant: L1 errors and wave positions", "[shock_tube]") {
+  const auto s = run("verification/shock_tube_1d.yaml", "shock-1d", "--set time.integrator=leapfrog");
+  REQUIRE_FALSE(s.is_null());
+  INFO(s["final_errors"].dump());
+  // Measured: L1_rho 0.0050, L1_u 0.0048, L1_p 0.0055, L1_e 0.0064; waves within 0.0053.
+  const auto& e = s["final_errors"];
+  CHECK(e["L1_rho"].get<double>() < 0.0075);
+  CHECK(e["L1_u"].get<double>() < 0.0075);
+  CHECK(e["L1_p"].get<double>() < 0.0085);
+  CHECK(e["L1_e"].get<double>() < 0.01);
+  for (const char* w : {"shock", "contact", "rarefaction_head", "rarefaction_tail"})
+    CHECK(std::abs(e["waves"][w]["sph"].get<double>() - e["waves"][w]["exact"].get<double>()) < 0.01);
+  CHECK(s["dimension"] == 1);
+}
