@@ -38,7 +38,7 @@ bool within_bounds(const nlohmann::json& s, bool report) {
     const auto& w = e["waves"][names[k]];
     if (w["sph"].is_null()) return false;
     const double d = std::abs(w["sph"].get<double>() - w["exact"].get<double>());
-    if (report) INFO(names[k] << ": |sph - exact| = " << d);
+    if (report) UNSCOPED_INFO(names[k] << ": |sph - exact| = " << d);
     ok = ok && d < tol[k];
   }
   return ok;
