@@ -62,6 +62,9 @@ struct Fixture {
     }
     w.rho = P.rho;
     w.p.assign(w.n, 0.0);
+    w.c.assign(w.n, 0.0);
+    w.e.assign(w.n, 0.0);
+    w.hs.assign(w.n, h);
     for (auto& s : w.strain) s.assign(w.n, 0.0);
   }
   void pairs() {

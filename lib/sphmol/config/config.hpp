@@ -20,7 +20,11 @@ struct EosConfig {
   double sound_speed = 0.0;     // c [m/s], required, > 0
   double background_pressure = 0.0;  // [Pa] added to every particle's pressure after the EOS, >= 0
   bool clamp_negative = false;       // "tait": p = max(p, 0) (free surfaces with summation density)
-  double gamma = 7.0;           // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (seed 003 eq 2.75); > 0
+  // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (seed 003 eq 2.75), gamma > 0, default 7.
+  // "ideal_gas": p = (gamma - 1) rho e (seed 003 eq 2.73), gamma > 1, default 1.4; needs
+  // discretization.energy: true and takes no sound_speed (c = sqrt(gamma p / rho) per particle).
+  // The loader sets the default of the chosen type when gamma is not given.
+  double gamma = 7.0;
 };
 
 struct FluidConfig {
@@ -38,6 +42,8 @@ struct GeometryConfig {
   // taylor_green / cavity: the box [Lx, Ly]; hydrostatic: the fluid column [width, depth]. Required there.
   std::vector<double> box;
   double velocity_amplitude = 1.0;  // taylor_green: U [m/s], > 0
+  double tube_length = 0.0;     // shock_tube: fluid extent in x, centred on the diaphragm at x = 0, > 0
+  double tube_width = 0.0;      // shock_tube: extent in y (periodic), > 0
 };
 
 struct RepulsiveConfig {  // seed 003 eq 2.76, for boundary: virtual_repulsive
@@ -47,14 +53,30 @@ struct RepulsiveConfig {  // seed 003 eq 2.76, for boundary: virtual_repulsive
   double r0 = 1.0;        // cut-off radius in particle spacings, > 0 and inside the kernel support
 };
 
+// Monaghan artificial viscosity (seed 003 eq 2.70); absent from the YAML = off.
+struct ArtificialViscosityConfig {
+  bool enabled = false;
+  double alpha = 1.0;  // >= 0
+  double beta = 1.0;   // >= 0
+  double eta = 0.1;    // eta / h_ij, > 0
+};
+
+// The two initial states of the shock tube (seed 003 §3.2), left for x < 0, right for x >= 0.
+struct ShockTubeState {
+  double density = 0.0, pressure = 0.0, velocity = 0.0;
+};
+struct ShockTubeConfig {
+  ShockTubeState left, right;
+};
+
 struct DiscretizationConfig {
   int particles_across = 0;         // fluid particles across the channel height (> 0); or spacing
   double spacing = 0.0;             // particle spacing dx [m]; exactly one of the two is given
   std::string kernel = "cubic_spline";
   double smoothing_ratio = 1.3;     // h / dx, > 0
-  std::string density = "summation";             // summation
-  std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117)
-  std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122)
+  std::string density = "summation";             // summation | normalised_summation (003 eq 2.58) | continuity (003 eq 2.61)
+  std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117) | symmetric_116 (000 eq 116)
+  std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122) | none (inviscid)
   double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
   std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive
   std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
@@ -69,6 +91,9 @@ struct DiscretizationConfig {
   int wall_layers = 0;              // 0 = enough layers to fill the kernel support
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0
+  ArtificialViscosityConfig artificial_viscosity;
+  bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state
+  std::string smoothing_length = "constant";  // constant | density (003 eq 2.67) | ode (003 eq 2.68)
 };
 
 struct CflConfig {
@@ -101,13 +126,14 @@ struct OutputConfig {
 
 struct Config {
   std::string source;  // file path the config came from ("<string>" for in-memory)
-  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity
+  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity | shock_tube
   int dimension = 2;       // 1, 2 or 3 (channel cases need 2)
   FluidConfig fluid;
   GeometryConfig geometry;
   DiscretizationConfig discretization;
   TimeConfig time;
   OutputConfig output;
+  ShockTubeConfig shock_tube;  // case shock_tube only
   // One-line remarks from loading that are not errors (e.g. output times past t_end dropped),
   // "LOCATION: key.path: text"; the caller prints them. Not part of to_yaml().
   std::vector<std::string> notices;

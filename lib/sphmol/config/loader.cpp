@@ -105,45 +105,65 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   YAML::Mark root_mark = root.Mark();
   if (root_mark.line < 0) root_mark = YAML::Mark();  // empty document: point at line 1
   MapReader top(origin, root, "", root_mark,
-                {"case", "dimension", "fluid", "geometry", "discretization", "time", "output"});
+                {"case", "dimension", "fluid", "geometry", "discretization", "time", "output", "shock_tube"});
 
   c.case_name = top.choice("case", top.required(top.string("case"), "case",
-                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity"),
-                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity"});
+                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube"),
+                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube"});
+  const bool shock = c.case_name == "shock_tube";
   const bool channel_case = c.case_name == "couette" || c.case_name == "poiseuille";
   if (const auto d = top.integer("dimension")) {
     check(top, "dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
     c.dimension = static_cast<int>(*d);
   }
-  if (c.dimension != 2)
+  if (c.case_name == "shock_tube" && c.dimension == 3)
+    top.fail("dimension", "case 'shock_tube' needs dimension 1 or 2 (got 3)");
+  if (c.dimension != 2 && c.case_name != "shock_tube")
     top.fail("dimension", "case '" + c.case_name + "' needs dimension 2 (got " +
                               std::to_string(c.dimension) + ")");
 
   // fluid
   MapReader fluid = top.section("fluid", {"density", "kinematic_viscosity", "eos", "body_force", "body_force_ramp"});
+  if (shock && fluid.has("density"))
+    fluid.fail("density", "is not used by case 'shock_tube' (its densities are shock_tube.left.density and "
+                          "shock_tube.right.density)");
+  if (!shock) {
   c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
   check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
+  }
   c.fluid.kinematic_viscosity = fluid.required(fluid.real("kinematic_viscosity"), "kinematic_viscosity",
                                                "nu in m^2/s, >= 0");
   check(fluid, "kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
         ">= 0 m^2/s");
   {
     MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
-    if (const auto t = eos.string("type")) c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative", "tait"});
-    if (const auto g = eos.real("gamma")) {
-      if (c.fluid.eos.type != "tait") eos.fail("gamma", "is the Tait exponent; it needs type: tait");
-      c.fluid.eos.gamma = *g;
-    }
-    check(eos, "gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
+    if (const auto t = eos.string("type"))
+      c.fluid.eos.type = eos.choice("type", *t, {"linear", "linear_relative", "tait", "ideal_gas"});
     if (const auto v = eos.boolean("clamp_negative")) {
       if (c.fluid.eos.type != "tait") eos.fail("clamp_negative", "applies to type: tait only");
       c.fluid.eos.clamp_negative = *v;
     }
     if (const auto v = eos.real("background_pressure")) c.fluid.eos.background_pressure = *v;
     check(eos, "background_pressure", c.fluid.eos.background_pressure >= 0, c.fluid.eos.background_pressure, ">= 0 Pa");
+    if (c.fluid.eos.type == "ideal_gas") {
+      if (eos.has("sound_speed"))
+        eos.fail("sound_speed", "is not used with type 'ideal_gas' (c = sqrt(gamma p / rho) per particle)");
+      c.fluid.eos.gamma = 1.4;
+      if (const auto g = eos.real("gamma")) c.fluid.eos.gamma = *g;
+      check(eos, "gamma", c.fluid.eos.gamma > 1, c.fluid.eos.gamma, "> 1");
+    } else {
+    if (c.fluid.eos.type == "tait") {
+      if (const auto g = eos.real("gamma")) c.fluid.eos.gamma = *g;
+      check(eos, "gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
+    } else if (eos.has("gamma")) {
+      eos.fail("gamma", "is used only with type 'tait' or 'ideal_gas' (got type '" + c.fluid.eos.type + "')");
+    }
     c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
                                            "artificial speed of sound c in m/s, > 0");
     check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
+    }
+    if (shock && c.fluid.eos.type != "ideal_gas")
+      eos.fail("type", "case 'shock_tube' needs type 'ideal_gas' (got '" + c.fluid.eos.type + "')");
   }
   if (const auto f = fluid.reals("body_force")) {
     if (static_cast<int>(f->size()) != c.dimension)
@@ -158,7 +178,32 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
 
   // geometry
   MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity", "box",
-                                           "velocity_amplitude"});
+                                           "velocity_amplitude", "tube_length", "tube_width"});
+  if (shock) {
+    for (const char* k : {"channel_height", "channel_length", "wall_velocity"})
+      if (geo.has(k)) geo.fail(k, "is not used by case 'shock_tube' (it takes tube_length and tube_width)");
+    c.geometry.tube_length = geo.required(geo.real("tube_length"), "tube_length", "fluid extent in x, > 0");
+    check(geo, "tube_length", c.geometry.tube_length > 0, c.geometry.tube_length, "> 0");
+    if (c.dimension == 1) {
+      if (geo.has("tube_width")) geo.fail("tube_width", "is not used in dimension 1");
+    } else {
+    c.geometry.tube_width = geo.required(geo.real("tube_width"), "tube_width", "extent in y, > 0");
+    check(geo, "tube_width", c.geometry.tube_width > 0, c.geometry.tube_width, "> 0");
+    }
+    MapReader st = top.section("shock_tube", {"left", "right"});
+    for (const char* side : {"left", "right"}) {
+      MapReader s = st.section(side, {"density", "pressure", "velocity"});
+      ShockTubeState& q = std::string(side) == "left" ? c.shock_tube.left : c.shock_tube.right;
+      q.density = s.required(s.real("density"), "density", "> 0");
+      check(s, "density", q.density > 0, q.density, "> 0");
+      q.pressure = s.required(s.real("pressure"), "pressure", "> 0");
+      check(s, "pressure", q.pressure > 0, q.pressure, "> 0");
+      if (const auto v = s.real("velocity")) q.velocity = *v;
+    }
+  } else {
+  for (const char* k : {"tube_length", "tube_width"})
+    if (geo.has(k)) geo.fail(k, "is only used by case 'shock_tube'");
+  if (top.has("shock_tube")) top.fail("shock_tube", "is only used by case 'shock_tube'");
   if (channel_case) {
     c.geometry.channel_height = geo.required(geo.real("channel_height"), "channel_height",
                                              "distance between the walls in m, > 0");
@@ -201,12 +246,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (geo.has("wall_velocity")) geo.fail("wall_velocity", what);
     geo.fail_missing("wall_velocity", what);
   }
+  }
 
   // discretization
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
-                                "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive"});
+                                "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive",
+                                "artificial_viscosity", "energy", "smoothing_length"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -232,10 +279,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
     check(disc, "smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
-    if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation"});
-    if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117"});
+    if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation", "normalised_summation", "continuity"});
+    if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116"});
     if (const auto v = disc.string("viscosity"))
-      d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris"});
+      d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris", "none"});
     if (const auto v = disc.real("xsph")) d.xsph = *v;
     check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
     if (const auto v = disc.string("boundary"))
@@ -285,6 +332,35 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "cell_list", "all_pairs"});
     if (const auto v = disc.real("skin")) d.skin = *v;
     check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
+    if (disc.has("artificial_viscosity")) {
+      MapReader av = disc.section("artificial_viscosity", {"alpha", "beta", "eta"});
+      auto& a = d.artificial_viscosity;
+      a.enabled = true;
+      if (const auto v = av.real("alpha")) a.alpha = *v;
+      check(av, "alpha", a.alpha >= 0, a.alpha, ">= 0");
+      if (const auto v = av.real("beta")) a.beta = *v;
+      check(av, "beta", a.beta >= 0, a.beta, ">= 0");
+      if (const auto v = av.real("eta")) a.eta = *v;
+      check(av, "eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
+    }
+    if (const auto v = disc.boolean("energy")) d.energy = *v;
+    if (const auto v = disc.string("smoothing_length"))
+      d.smoothing_length = disc.choice("smoothing_length", *v, {"constant", "density", "ode"});
+    // Combinations that have no meaning, named by both keys.
+    if (c.fluid.eos.type == "ideal_gas" && !d.energy)
+      disc.fail("energy", "fluid.eos.type 'ideal_gas' needs discretization.energy: true (p = (gamma - 1) rho e)");
+    if (d.energy && c.fluid.kinematic_viscosity != 0)
+      disc.fail("energy", "the energy equation covers inviscid flow only (viscous heating is not implemented); "
+                          "fluid.kinematic_viscosity must be 0 (got " + shown(c.fluid.kinematic_viscosity) + ")");
+    if (d.viscosity == "none" && c.fluid.kinematic_viscosity != 0)
+      disc.fail("viscosity", "'none' with fluid.kinematic_viscosity = " + shown(c.fluid.kinematic_viscosity) +
+                                 " (a viscous fluid needs 'morris' or 'strain_rate')");
+    if (d.smoothing_length != "constant" && d.density != "continuity")
+      disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.density: continuity (got '" +
+                                        d.density + "'): a summation density would depend on h implicitly");
+    if (d.smoothing_length != "constant" && d.neighbor_search != "kdtree")
+      disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.neighbor_search: kdtree (got '" +
+                                        d.neighbor_search + "')");
   }
 
   // time

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <charconv>
+#include <utility>
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
@@ -43,12 +44,16 @@ std::string to_yaml(const Config& c) {
     << "; all defaults filled in.\n";
   y << "case: " << c.case_name << "\n";
   y << "dimension: " << c.dimension << "\n";
-  y << "fluid:\n"
-    << "  density: " << num(f.density) << "\n"
-    << "  kinematic_viscosity: " << num(f.kinematic_viscosity) << "\n"
+  const bool shock = c.case_name == "shock_tube";
+  y << "fluid:\n";
+  if (!shock) y << "  density: " << num(f.density) << "\n";
+  y << "  kinematic_viscosity: " << num(f.kinematic_viscosity) << "\n"
     << "  eos:\n"
-    << "    type: " << f.eos.type << "\n"
-    << "    sound_speed: " << num(f.eos.sound_speed) << "\n";
+    << "    type: " << f.eos.type << "\n";
+  if (f.eos.type == "ideal_gas")
+    y << "    gamma: " << num(f.eos.gamma) << "\n";
+  else
+    y << "    sound_speed: " << num(f.eos.sound_speed) << "\n";
   if (f.eos.type == "tait")
     y << "    gamma: " << num(f.eos.gamma) << "\n"
       << "    clamp_negative: " << (f.eos.clamp_negative ? "true" : "false") << "\n";
@@ -56,13 +61,22 @@ std::string to_yaml(const Config& c) {
   y << "  body_force: " << list(f.body_force) << "\n"
     << "  body_force_ramp: " << num(f.body_force_ramp) << "\n";
   y << "geometry:\n";
-  if (g.box.empty())
-    y << "  channel_height: " << num(g.channel_height) << "\n"
-      << "  channel_length: " << num(g.channel_length) << "\n";
-  else
-    y << "  box: " << list(g.box) << "\n";
-  y << "  wall_velocity: " << num(g.wall_velocity) << "\n";
-  if (c.case_name == "taylor_green") y << "  velocity_amplitude: " << num(g.velocity_amplitude) << "\n";
+  if (shock) {
+    y << "  tube_length: " << num(g.tube_length) << "\n";
+    if (c.dimension > 1) y << "  tube_width: " << num(g.tube_width) << "\n";
+    y << "shock_tube:\n";
+    for (const auto& [side, q] : {std::pair{"left", c.shock_tube.left}, std::pair{"right", c.shock_tube.right}})
+      y << "  " << side << ": {density: " << num(q.density) << ", pressure: " << num(q.pressure)
+        << ", velocity: " << num(q.velocity) << "}\n";
+  } else {
+    if (g.box.empty())
+      y << "  channel_height: " << num(g.channel_height) << "\n"
+        << "  channel_length: " << num(g.channel_length) << "\n";
+    else
+      y << "  box: " << list(g.box) << "\n";
+    y << "  wall_velocity: " << num(g.wall_velocity) << "\n";
+    if (c.case_name == "taylor_green") y << "  velocity_amplitude: " << num(g.velocity_amplitude) << "\n";
+  }
   y << "discretization:\n";
   // Exactly one of the two is set; the other stays at its 0 "not given" value.
   if (d.particles_across > 0)
@@ -90,6 +104,11 @@ std::string to_yaml(const Config& c) {
     << "  wall_layers: " << d.wall_layers << "\n"
     << "  neighbor_search: " << d.neighbor_search << "\n"
     << "  skin: " << num(d.skin) << "\n";
+  if (d.artificial_viscosity.enabled)
+    y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
+      << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";
+  y << "  energy: " << (d.energy ? "true" : "false") << "\n"
+    << "  smoothing_length: " << d.smoothing_length << "\n";
   y << "time:\n"
     << "  t_end: " << num(t.t_end) << "\n"
     << "  integrator: " << t.integrator << "\n"

@@ -4,6 +4,7 @@
 // have come within the support unseen. The test looks at the positions each RHS evaluation is
 // given, so it stays valid across rejected steps and stage positions alike.
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -26,11 +27,17 @@ class VerletList {
       search_->build(q, pairs_);
       for (int d = 0; d < D; ++d) x_build_[d].assign(in.x[d], in.x[d] + in.n);
       built_ = true;
+      built_support_ = support_;
       ++rebuilds_;
       return true;
     }
     return false;
   }
+
+  // Variable smoothing length: the support radius the pairs must cover from now on. Growth since the
+  // build eats into the skin (the list is rebuilt once growth plus twice the largest displacement
+  // exceed it); a shrunk support leaves the list a valid superset.
+  void set_support(double support_radius) { support_ = support_radius; }
 
   // Forces a rebuild at the next update (the particle set itself changed, e.g. ghost particles).
   void invalidate() { built_ = false; }
@@ -42,8 +49,11 @@ class VerletList {
 
  private:
   bool moved_too_far(const SearchInput<D>& in) const {
-    const double limit2 = 0.25 * skin_ * skin_;
+    // A support grown by g since the build leaves skin - g for the particles' motion.
     if (in.n != x_build_[0].size()) return true;  // particles were added or removed
+    const double room = skin_ - std::max(0.0, support_ - built_support_);
+    if (room <= 0.0) return true;
+    const double limit2 = 0.25 * room * room;
     for (std::size_t i = 0; i < in.n; ++i) {
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) {
@@ -56,7 +66,7 @@ class VerletList {
   }
 
   std::unique_ptr<NeighborSearch<D>> search_;
-  double support_, skin_;
+  double support_, skin_, built_support_ = 0.0;
   PairList pairs_;
   std::array<std::vector<double>, D> x_build_;
   bool built_ = false;

@@ -4,6 +4,8 @@
 // With `relative`, p = c^2 (rho - rho0): the same pressure gradient in the continuum, but without the
 // background pressure c^2 rho0, which the symmetric SPH gradient (000 eq 117) turns into a spurious
 // force wherever the particle arrangement is not symmetric (e.g. fluid rows sliding over a wall).
+#include <cmath>
+
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -17,6 +19,8 @@ class LinearEos final : public Term<D> {
   void apply(Workspace<D>& w) const override {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * (w.rho[i] - rho_ref_);
+    const double c = std::sqrt(c2_);  // constant sound speed, for the artificial viscosity
+    for (std::size_t i = 0; i < w.n; ++i) w.c[i] = c;
   }
 
  private:

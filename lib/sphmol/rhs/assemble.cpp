@@ -8,7 +8,14 @@
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
 #include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
+#include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/physics/body_force.hpp"
+#include "sphmol/physics/continuity_density.hpp"
+#include "sphmol/physics/energy_equation.hpp"
+#include "sphmol/physics/eos_ideal_gas.hpp"
+#include "sphmol/physics/normalised_summation_density.hpp"
+#include "sphmol/physics/pressure_gradient_116.hpp"
+#include "sphmol/physics/smoothing_length_rate.hpp"
 #include "sphmol/physics/eos_linear.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
 #include "sphmol/physics/pressure_gradient.hpp"
@@ -16,21 +23,26 @@
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
 #include "sphmol/physics/xsph.hpp"
+#include "sphmol/rhs/kernel_pass_variable_h.hpp"
 
 namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
-                                              double spacing, const BoxWalls<D>* walls) {
+                                              double spacing, const BoxWalls<D>* walls, std::vector<double> energy) {
   const auto& disc = config.discretization;
   const auto& fluid = config.fluid;
   const double h = disc.smoothing_ratio * spacing;
-  auto kernel = make_kernel_pass<D>(disc.kernel);
+  const bool variable_h = disc.smoothing_length != "constant";
+  auto kernel = variable_h ? make_variable_h_kernel_pass<D>(disc.kernel) : make_kernel_pass<D>(disc.kernel);
   const double mu = fluid.density * fluid.kinematic_viscosity;
 
   std::vector<std::unique_ptr<Term<D>>> terms;
-  if (disc.density != "summation") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
-  terms.push_back(std::make_unique<SummationDensity<D>>());
+  if (disc.density == "summation") terms.push_back(std::make_unique<SummationDensity<D>>());
+  else if (disc.density == "normalised_summation") terms.push_back(std::make_unique<NormalisedSummationDensity<D>>());
+  else if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
+  else throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
+  if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
   std::unique_ptr<GhostGenerator<D>> ghosts;
   if (disc.boundary == "ghost") {
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
@@ -38,8 +50,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support() * h);
     terms.push_back(std::make_unique<GhostStateCopy<D>>(ghosts.get()));
   }
-  std::function<double(double)> rho_of_p;
-  if (fluid.eos.type == "tait") {
+  std::function<double(double)> rho_of_p;  // the EOS inverted, for extrapolated wall pressures
+  if (fluid.eos.type == "ideal_gas") {
+    if (!disc.energy) throw std::invalid_argument("fluid.eos.type: 'ideal_gas' needs discretization.energy: true");
+    terms.push_back(std::make_unique<IdealGasEos<D>>(fluid.eos.gamma));
+  } else if (fluid.eos.type == "tait") {
     const TaitLaw law(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma);
     terms.push_back(std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma,
                                                  fluid.eos.clamp_negative));
@@ -59,21 +74,39 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     g[d] = fluid.body_force[d];
     any_force = any_force || g[d] != 0.0;
   }
-  if (disc.wall_pressure == "extrapolated")
+  if (disc.wall_pressure == "extrapolated") {
+    if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
     terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
-  if (disc.momentum != "symmetric_117") throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
+  }
+  const bool m116 = disc.momentum == "symmetric_116";
+  if (!m116 && disc.momentum != "symmetric_117")
+    throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
+  auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
+    if (m116) return std::make_unique<PressureGradient116<D>>();
+    return std::make_unique<PressureGradient117<D>>();
+  };
   if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max));
   else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   if (disc.viscosity == "strain_rate") {
     terms.push_back(std::make_unique<StrainRate<D>>());
-    terms.push_back(std::make_unique<PressureGradient117<D>>());
+    terms.push_back(pressure());
     terms.push_back(std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
-    terms.push_back(std::make_unique<PressureGradient117<D>>());
+    terms.push_back(pressure());
     terms.push_back(std::make_unique<MorrisViscosity<D>>(mu));
+  } else if (disc.viscosity == "none") {
+    terms.push_back(pressure());
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
+  }
+  if (const auto& av = disc.artificial_viscosity; av.enabled) {
+    if (disc.energy) terms.push_back(std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
+    else terms.push_back(std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
+  }
+  if (disc.energy) {
+    if (m116) terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
+    else terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());
   }
   if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
   if (disc.boundary == "virtual_repulsive") {
@@ -87,16 +120,24 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);
-  CflLimits cfl{config.time.cfl.acoustic, config.time.cfl.force, config.time.cfl.viscous, fluid.eos.sound_speed,
-                fluid.kinematic_viscosity};
+  CflLimits cfl{config.time.cfl.acoustic, config.time.cfl.force, config.time.cfl.viscous,
+                fluid.eos.type == "ideal_gas" ? 0.0 : fluid.eos.sound_speed, fluid.kinematic_viscosity};
   auto sys = std::make_unique<SphSystem<D>>(std::move(particles), domain, h, std::move(kernel), std::move(terms),
                                             std::move(list), cfl);
+  StateFields fields;
+  fields.density = disc.density == "continuity";
+  fields.energy = disc.energy;
+  if (disc.smoothing_length == "density") fields.smoothing_length = SmoothingLengthMode::density;
+  if (disc.smoothing_length == "ode") fields.smoothing_length = SmoothingLengthMode::ode;
+  if (disc.energy && energy.empty())
+    throw std::invalid_argument("discretization.energy: case '" + config.case_name + "' provides no initial energy");
+  sys->configure_fields(fields, std::move(energy));
   if (ghosts) sys->set_generator(std::move(ghosts));
   return sys;
 }
 
-template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double, const BoxWalls<1>*);
-template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double, const BoxWalls<2>*);
-template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double, const BoxWalls<3>*);
+template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double, const BoxWalls<1>*, std::vector<double>);
+template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double, const BoxWalls<2>*, std::vector<double>);
+template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double, const BoxWalls<3>*, std::vector<double>);
 
 }  // namespace sphmol

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace sphmol {
 
@@ -30,7 +31,25 @@ SphSystem<D>::SphSystem(Particles<D> particles, Domain<D> domain, double h, std:
   }
   ws_.rho = particles_.rho;  // walls keep their rest density
   ws_.p.assign(ws_.n, 0.0);
+  ws_.c.assign(ws_.n, 0.0);
+  ws_.e.assign(ws_.n, 0.0);
+  ws_.hs.assign(ws_.n, h);
+  support_ = kernel_->support();
   for (auto& s : ws_.strain) s.assign(ws_.n, 0.0);
+}
+
+template <int D>
+void SphSystem<D>::configure_fields(const StateFields& fields, std::vector<double> energy) {
+  fields_ = fields;
+  layout_.has_density = fields.density;
+  layout_.has_energy = fields.energy;
+  layout_.has_smoothing_length = fields.smoothing_length == SmoothingLengthMode::ode;
+  if (fields.energy) {
+    if (energy.size() != ws_.n) throw std::invalid_argument("configure_fields: energy needs one value per particle");
+    ws_.e = std::move(energy);
+  }
+  h_ref_ = ws_.hs;
+  rho_ref_ = particles_.rho;
 }
 
 template <int D>
@@ -42,6 +61,11 @@ std::vector<double> SphSystem<D>::initial_state() const {
       y[layout_.position(d) + i] = particles_.x[d][i];
       y[layout_.velocity(d) + i] = particles_.v[d][i];
     }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (layout_.has_density) y[layout_.density() + i] = particles_.rho[i];
+    if (layout_.has_energy) y[layout_.energy() + i] = ws_.e[i];
+    if (layout_.has_smoothing_length) y[layout_.smoothing_length() + i] = h_ref_[i];
+  }
   return y;
 }
 
@@ -73,6 +97,19 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (generator_ && generator_->generate(nb, particles_, ws_)) pairs_->invalidate();
   const std::size_t n = ws_.n;
 
+  // Optional fields: per-scene branches outside every pair loop.
+  if (layout_.has_density) std::copy(y + layout_.density(), y + layout_.density() + nf, ws_.rho.begin());
+  if (layout_.has_energy) std::copy(y + layout_.energy(), y + layout_.energy() + nf, ws_.e.begin());
+  if (layout_.has_smoothing_length)
+    std::copy(y + layout_.smoothing_length(), y + layout_.smoothing_length() + nf, ws_.hs.begin());
+  if (fields_.smoothing_length == SmoothingLengthMode::density)  // seed 003 eq 2.67
+    for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
+  if (fields_.smoothing_length != SmoothingLengthMode::constant) {
+    // Pairs are found with h_ij = (h_i + h_j)/2 <= max h: the list radius follows the largest h.
+    const double hmax = *std::max_element(ws_.hs.begin(), ws_.hs.end());
+    pairs_->set_support(support_ * hmax);
+  }
+
   SearchInput<D> in;
   for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();
   in.kind = particles_.kind.data();
@@ -87,24 +124,33 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     std::copy(ws_.v[d].begin(), ws_.v[d].begin() + nf, ws_.dxdt[d]);
     std::fill(ws_.dvdt[d], ws_.dvdt[d] + nf, 0.0);
   }
+  ws_.drhodt = layout_.has_density ? ydot + layout_.density() : nullptr;
+  ws_.dedt = layout_.has_energy ? ydot + layout_.energy() : nullptr;
+  ws_.dhdt = layout_.has_smoothing_length ? ydot + layout_.smoothing_length() : nullptr;
+  if (ws_.drhodt) std::fill(ws_.drhodt, ws_.drhodt + nf, 0.0);
+  if (ws_.dedt) std::fill(ws_.dedt, ws_.dedt + nf, 0.0);
+  if (ws_.dhdt) std::fill(ws_.dhdt, ws_.dhdt + nf, 0.0);
   for (const auto& term : terms_) term->apply(ws_);
 
-  double vmax2 = 0.0, amax2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
+  // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does
+  // not falls back to the configured c), so compressible runs use the largest local c / h.
+  double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = ws_.h;
+#pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
   for (std::size_t i = 0; i < nf; ++i) {
     double v2 = 0.0, a2 = 0.0;
     for (int d = 0; d < D; ++d) {
       v2 += ws_.v[d][i] * ws_.v[d][i];
       a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
     }
-    vmax2 = std::max(vmax2, v2);
     amax2 = std::max(amax2, a2);
+    const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
+    if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
+    hmin = std::min(hmin, ws_.hs[i]);
   }
-  const double h = ws_.h;
   double dt = std::numeric_limits<double>::infinity();
-  if (cfl_.sound_speed + std::sqrt(vmax2) > 0.0) dt = std::min(dt, cfl_.acoustic * h / (cfl_.sound_speed + std::sqrt(vmax2)));
-  if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(h / std::sqrt(amax2)));
-  if (cfl_.kinematic_viscosity > 0.0) dt = std::min(dt, cfl_.viscous * h * h / cfl_.kinematic_viscosity);
+  if (std::isfinite(acoustic)) dt = std::min(dt, cfl_.acoustic * acoustic);
+  if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));
+  if (cfl_.kinematic_viscosity > 0.0) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
   stable_step_ = dt;
 }
 

@@ -10,6 +10,7 @@
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/particle_generator.hpp"
+#include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
 #include "sphmol/time/ode_system.hpp"
 
@@ -28,6 +29,10 @@ class SphSystem final : public OdeSystem {
  public:
   SphSystem(Particles<D> particles, Domain<D> domain, double h, std::unique_ptr<KernelPass<D>> kernel,
             std::vector<std::unique_ptr<Term<D>>> terms, std::unique_ptr<VerletList<D>> pairs, CflLimits cfl);
+
+  // Adds the optional state blocks (before initial_state()). `energy` holds e for all particles
+  // (fluid: initial value; walls: the fixed value the EOS uses); empty when the scene has no energy.
+  void configure_fields(const StateFields& fields, std::vector<double> energy);
 
   std::size_t size() const override { return layout_.size(); }
   void rhs(double t, const double* y, double* ydot) override;
@@ -55,6 +60,9 @@ class SphSystem final : public OdeSystem {
   // The density and pressure of the most recent evaluation (all particles).
   const std::vector<double>& density() const { return ws_.rho; }
   const std::vector<double>& pressure() const { return ws_.p; }
+  const std::vector<double>& sound_speed() const { return ws_.c; }
+  const std::vector<double>& energy() const { return ws_.e; }
+  const std::vector<double>& smoothing_lengths() const { return ws_.hs; }
 
  private:
   Particles<D> particles_;
@@ -67,6 +75,9 @@ class SphSystem final : public OdeSystem {
   std::unique_ptr<ParticleGenerator<D>> generator_;
   std::size_t n_base_ = 0;  // the scene's own particles; generated ones follow
   Workspace<D> ws_;
+  StateFields fields_;
+  std::vector<double> h_ref_, rho_ref_;  // h(0), rho(0) per particle for SmoothingLengthMode::density
+  double support_ = 0.0;                 // kernel support in units of h
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
 };

@@ -1,0 +1,48 @@
+#pragma once
+// Monaghan artificial viscosity, seed 003 eqs 2.70-2.72:
+//   Pi_ij = (beta theta_ij - alpha cbar_ij) theta_ij / rhobar_ij   if v_ij . x_ij < 0, else 0
+//   theta_ij = h_ij v_ij . x_ij / (|x_ij|^2 + eta^2),  eta = eta_factor h_ij (seed 003: 0.1 h_ij)
+//   dv_i/dt -= sum_j m_j Pi_ij grad_i W_ij                    (added to the pressure term, eq 2.71)
+//   de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij         (its work, eq 2.72; only with energy)
+// Pi_ij is symmetric in i, j, so the pair forces are antisymmetric and momentum is conserved; the
+// heating is >= 0. Sound speeds c_i come from the EOS (Workspace::c), h_ij = (h_i + h_j)/2.
+#include "sphmol/rhs/term.hpp"
+
+namespace sphmol {
+
+template <int D, bool WithEnergy>
+class ArtificialViscosity final : public Term<D> {
+ public:
+  ArtificialViscosity(double alpha, double beta, double eta_factor) : alpha_(alpha), beta_(beta), eta_(eta_factor) {}
+  std::string_view name() const override { return WithEnergy ? "artificial_viscosity+heating" : "artificial_viscosity"; }
+  void apply(Workspace<D>& w) const override {
+    const auto& P = w.pairs;
+    const auto& m = w.particles->mass;
+    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+      double a[D] = {}, de = 0.0;
+      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+        const std::uint32_t j = P.j[k];
+        double vx = 0.0, r2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          vx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
+          r2 += w.dx[d][k] * w.dx[d][k];
+        }
+        const double hij = 0.5 * (w.hs[i] + w.hs[j]);
+        const double theta = hij * vx / (r2 + eta_ * eta_ * hij * hij);
+        const double cbar = 0.5 * (w.c[i] + w.c[j]), rhobar = 0.5 * (w.rho[i] + w.rho[j]);
+        // Receding pairs (vx >= 0) get no viscosity: a select, not a branch on configuration.
+        const double pi = vx < 0.0 ? (beta_ * theta - alpha_ * cbar) * theta / rhobar : 0.0;
+        const double s = m[j] * pi * w.F[k];
+        for (int d = 0; d < D; ++d) a[d] -= s * w.dx[d][k];
+        if constexpr (WithEnergy) de += 0.5 * s * vx;
+      }
+      for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
+      if constexpr (WithEnergy) w.dedt[i] += de;
+    }
+  }
+
+ private:
+  double alpha_, beta_, eta_;
+};
+
+}  // namespace sphmol

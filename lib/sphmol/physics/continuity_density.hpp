@@ -1,0 +1,31 @@
+#pragma once
+// Continuity density, seed 003 eq 2.61 (seed 000 eq 108):
+//   drho_i/dt = sum_j m_j v_ij . grad_i W_ij,   v_ij = v_i - v_j
+// rho is part of the ODE state; this term writes its rate. Wall neighbours enter with their
+// prescribed velocity. No edge effect at density jumps (seed 003 §3.3), but mass is not conserved
+// exactly (the density no longer follows from the positions).
+#include "sphmol/rhs/term.hpp"
+
+namespace sphmol {
+
+template <int D>
+class ContinuityDensity final : public Term<D> {
+ public:
+  std::string_view name() const override { return "continuity_density"; }
+  void apply(Workspace<D>& w) const override {
+    const auto& P = w.pairs;
+    const auto& m = w.particles->mass;
+    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+      double s = 0.0;
+      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+        const std::uint32_t j = P.j[k];
+        double vdx = 0.0;
+        for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
+        s += m[j] * vdx * w.F[k];
+      }
+      w.drhodt[i] += s;
+    }
+  }
+};
+
+}  // namespace sphmol

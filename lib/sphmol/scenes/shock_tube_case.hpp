@@ -1,0 +1,47 @@
+#pragma once
+// The shock tube of seed 003 §3 against the exact Riemann solution (Toro): L1 errors of rho, u, p, e
+// over all fluid particles (the scene is 1D-equivalent: y is periodic, so every row is a mid-line),
+// wave positions detected on the x-binned SPH profile, and a CSV of the binned profile with the exact
+// solution at each output time.
+#include <memory>
+#include <optional>
+
+#include "sphmol/reference/exact_riemann.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+// One x-bin of the SPH profile (bin width = the particle spacing), averaged over its particles.
+struct ShockTubeBin {
+  double x, rho, u, p, e;
+};
+
+// Wave positions read off a binned profile, each by a threshold crossing (linear interpolation
+// between bin centres):
+//   rarefaction_head: leftmost x where u rises through 5 % of u*;
+//   rarefaction_tail: leftmost x where u rises through 95 % of u*;
+//   shock:            rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R ahead);
+//   contact:          between tail and shock, the rightmost x where rho rises (leftwards) through
+//                     (rho*_L + rho*_R)/2.
+// NaN when a crossing is not found.
+struct ShockTubeWaves {
+  double shock, contact, rarefaction_head, rarefaction_tail;
+};
+ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRiemannSolver& exact);
+
+template <int D>
+class ShockTubeCase final : public Case<D> {
+ public:
+  std::unique_ptr<SphSystem<D>> build(const Config& config) override;
+  std::string reference() const override { return "exact Riemann solution (Toro ch. 4)"; }
+  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  std::optional<ExactRiemannSolver> exact_;
+  double gamma_ = 1.4, spacing_ = 0.0, length_ = 0.0;
+  int wall_layers_ = 0;
+  bool profiles_ = true;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,84 @@
+// Runs sph-mol on the shock tube (verification/shock_tube.yaml, full 320 x 10 resolution, leapfrog)
+// and checks the L1 errors and wave positions against the exact Riemann solution; checks that the
+// state holds only what each scene needs (SPEC §1).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+const std::string source_dir = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+
+// Runs the binary; returns the summary, or null when the run failed.
+nlohmann::json run(const std::string& config, const std::string& tag, const std::string& sets) {
+  const std::string out = (std::filesystem::temp_directory_path() / ("sphmol-it-" + tag)).string();
+  std::filesystem::remove_all(out);
+  const std::string cmd = std::string(SPHMOL_BINARY) + " --config " + source_dir + "/" + config + " --output " + out +
+                          " " + sets + " > " + out + ".log 2>&1";
+  if (std::system(cmd.c_str()) != 0) return nullptr;
+  std::ifstream in(out + "/summary.json");
+  return nlohmann::json::parse(in);
+}
+
+// Bounds measured at 320 x 10 with leapfrog (CFL step), README "Shock tube": L1_rho 0.0149,
+// L1_u 0.0209, L1_p 0.0171, L1_e 0.0264; waves within 0.026 of the exact positions (the
+// rarefaction tail, read at 95 % of u*, is the loosest). Bounds at about 1.5x the measured errors.
+bool within_bounds(const nlohmann::json& s, bool report) {
+  if (s.is_null()) return false;
+  const auto& e = s["final_errors"];
+  bool ok = e["L1_rho"].get<double>() < 0.025 && e["L1_u"].get<double>() < 0.032 && e["L1_p"].get<double>() < 0.026 &&
+            e["L1_e"].get<double>() < 0.04;
+  const double tol[] = {0.01, 0.01, 0.01, 0.035};
+  const char* names[] = {"shock", "contact", "rarefaction_head", "rarefaction_tail"};
+  for (int k = 0; k < 4; ++k) {
+    const auto& w = e["waves"][names[k]];
+    if (w["sph"].is_null()) return false;
+    const double d = std::abs(w["sph"].get<double>() - w["exact"].get<double>());
+    if (report) UNSCOPED_INFO(names[k] << ": |sph - exact| = " << d);
+    ok = ok && d < tol[k];
+  }
+  return ok;
+}
+
+}  // namespace
+
+TEST_CASE("shock tube 320x10: L1 errors and wave positions against the exact Riemann solution", "[shock_tube]") {
+  const auto s = run("verification/shock_tube.yaml", "shock", "--set time.integrator=leapfrog");
+  REQUIRE_FALSE(s.is_null());
+  INFO(s["final_errors"].dump());
+  CHECK(within_bounds(s, true));
+  CHECK(s["state_fields"] == nlohmann::json({"position", "velocity", "density", "energy", "smoothing_length"}));
+  CHECK(s["particles"]["fluid"] == 3200);
+}
+
+TEST_CASE("shock tube without artificial viscosity misses the bounds (or fails)", "[shock_tube]") {
+  const auto s = run("verification/shock_tube.yaml", "shock-noav",
+                     "--set time.integrator=leapfrog --set discretization.artificial_viscosity.alpha=0 "
+                     "--set discretization.artificial_viscosity.beta=0");
+  CHECK_FALSE(within_bounds(s, false));
+}
+
+TEST_CASE("state fields: Couette integrates positions and velocities only", "[state]") {
+  const auto s = run("verification/couette.yaml", "couette-fields", "--set time.t_end=0.01 --set output.times=[0.01]");
+  REQUIRE_FALSE(s.is_null());
+  CHECK(s["state_fields"] == nlohmann::json({"position", "velocity"}));
+}
+
+TEST_CASE("shock tube 1D variant: L1 errors and wave positions", "[shock_tube]") {
+  const auto s = run("verification/shock_tube_1d.yaml", "shock-1d", "--set time.integrator=leapfrog");
+  REQUIRE_FALSE(s.is_null());
+  INFO(s["final_errors"].dump());
+  // Measured: L1_rho 0.0050, L1_u 0.0048, L1_p 0.0055, L1_e 0.0064; waves within 0.0053.
+  const auto& e = s["final_errors"];
+  CHECK(e["L1_rho"].get<double>() < 0.0075);
+  CHECK(e["L1_u"].get<double>() < 0.0075);
+  CHECK(e["L1_p"].get<double>() < 0.0085);
+  CHECK(e["L1_e"].get<double>() < 0.01);
+  for (const char* w : {"shock", "contact", "rarefaction_head", "rarefaction_tail"})
+    CHECK(std::abs(e["waves"][w]["sph"].get<double>() - e["waves"][w]["exact"].get<double>()) < 0.01);
+  CHECK(s["dimension"] == 1);
+}

@@ -1,0 +1,323 @@
+// Compressible-flow terms (seed 003 §2.2.4-2.2.5) on small particle sets: exactness on uniform and
+// linear fields, signs, and the pair antisymmetry that conserves momentum and total energy.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "sphmol/core/state_layout.hpp"
+#include "sphmol/physics/artificial_viscosity.hpp"
+#include "sphmol/physics/continuity_density.hpp"
+#include "sphmol/physics/energy_equation.hpp"
+#include "sphmol/physics/eos_ideal_gas.hpp"
+#include "sphmol/physics/normalised_summation_density.hpp"
+#include "sphmol/physics/pressure_gradient.hpp"
+#include "sphmol/physics/pressure_gradient_116.hpp"
+#include "sphmol/physics/smoothing_length_rate.hpp"
+#include "sphmol/physics/summation_density.hpp"
+#include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/kernel_pass_variable_h.hpp"
+
+using namespace sphmol;
+
+namespace {
+
+// A workspace over given particles with every pair listed (the kernel pass keeps those inside the
+// support), all particles fluid, outputs in owned buffers.
+template <int D>
+struct Fixture {
+  Particles<D> P;
+  Domain<D> domain;
+  Workspace<D> w;
+  std::array<std::vector<double>, D> dxdt, dvdt;
+  std::vector<double> drho, de, dh;
+  double h = 0.0;
+
+  void finish(double h_, bool variable_h = false, const char* kernel = "cubic_spline") {
+    h = h_;
+    const std::size_t n = P.size();
+    w.n = w.n_fluid = n;
+    w.particles = &P;
+    w.domain = &domain;
+    w.h = h;
+    auto pass = variable_h ? make_variable_h_kernel_pass<D>(kernel) : make_kernel_pass<D>(kernel);
+    w.W0 = pass->value_at_zero(h);
+    for (int d = 0; d < D; ++d) {
+      w.x[d] = P.x[d];
+      w.v[d] = P.v[d];
+      dxdt[d].assign(n, 0.0);
+      dvdt[d].assign(n, 0.0);
+      w.dxdt[d] = dxdt[d].data();
+      w.dvdt[d] = dvdt[d].data();
+    }
+    w.rho = P.rho;
+    w.p.assign(n, 0.0);
+    w.c.assign(n, 1.0);
+    w.e.assign(n, 1.0);
+    if (w.hs.size() != n) w.hs.assign(n, h);
+    drho.assign(n, 0.0);
+    de.assign(n, 0.0);
+    dh.assign(n, 0.0);
+    w.drhodt = drho.data();
+    w.dedt = de.data();
+    w.dhdt = dh.data();
+    PairList all;
+    all.offset.assign(1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i) all.j.push_back(static_cast<std::uint32_t>(j));
+      all.offset.push_back(static_cast<std::uint32_t>(all.j.size()));
+    }
+    pass->apply(all, w);
+  }
+};
+
+// Periodic 1D line of n particles at spacing dx with density rho (m = rho dx).
+// (Fixtures are filled in place: the workspace points into them.)
+void periodic_line(Fixture<1>& f, int n, double dx, double rho) {
+  f.domain.lo = {0.0};
+  f.domain.hi = {n * dx};
+  f.domain.periodic = {true};
+  for (int i = 0; i < n; ++i) f.P.add(Kind::Fluid, {(i + 0.5) * dx}, {0.0}, rho * dx, rho);
+  f.finish(1.3 * dx);
+}
+
+// Random 2D cloud (open domain) with random velocities, densities, pressures, energies.
+void random_cloud(Fixture<2>& f, unsigned seed, bool variable_h) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  f.domain.lo = {-1.0, -1.0};
+  f.domain.hi = {2.0, 2.0};
+  f.domain.periodic = {false, false};
+  const double dx = 0.1;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i)
+      f.P.add(Kind::Fluid, {(i + 0.3 * U(gen)) * dx, (j + 0.3 * U(gen)) * dx}, {U(gen) - 0.5, U(gen) - 0.5},
+              0.5 + U(gen), 0.5 + U(gen));
+  if (variable_h) {
+    f.w.hs.resize(f.P.size());
+    for (auto& hh : f.w.hs) hh = 0.13 * (0.8 + 0.4 * U(gen));
+  }
+  f.finish(0.13, variable_h);
+  for (std::size_t i = 0; i < f.P.size(); ++i) {
+    f.w.p[i] = 0.5 + U(gen);
+    f.w.c[i] = 1.0 + U(gen);
+  }
+}
+
+double momentum_rate(const Fixture<2>& f, int d) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < f.P.size(); ++i) s += f.P.mass[i] * f.dvdt[d][i];
+  return s;
+}
+// d/dt sum m (e + v^2/2)
+double energy_rate(const Fixture<2>& f) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < f.P.size(); ++i)
+    s += f.P.mass[i] * (f.de[i] + f.w.v[0][i] * f.dvdt[0][i] + f.w.v[1][i] * f.dvdt[1][i]);
+  return s;
+}
+double abs_force(const Fixture<2>& f) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < f.P.size(); ++i) s += f.P.mass[i] * (std::abs(f.dvdt[0][i]) + std::abs(f.dvdt[1][i]));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("state layout holds only the configured blocks, in order", "[state]") {
+  StateLayout<2> L;
+  L.n = 10;
+  CHECK(L.size() == 40);
+  CHECK(L.field_names() == std::vector<std::string>{"position", "velocity"});
+  L.has_density = L.has_energy = L.has_smoothing_length = true;
+  CHECK(L.size() == 70);
+  CHECK(L.density() == 40);
+  CHECK(L.energy() == 50);
+  CHECK(L.smoothing_length() == 60);
+  CHECK(L.field_names() == std::vector<std::string>{"position", "velocity", "density", "energy", "smoothing_length"});
+  L.has_density = false;
+  CHECK(L.energy() == 40);
+  CHECK(L.smoothing_length() == 50);
+  CHECK(L.field_names() == std::vector<std::string>{"position", "velocity", "energy", "smoothing_length"});
+}
+
+TEST_CASE("continuity density: zero for uniform motion, -rho div v for a linear field, sign", "[physics]") {
+  Fixture<1> f;
+  periodic_line(f, 40, 0.1, 2.0);
+  for (auto& v : f.w.v[0]) v = 3.0;
+  ContinuityDensity<1>{}.apply(f.w);
+  for (double r : f.drho) CHECK(r == Approx(0.0).margin(1e-12));
+
+  // Open line, u = a x: interior particles see drho/dt = -rho a (compression for a < 0 raises rho).
+  Fixture<1> g;
+  g.domain.lo = {-10.0};
+  g.domain.hi = {10.0};
+  g.domain.periodic = {false};
+  for (int i = 0; i < 41; ++i) g.P.add(Kind::Fluid, {(i - 20) * 0.1}, {0.0}, 2.0 * 0.1, 2.0);
+  g.finish(0.13);
+  const double a = -0.7;
+  for (std::size_t i = 0; i < g.P.size(); ++i) g.w.v[0][i] = a * g.w.x[0][i];
+  ContinuityDensity<1>{}.apply(g.w);
+  CHECK(g.drho[20] > 0.0);
+  CHECK(g.drho[20] == Approx(-2.0 * a).epsilon(5e-2));  // lattice quadrature error of the kernel moment ~2 %
+}
+
+TEST_CASE("pressure gradients 116 and 117: zero for uniform p, right sign, momentum conserved", "[physics]") {
+  for (int form = 0; form < 2; ++form) {
+    Fixture<1> f;
+  periodic_line(f, 40, 0.1, 1.0);
+    for (auto& p : f.w.p) p = 5.0;
+    std::unique_ptr<Term<1>> t;
+    if (form == 0) t = std::make_unique<PressureGradient116<1>>();
+    else t = std::make_unique<PressureGradient117<1>>();
+    t->apply(f.w);
+    for (double a : f.dvdt[0]) CHECK(a == Approx(0.0).margin(1e-10));
+
+    // p = p0 - k x on an open line: interior acceleration -(1/rho) dp/dx = +k.
+    Fixture<1> g;
+    g.domain.lo = {-10.0};
+    g.domain.hi = {10.0};
+    g.domain.periodic = {false};
+    for (int i = 0; i < 41; ++i) g.P.add(Kind::Fluid, {(i - 20) * 0.1}, {0.0}, 0.1, 1.0);
+    g.finish(0.13);
+    for (std::size_t i = 0; i < g.P.size(); ++i) g.w.p[i] = 10.0 - 2.0 * g.w.x[0][i];
+    t->apply(g.w);
+    CHECK(g.dvdt[0][20] == Approx(2.0).epsilon(5e-2));  // lattice quadrature error of the kernel moment ~2 %
+  }
+  for (bool vh : {false, true}) {
+    Fixture<2> c1;
+  random_cloud(c1, 7, vh);
+    PressureGradient116<2>{}.apply(c1.w);
+    CHECK(momentum_rate(c1, 0) == Approx(0.0).margin(1e-10 * abs_force(c1)));
+    CHECK(momentum_rate(c1, 1) == Approx(0.0).margin(1e-10 * abs_force(c1)));
+    Fixture<2> c2;
+  random_cloud(c2, 8, vh);
+    PressureGradient117<2>{}.apply(c2.w);
+    CHECK(momentum_rate(c2, 0) == Approx(0.0).margin(1e-10 * abs_force(c2)));
+    CHECK(momentum_rate(c2, 1) == Approx(0.0).margin(1e-10 * abs_force(c2)));
+  }
+}
+
+TEST_CASE("energy equations 2.66/2.65 conserve total energy with their momentum forms", "[physics]") {
+  for (bool vh : {false, true}) {
+    Fixture<2> f;
+  random_cloud(f, 11, vh);
+    PressureGradient117<2>{}.apply(f.w);
+    EnergyEquation<2, EnergyForm::symmetric_117>{}.apply(f.w);
+    CHECK(energy_rate(f) == Approx(0.0).margin(1e-10 * abs_force(f)));
+    Fixture<2> g;
+  random_cloud(g, 12, vh);
+    PressureGradient116<2>{}.apply(g.w);
+    EnergyEquation<2, EnergyForm::symmetric_116>{}.apply(g.w);
+    CHECK(energy_rate(g) == Approx(0.0).margin(1e-10 * abs_force(g)));
+    // Mismatched forms do not conserve: the test can fail.
+    Fixture<2> m;
+  random_cloud(m, 13, vh);
+    PressureGradient116<2>{}.apply(m.w);
+    EnergyEquation<2, EnergyForm::symmetric_117>{}.apply(m.w);
+    CHECK(std::abs(energy_rate(m)) > 1e-6 * abs_force(m));
+  }
+}
+
+TEST_CASE("artificial viscosity: momentum and energy conserved, heats, only approaching pairs", "[physics]") {
+  Fixture<2> f;
+  random_cloud(f, 21, true);
+  ArtificialViscosity<2, true>(1.0, 1.0, 0.1).apply(f.w);
+  CHECK(abs_force(f) > 0.0);
+  CHECK(momentum_rate(f, 0) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  CHECK(momentum_rate(f, 1) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  CHECK(energy_rate(f) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  double heat = 0.0;
+  for (std::size_t i = 0; i < f.P.size(); ++i) heat += f.P.mass[i] * f.de[i];
+  CHECK(heat > 0.0);
+
+  // Two particles approaching: decelerated (a of the left one < 0); receding: untouched.
+  for (double s : {1.0, -1.0}) {
+    Fixture<1> g;
+    g.domain.lo = {-1.0};
+    g.domain.hi = {1.0};
+    g.domain.periodic = {false};
+    g.P.add(Kind::Fluid, {-0.05}, {s}, 1.0, 1.0);
+    g.P.add(Kind::Fluid, {0.05}, {-s}, 1.0, 1.0);
+    g.finish(0.1);
+    ArtificialViscosity<1, false>(1.0, 1.0, 0.1).apply(g.w);
+    if (s > 0) {
+      CHECK(g.dvdt[0][0] < 0.0);
+      CHECK(g.dvdt[0][1] == Approx(-g.dvdt[0][0]));
+    } else {
+      CHECK(g.dvdt[0][0] == 0.0);
+    }
+  }
+}
+
+TEST_CASE("ideal gas EOS: p = (gamma-1) rho e and c = sqrt(gamma p / rho)", "[physics]") {
+  Fixture<1> f;
+  periodic_line(f, 8, 0.1, 0.25);
+  for (std::size_t i = 0; i < 8; ++i) f.w.e[i] = 1.0 + i;
+  IdealGasEos<1>(1.4).apply(f.w);
+  for (std::size_t i = 0; i < 8; ++i) {
+    CHECK(f.w.p[i] == Approx(0.4 * 0.25 * (1.0 + i)));
+    CHECK(f.w.c[i] == Approx(std::sqrt(1.4 * f.w.p[i] / 0.25)));
+  }
+}
+
+TEST_CASE("normalised summation density: exact on a uniform lattice, smaller edge deficit", "[physics]") {
+  Fixture<1> f;
+  periodic_line(f, 40, 0.1, 1.0);
+  SummationDensity<1>{}.apply(f.w);
+  const double plain = f.w.rho[5];
+  NormalisedSummationDensity<1>{}.apply(f.w);
+  CHECK(f.w.rho[5] == Approx(plain).epsilon(1e-12));
+
+  Fixture<1> g;  // open line: the end particle misses half its neighbours
+  g.domain.lo = {-10.0};
+  g.domain.hi = {10.0};
+  g.domain.periodic = {false};
+  for (int i = 0; i < 30; ++i) g.P.add(Kind::Fluid, {i * 0.1}, {0.0}, 0.1, 1.0);
+  g.finish(0.13);
+  SummationDensity<1>{}.apply(g.w);
+  const double edge_plain = g.w.rho[0], mid_plain = g.w.rho[15];
+  NormalisedSummationDensity<1>{}.apply(g.w);
+  // With the first-pass densities in the denominator the edge deficit shrinks (measured: 0.245 -> 0.183)
+  // but does not vanish; it would only with the true rho_j there.
+  CHECK(std::abs(g.w.rho[0] - mid_plain) < 0.8 * std::abs(edge_plain - mid_plain));
+  CHECK(g.w.rho[15] == Approx(mid_plain).epsilon(1e-3));
+}
+
+TEST_CASE("smoothing length rate: dh/dt = -(h / (D rho)) drho/dt", "[physics]") {
+  Fixture<2> f;
+  random_cloud(f, 3, true);
+  for (std::size_t i = 0; i < f.P.size(); ++i) f.drho[i] = 0.1 * i - 2.0;
+  SmoothingLengthRate<2>{}.apply(f.w);
+  for (std::size_t i = 0; i < f.P.size(); ++i) CHECK(f.dh[i] == Approx(-f.w.hs[i] / (2.0 * f.w.rho[i]) * f.drho[i]));
+}
+
+TEST_CASE("variable-h kernel pass: equals the constant pass for equal h, symmetric W_ij", "[kernel]") {
+  Fixture<2> a;
+  random_cloud(a, 5, false);
+  Fixture<2> b;
+  random_cloud(b, 5, false);
+  b.w.hs.assign(b.P.size(), 0.13);
+  b.finish(0.13, true);
+  REQUIRE(a.w.pairs.j == b.w.pairs.j);
+  for (std::size_t k = 0; k < a.w.pairs.pairs(); ++k) {
+    CHECK(b.w.W[k] == Approx(a.w.W[k]).epsilon(1e-13));
+    CHECK(b.w.F[k] == Approx(a.w.F[k]).epsilon(1e-13));
+  }
+  Fixture<2> c;
+  random_cloud(c, 6, true);  // distinct h_i: W_ij == W_ji
+  const auto& P = c.w.pairs;
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < P.rows(); ++i)
+    for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+      const std::uint32_t j = P.j[k];
+      for (std::uint32_t q = P.offset[j]; q < P.offset[j + 1]; ++q)
+        if (P.j[q] == i) {
+          CHECK(c.w.W[q] == Approx(c.w.W[k]).epsilon(1e-14));
+          CHECK(c.w.F[q] == Approx(c.w.F[k]).epsilon(1e-14));
+          ++checked;
+        }
+    }
+  CHECK(checked > 100);
+}
