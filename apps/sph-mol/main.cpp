@@ -32,6 +32,11 @@ int run(const std::string& config_path, const std::string& output, const std::ve
               << s["rhs_evals"] << ", neighbour rebuilds " << s["neighbor_rebuilds"] << ", wall time "
               << s["wall_seconds"].get<double>() << " s\n  final errors " << s["final_errors"].dump()
               << "\n  results in " << dir << "/summary.json\n";
+    if (s["status"] == "blown_up") {
+      std::cerr << "sph-mol: run " << s["blow_up"]["message"].get<std::string>() << "; last good state (t = "
+                << s["blow_up"]["last_good_t"].get<double>() << " s) in " << dir << "/last_good_state.csv\n";
+      return 3;  // distinct from config errors (2) and failures (1)
+    }
   } catch (const std::exception& e) {
     std::cerr << "sph-mol: run failed: " << e.what() << '\n';
     return 1;

@@ -8,6 +8,9 @@
 
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/case_registry.hpp"
+#include "sphmol/run/conservation.hpp"
+#include "sphmol/run/health_check.hpp"
+#include "sphmol/run/last_good_state.hpp"
 #include "sphmol/run/observers.hpp"
 #include "sphmol/time/integrator.hpp"
 
@@ -29,16 +32,34 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   auto integrator = make_integrator(config.time);
   auto observers = make_observers<D>(config);
   integrator->initialize(*sys, 0.0, y.data());
+  HealthCheck<D> health(*sys, y.data(), 0.0);
+  integrator->set_step_hook([&health](double t, const double* yy, double h) { health(t, yy, h); });
+  ConservationLog<D> conservation;
+  conservation.record(*sys, y.data(), 0.0);
 
   nlohmann::json errors = nlohmann::json::array();
-  for (double t_out : config.output.times) {
-    integrator->advance(t_out);
-    nlohmann::json m = c.measure(*sys, y.data(), t_out, out);
-    for (auto& o : observers) o->at_output(*sys, y.data(), t_out, out);
-    if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
-    errors.push_back(std::move(m));
+  nlohmann::json blow_up;
+  try {
+    for (double t_out : config.output.times) {
+      integrator->advance(t_out);
+      nlohmann::json m = c.measure(*sys, y.data(), t_out, out);
+      for (auto& o : observers) o->at_output(*sys, y.data(), t_out, out);
+      if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
+      errors.push_back(std::move(m));
+      conservation.record(*sys, y.data(), t_out);
+    }
+    for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
+    if (opt.final_state) *opt.final_state = y;
+  } catch (const BlowUp& b) {
+    // End cleanly: report the cause and keep the last state that passed the checks.
+    blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()}, {"last_good_t", health.last_good_time()}};
+    if (b.particle >= 0) blow_up["particle"] = b.particle;
+    if (out.enabled) {
+      write_last_good_state<D>(*sys, health.last_good_state().data(), out.path("last_good_state.csv"));
+      blow_up["state_file"] = "last_good_state.csv";
+    }
+    if (opt.log) *opt.log << "sph-mol: " << b.what() << '\n';
   }
-  for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const IntegratorStats st = integrator->stats();
   const auto& P = sys->particles();
@@ -47,6 +68,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["case"] = config.case_name;
   j["dimension"] = D;
   j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
+  j["status"] = blow_up.is_null() ? "completed" : "blown_up";
+  if (!blow_up.is_null()) j["blow_up"] = blow_up;
   j["integrator"] = integrator->describe();
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
@@ -59,6 +82,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["state_fields"] = sys->layout().field_names();
   j["errors"] = errors;
   j["final_errors"] = c.final_errors(errors);
+  j["primary_error"] = c.primary_error();
+  j["conservation"] = conservation.to_json(*sys);
   j["reference"] = c.reference();
   j["discretization"] = {{"kernel", std::string(sys->kernel_name())},
                          {"smoothing_length", sys->smoothing_length()},

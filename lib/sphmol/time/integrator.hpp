@@ -1,6 +1,7 @@
 #pragma once
 // An ODE integrator advancing a state vector it does not own (the N_Vector / leapfrog view wraps
 // the caller's storage) to requested output times.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -26,6 +27,19 @@ class Integrator {
   // Advance y to exactly tout (> current time).
   virtual void advance(double tout) = 0;
   virtual IntegratorStats stats() const = 0;
+
+  // Called after every accepted step with the new time, state and the step just taken; it may
+  // throw to end the run (run/health_check.hpp: blow-up detection).
+  using StepHook = std::function<void(double t, const double* y, double h)>;
+  void set_step_hook(StepHook hook) { hook_ = std::move(hook); }
+
+ protected:
+  void after_step(double t, const double* y, double h) const {
+    if (hook_) hook_(t, y, h);
+  }
+
+ private:
+  StepHook hook_;
 };
 
 std::unique_ptr<Integrator> make_integrator(const TimeConfig& time);
