@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           libsundials-dev libeigen3-dev libcgal-dev libgsl-dev catch2
-          libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev)
+          libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev
+          gnuplot-nox)  # gnuplot-nox: PNG charts of sph-mol compare/converge/stability
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
