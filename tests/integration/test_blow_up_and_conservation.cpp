@@ -21,6 +21,7 @@ TEST_CASE("an unstable run ends cleanly as blown_up with exit code 3", "[integra
   // Leapfrog with a fixed step 40x the viscous stability limit (0.125 h^2/nu ~ 5e-4 s at 20 across).
   const std::string out = "reports/blow_up";
   std::filesystem::remove_all(out);
+  std::filesystem::create_directories("reports");  // the stderr redirection below needs it
   const std::string cmd = std::string(SPHMOL_BINARY) + " --config " + couette + " --output " + out +
                           " --set discretization.particles_across=20 --set time.integrator=leapfrog --set time.dt=2e-2"
                           " --set time.t_end=5 --set output.times=[5] 2>" + out + ".log";
