@@ -44,4 +44,5 @@ TEST_CASE("stability classification", "[studies]") {
   CHECK(classify_run(summary({0.1, -0.05, 0.03, -0.02}), 0.01).sign_changes == 3);
   CHECK(classify_run(summary({0.1, -0.005, 0.003, 0.02}), 0.01).label == "stable");  // small wiggles ignored
   CHECK(classify_run(summary({}, "blown_up"), 0.01).label == "blown_up");
+  CHECK(classify_run(summary({0.1, -3.0, 40.0, -200.0}), 0.01).label == "blown_up");  // unbounded growth
 }

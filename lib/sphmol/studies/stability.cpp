@@ -12,6 +12,8 @@
 
 namespace sphmol {
 
+constexpr double kDivergedSigned = 1.0;
+
 StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold) {
   StabilityClass c;
   if (summary.value("status", "completed") == "blown_up") {
@@ -28,7 +30,10 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
     if (last_sign != 0 && sign != last_sign) ++c.sign_changes;
     last_sign = sign;
   }
-  c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
+  // An error larger than the velocity scale itself is unbounded growth (a numerical instability
+  // that has not yet thrown a particle out), not the bounded physical oscillation.
+  if (c.max_abs_signed > kDivergedSigned) c.label = "blown_up";
+  else c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
   return c;
 }
 

@@ -8,6 +8,8 @@
 //                 / v0; channel cases) sampled at kSamples equally spaced times changes sign at least
 //                 twice while |e_signed| > osc_threshold: the velocity swings about the reference, the
 //                 symmetric oscillation about the channel centre of seed 000 §9 / seed 002 §5;
+//                 A run whose max |e_signed| exceeds 1 (error larger than v0: unbounded growth that
+//                 has not yet thrown a particle out) is counted as blown_up too;
 //   stable      - otherwise.
 // Cases without e_signed are classified stable / blown_up only. Writes stability.csv, stability.json,
 // stability.png (map: sound speed vs step, one point style per class).
