@@ -75,7 +75,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   nlohmann::json levels = nlohmann::json::array();
   nlohmann::json series = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "refine,integrator,level," << (time ? "dt" : "particles_across") << ",error,observed_order,expected_order,wall_seconds\n";
+  csv << "refine,integrator,level," << (time ? "dt" : "dx") << ",error,observed_order,expected_order,wall_seconds\n";
   Chart chart{std::string("convergence in ") + (time ? "time" : "space") + ": " + base.case_name,
               time ? "dt [s]" : "particle spacing dx [m]", time ? "rel. rms velocity error vs reference run" : "error vs analytic", true,
               true, {}};
