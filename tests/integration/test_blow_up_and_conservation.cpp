@@ -38,7 +38,7 @@ TEST_CASE("an unstable run ends cleanly as blown_up with exit code 3", "[integra
   CHECK(std::filesystem::exists(out + "/last_good_state.csv"));
 }
 
-TEST_CASE("conservation: Couette y-momentum stays ~0; a stable run reports status completed", "[integration][conservation]") {
+TEST_CASE("conservation: Couette y-momentum stays near 0 and a stable run reports status completed", "[integration][conservation]") {
   // x-momentum is not conserved (the moving plate drives the flow); y-momentum has no source on
   // average (the wall pressure forces on both sides balance), so its drift must stay tiny compared
   // with the x-momentum scale M v0.
