@@ -18,7 +18,7 @@
 namespace {
 
 // Exit codes: 0 done, 1 run failed, 2 bad input (config, command line, checkpoint; nothing is
-// written), 128 + signal when interrupted (130 SIGINT, 143 SIGTERM; checkpoint + summary written).
+// written), 3 blown up (last good state written), 128 + signal when interrupted (130 SIGINT, 143 SIGTERM; checkpoint + summary written).
 int run(const std::string& config_path, const std::string& output, const std::vector<std::string>& overrides,
         const std::string& restart = {}, bool quiet = false) {
   sphmol::Config config;
@@ -45,6 +45,11 @@ int run(const std::string& config_path, const std::string& output, const std::ve
       return code;
     }
     const std::string dir = output.empty() ? config.output.directory : output;
+    if (s["status"] == "blown_up") {
+      std::cerr << "sph-mol: run " << s["blow_up"]["message"].get<std::string>() << "; last good state (t = "
+                << s["blow_up"]["last_good_t"].get<double>() << " s) in " << dir << "/last_good_state.csv\n";
+      return 3;  // distinct from config errors (2) and failures (1)
+    }
     std::cout << "case " << s["case"].get<std::string>() << ": " << s["particles"]["fluid"] << " fluid + "
               << s["particles"]["wall"] << " wall particles, integrator " << s["integrator"]["name"].get<std::string>()
               << "\n  steps " << s["steps"] << ", rejected " << s["rejected_steps"] << ", RHS evaluations "

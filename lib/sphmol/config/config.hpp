@@ -104,7 +104,7 @@ struct CflConfig {
 
 struct TimeConfig {
   double t_end = 0.0;                               // required, > 0
-  std::string integrator = "arkode_erk";            // arkode_erk | leapfrog
+  std::string integrator = "arkode_erk";            // arkode_erk | leapfrog | leapfrog_kdk | cvode_adams
   std::string table = "ARKODE_DORMAND_PRINCE_7_4_5";  // any SUNDIALS explicit table name
   double rtol = 1e-6;                               // > 0
   double atol = 1e-12;                              // > 0 (absolute, on every state component)

@@ -370,7 +370,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     t.t_end = time.required(time.real("t_end"), "t_end", "end time in s, > 0");
     check(time, "t_end", t.t_end > 0, t.t_end, "> 0 s");
     if (const auto v = time.string("integrator"))
-      t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog"});
+      t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog", "leapfrog_kdk", "cvode_adams"});
     if (const auto v = time.string("table")) {
       if (!is_erk_table_name(*v)) {
         const std::string near = closest_match(*v, erk_table_names());
@@ -394,6 +394,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     check(cfl, "viscous", t.cfl.viscous > 0, t.cfl.viscous, "> 0");
     if (const auto v = time.real("dt")) {
       check(time, "dt", *v > 0, *v, "> 0 s");
+      if (t.integrator == "cvode_adams")
+        time.fail("dt", "cvode_adams is adaptive only (rtol/atol, step bounded by the CFL limit); remove time.dt");
       t.dt = *v;
     }
     if (const auto v = time.integer("max_steps")) {

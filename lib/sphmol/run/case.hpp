@@ -44,6 +44,8 @@ class Case {
     last.erase("t");
     return last;
   }
+  // The final_errors key that studies (compare, converge, stability) use as "the error".
+  virtual std::string primary_error() const { return "e_rms"; }
   // Anything else the case adds to the summary (reference parameters, wave positions, ...).
   virtual void annotate(nlohmann::json& summary) const {}
   // Plots made after the run (run/plots.hpp): gnuplot scripts, each writing one PNG in the output

@@ -8,6 +8,9 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include "sphmol/run/conservation.hpp"
+#include "sphmol/run/health_check.hpp"
+#include "sphmol/run/last_good_state.hpp"
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
@@ -58,6 +61,11 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     wall_before = restart->wall_seconds;
   }
   integrator->initialize(*sys, t, y.data());
+  // Blow-up detection after every accepted step (run/health_check.hpp), and conservation diagnostics.
+  HealthCheck<D> health(*sys, y.data(), t);
+  integrator->set_step_hook([&health](double tt, const double* yy, double hh) { health(tt, yy, hh); });
+  ConservationLog<D> conservation;
+  conservation.record(*sys, y.data(), t);
   if (restart) {
     integrator->restore_state(restart->integrator_state);
     for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
@@ -104,6 +112,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (opt.handle_signals) guard.emplace();
   ProgressLine progress(opt.progress, t_first, config.time.t_end);
   int signal = 0;
+  nlohmann::json blow_up;
+  try {
   while (next_out < times.size()) {
     const double stop = std::min(times[next_out], next_cp);
     while (t < stop && !(signal = pending_signal())) {
@@ -122,6 +132,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       progress.clear();
       if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
       errors.push_back(std::move(m));
+      conservation.record(*sys, y.data(), t);
       ++next_out;
     }
     if (t >= next_cp) {
@@ -130,12 +141,25 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     }
     if (signal) break;
   }
+  } catch (const BlowUp& b) {
+    // End cleanly: report the cause and keep the last state that passed the checks.
+    progress.clear();
+    blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()}, {"last_good_t", health.last_good_time()}};
+    if (b.particle >= 0) blow_up["particle"] = b.particle;
+    if (out.enabled) {
+      std::filesystem::create_directories(out.directory);
+      write_last_good_state<D>(*sys, health.last_good_state().data(), out.path("last_good_state.csv"));
+      blow_up["state_file"] = "last_good_state.csv";
+    }
+    if (opt.log) *opt.log << "sph-mol: " << b.what() << '\n';
+  }
   progress.clear();
   if (signal) {
     checkpoint();
     if (opt.log) *opt.log << "interrupted by signal " << signal << " at t = " << t << " s; checkpoint written\n";
-  } else {
+  } else if (blow_up.is_null()) {
     for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
+    if (opt.final_state) *opt.final_state = y;
   }
   const double wall = wall_now();
   const IntegratorStats st = integrator->stats();
@@ -145,6 +169,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["case"] = config.case_name;
   j["dimension"] = D;
   j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
+
   j["integrator"] = integrator->describe();
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
@@ -157,6 +182,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["state_fields"] = sys->layout().field_names();
   j["errors"] = errors;
   j["final_errors"] = c.final_errors(errors);
+  j["primary_error"] = c.primary_error();
+  j["conservation"] = conservation.to_json(*sys);
   j["reference"] = c.reference();
   j["discretization"] = {{"kernel", std::string(sys->kernel_name())},
                          {"smoothing_length", sys->smoothing_length()},
@@ -165,13 +192,14 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"verlet_pairs", sys->pair_list().pairs().pairs()}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
-  j["status"] = signal ? "interrupted" : "completed";
+  j["status"] = signal ? "interrupted" : blow_up.is_null() ? "completed" : "blown_up";
+  if (!blow_up.is_null()) j["blow_up"] = blow_up;
   if (signal) {
     j["signal"] = signal;
     j["t_reached"] = t;
   }
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
-  if (!signal && config.output.plots && out.enabled) {
+  if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
     const PlotResult plots = make_plots(c.plots(out), out);
     j["plots"] = plots.written;
     for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet

@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "sphmol/config/config.hpp"
 
@@ -14,6 +15,7 @@ struct RunOptions {
   std::string output_dir;    // empty: config.output.directory
   bool write_files = true;
   std::ostream* log = nullptr;  // one line per output time; null = silent
+  std::vector<double>* final_state = nullptr;  // if set: receives the state y at t_end (studies)
   std::ostream* progress = nullptr;  // live progress line (a terminal's stderr); null = none
   std::string restart_from;     // a checkpoint-<t> directory to continue from (run/checkpoint.hpp)
   bool handle_signals = false;  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted"

@@ -30,7 +30,12 @@ nlohmann::json ChannelCase::measure(const SphSystem<2>& sys, const double* y, do
     name << "profile_t" << std::setprecision(6) << t << ".csv";
     write_file_atomically(out.path(name.str()), s.str());
   }
-  return {{"t", t}, {"e_rms", e.e_rms}, {"e_max", e.e_max}};
+  // Signed mean profile error / v0: its sign changes over time reveal the oscillation about the
+  // reference (seed 000 §9, seed 002 §5) that the stability study classifies.
+  double signed_sum = 0.0;
+  for (const auto& p : e.profile) signed_sum += p.u_sph - p.u_exact;
+  const double e_signed = e.profile.empty() ? 0.0 : signed_sum / (static_cast<double>(e.profile.size()) * ref_.v0);
+  return {{"t", t}, {"e_rms", e.e_rms}, {"e_max", e.e_max}, {"e_signed", e_signed}};
 }
 
 void ChannelCase::annotate(nlohmann::json& summary) const {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/time/blow_up.hpp"
+
 namespace sphmol {
 
 namespace {
@@ -83,12 +85,21 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
 
 void ArkodeErk::advance(double tout) {
   check(ERKStepSetStopTime(mem_, tout), "SetStopTime");
+  // One step at a time, so the step hook (blow-up detection) sees every accepted step.
   double t = t_;
-  const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_NORMAL);
-  if (flag < 0)
-    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
-                             ERKStepGetReturnFlagName(flag));
-  t_ = t;
+  while (t < tout) {
+    const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
+    if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL)
+      throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ERKStepGetReturnFlagName(flag));
+    if (flag < 0)
+      throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
+                               ERKStepGetReturnFlagName(flag));
+    double h = 0.0;
+    ERKStepGetLastStep(mem_, &h);
+    after_step(t, N_VGetArrayPointer(y_), h);
+    if (flag == ARK_TSTOP_RETURN) break;
+  }
+  t_ = tout;
 }
 
 double ArkodeErk::step_toward(double tout) {
@@ -97,10 +108,15 @@ double ArkodeErk::step_toward(double tout) {
   double t = t_;
   // One internal step; the stop time keeps it from passing tout (same steps as advance()).
   const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
+  if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL)
+    throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ERKStepGetReturnFlagName(flag));
   if (flag < 0)
     throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
                              ERKStepGetReturnFlagName(flag));
   t_ = (flag == ARK_TSTOP_RETURN) ? tout : t;
+  double h = 0.0;
+  ERKStepGetLastStep(mem_, &h);
+  after_step(t_, N_VGetArrayPointer(y_), h);
   return t_;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // An ODE integrator advancing a state vector it does not own (the N_Vector / leapfrog view wraps
 // the caller's storage) to requested output times.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,6 +28,11 @@ class Integrator {
   virtual void advance(double tout) = 0;
   virtual IntegratorStats stats() const = 0;
 
+  // Called after every accepted step with the new time, state and the step just taken; it may
+  // throw to end the run (run/health_check.hpp: blow-up detection).
+  using StepHook = std::function<void(double t, const double* y, double h)>;
+  void set_step_hook(StepHook hook) { hook_ = std::move(hook); }
+
   // One step toward tout, never past it (the last one lands on it); returns the new time.
   // advance(tout) takes the same steps; the run loop steps one at a time so it can show progress
   // and react to a signal between steps. The default (one advance) suits integrators without it.
@@ -39,6 +45,14 @@ class Integrator {
   // saved) restarts the integrator fresh from (t, y): correct, but not step-for-step identical.
   virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
   virtual void restore_state(const nlohmann::json& state) {}
+
+ protected:
+  void after_step(double t, const double* y, double h) const {
+    if (hook_) hook_(t, y, h);
+  }
+
+ private:
+  StepHook hook_;
 };
 
 std::unique_ptr<Integrator> make_integrator(const TimeConfig& time);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/time/blow_up.hpp"
+
 namespace sphmol {
 
 nlohmann::json Leapfrog::describe() const {
@@ -58,7 +60,7 @@ double Leapfrog::step_toward(double tout) {
   if (t_ >= tout) return t_;
   double dt = opt_.fixed_step ? *opt_.fixed_step : cfl_step_;
   if (!(dt > 0.0) || !std::isfinite(dt))
-    throw std::runtime_error("leapfrog: step size collapsed to " + std::to_string(dt) + " at t = " + std::to_string(t_));
+    throw BlowUp(t_, -1, "step-size collapse: the CFL step is " + std::to_string(dt));
   // Land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
   const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
   if (last) dt = tout - t_;
@@ -66,6 +68,7 @@ double Leapfrog::step_toward(double tout) {
     throw std::runtime_error("leapfrog: time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " + std::to_string(t_));
   step(dt);
   if (last) t_ = tout;
+  after_step(t_, y_, dt);
   return t_;
 }
 

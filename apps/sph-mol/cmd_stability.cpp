@@ -1,0 +1,55 @@
+// sph-mol stability --config FILE [--output DIR] [--sound-speed-factors LIST] [--step-factors LIST]
+// Stability map: see lib/sphmol/studies/stability.hpp.
+#include <iostream>
+
+#include "sphmol/studies/stability.hpp"
+#include "study_common.hpp"
+#include "subcommand.hpp"
+
+namespace {
+
+struct {
+  std::string config, output = "out/stability";
+  std::vector<double> c_factors, step_factors;
+  double threshold = 0.01;
+  int samples = 20;
+  std::vector<std::string> overrides;
+} opt;
+
+int run() {
+  auto config = sphmol::app::load_study_config(opt.config, opt.overrides, "stability");
+  if (!config) return 2;
+  try {
+    sphmol::StabilityOptions o;
+    if (!opt.c_factors.empty()) o.sound_speed_factors = opt.c_factors;
+    if (!opt.step_factors.empty()) o.step_factors = opt.step_factors;
+    o.osc_threshold = opt.threshold;
+    o.samples = opt.samples;
+    o.output_dir = opt.output;
+    o.log = &std::cerr;
+    sphmol::run_stability(*config, o);
+    std::cout << "stability: results in " << opt.output << "/stability.csv, stability.json, stability.png\n";
+  } catch (const std::exception& e) {
+    std::cerr << "sph-mol stability: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
+    "stability", "Stability map over sound speed and step: stable / oscillating / blown up (CSV, JSON, PNG)",
+    [](CLI::App& sub) {
+      sub.add_option("--config", opt.config, "case configuration (YAML)")->required()->check(CLI::ExistingFile);
+      sub.add_option("--output", opt.output, "output directory (default out/stability)");
+      sub.add_option("--sound-speed-factors", opt.c_factors, "factors on fluid.eos.sound_speed (default 0.25 0.5 1 2)")
+          ->delimiter(',');
+      sub.add_option("--step-factors", opt.step_factors,
+                     "factors on time.dt (fixed step) or on the time.cfl coefficients (default 0.5 1 2 4)")
+          ->delimiter(',');
+      sub.add_option("--osc-threshold", opt.threshold, "|e_signed| above which a sign counts (default 0.01)");
+      sub.add_option("--samples", opt.samples, "equally spaced sample times (default 20)")->check(CLI::Range(3, 1000));
+      sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
+    },
+    run}};
+
+}  // namespace

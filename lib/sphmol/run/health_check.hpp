@@ -1,0 +1,63 @@
+#pragma once
+// Blow-up detection after every accepted step: NaN/Inf in the state, a fluid particle outside the
+// domain in a non-periodic direction, density <= 0 in the latest RHS evaluation, or the CFL step
+// collapsing below kCollapse times its initial value. Throws BlowUp naming the time, the particle
+// and the cause; keeps a copy of the last state that passed, for the run to write.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/time/blow_up.hpp"
+
+namespace sphmol {
+
+template <int D>
+class HealthCheck {
+ public:
+  static constexpr double kCollapse = 1e-6;
+
+  HealthCheck(const SphSystem<D>& sys, const double* y0, double t0)
+      : sys_(sys), last_good_(y0, y0 + sys.size()), last_good_t_(t0), initial_cfl_(sys.stable_step()) {}
+
+  void operator()(double t, const double* y, double /*h*/) {
+    const auto& L = sys_.layout();
+    const auto& dom = sys_.domain();
+    const std::size_t n = L.n;
+    for (int d = 0; d < D; ++d) {
+      const double* x = y + L.position(d);
+      const double* v = y + L.velocity(d);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
+          throw BlowUp(t, static_cast<long>(i), std::string("NaN/Inf in the ") + (std::isfinite(x[i]) ? "velocity" : "position") +
+                                                    " (component " + std::to_string(d) + ")");
+        if (!dom.periodic[d] && (x[i] < dom.lo[d] || x[i] > dom.hi[d]))
+          throw BlowUp(t, static_cast<long>(i), "particle left the domain in direction " + std::to_string(d) + " (x = " +
+                                                    std::to_string(x[i]) + ", domain [" + std::to_string(dom.lo[d]) + ", " +
+                                                    std::to_string(dom.hi[d]) + "])");
+      }
+    }
+    for (std::size_t k = L.velocities_end(); k < L.size(); ++k)
+      if (!std::isfinite(y[k])) throw BlowUp(t, static_cast<long>((k - L.velocities_end()) % n), "NaN/Inf in a state field");
+    const auto& rho = sys_.density();
+    for (std::size_t i = 0; i < n && i < rho.size(); ++i)
+      if (!(rho[i] > 0.0)) throw BlowUp(t, static_cast<long>(i), "density <= 0 (rho = " + std::to_string(rho[i]) + ")");
+    const double cfl = sys_.stable_step();
+    if (std::isfinite(initial_cfl_) && !(cfl >= kCollapse * initial_cfl_))
+      throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial_cfl_) + " s to " +
+                              std::to_string(cfl) + " s");
+    last_good_.assign(y, y + L.size());
+    last_good_t_ = t;
+  }
+
+  const std::vector<double>& last_good_state() const { return last_good_; }
+  double last_good_time() const { return last_good_t_; }
+
+ private:
+  const SphSystem<D>& sys_;
+  std::vector<double> last_good_;
+  double last_good_t_;
+  double initial_cfl_;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,30 @@
+#pragma once
+// Integrator comparison (sph-mol compare): the case is run with each integrator over a sweep of its
+// accuracy setting, and error vs cost is tabulated (comparison.csv), charted (comparison.png, log-log
+// error vs wall time, one line per integrator) and summarised (comparison.json: the fastest run whose
+// error is below each target).
+//   Sweeps: arkode_erk, cvode_adams: rtol in {1e-3, 1e-4, 1e-5, 1e-6, 1e-7} (atol from the config);
+//   leapfrog, leapfrog_kdk: with time.dt in the config, dt x {1, 1/2, 1/4, 1/8}; otherwise the CFL step
+//   with all time.cfl coefficients scaled by {1, 1/2, 1/4, 1/8}.
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/studies/integrator_spec.hpp"
+
+namespace sphmol {
+
+struct CompareOptions {
+  std::vector<IntegratorSpec> integrators;
+  std::string output_dir;
+  std::vector<double> rtols{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  std::vector<double> step_factors{1.0, 0.5, 0.25, 0.125};
+  std::vector<double> targets{1e-2, 1e-3};
+  std::ostream* log = nullptr;
+};
+
+nlohmann::json run_compare(const Config& base, const CompareOptions& opt);
+
+}  // namespace sphmol

@@ -1,0 +1,161 @@
+#include "sphmol/studies/converge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "sphmol/io/atomic_file.hpp"
+#include "sphmol/studies/gnuplot_chart.hpp"
+#include "sphmol/studies/study_run.hpp"
+
+namespace sphmol {
+
+namespace {
+constexpr const char* kReferenceTable = "ARKODE_VERNER_8_5_6";
+constexpr int kReferenceRefinement = 8;
+
+// rms over the velocity blocks of (y - yref), relative to max |v_ref|. The velocity blocks follow
+// the D position blocks of n fluid particles: y = [x_0..x_{D-1} | v_0..v_{D-1} | ...] (core/state_layout.hpp).
+double velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n) {
+  if (y.size() != yref.size() || y.size() < 2 * dimension * n || n == 0) return std::numeric_limits<double>::infinity();
+  const std::size_t vb = dimension * n, ve = 2 * dimension * n;
+  double sum = 0.0, vmax = 0.0;
+  for (std::size_t k = vb; k < ve; ++k) {
+    const double d = y[k] - yref[k];
+    sum += d * d;
+    vmax = std::max(vmax, std::abs(yref[k]));
+  }
+  const double rms = std::sqrt(sum / static_cast<double>(ve - vb));
+  return vmax > 0 ? rms / vmax : rms;
+}
+}  // namespace
+
+std::vector<IntegratorSpec> default_time_integrators() {
+  return parse_integrator_list(
+      "leapfrog,leapfrog_kdk,arkode_erk:ARKODE_HEUN_EULER_2_1_2,arkode_erk:ARKODE_BOGACKI_SHAMPINE_4_2_3,"
+      "arkode_erk:ARKODE_ZONNEVELD_5_3_4",
+      "ARKODE_DORMAND_PRINCE_7_4_5");
+}
+
+std::vector<double> pairwise_orders(const std::vector<double>& e) {
+  std::vector<double> p;
+  for (std::size_t k = 0; k + 1 < e.size(); ++k) p.push_back(std::log(e[k] / e[k + 1]) / std::log(2.0));
+  return p;
+}
+
+double least_squares_order(const std::vector<double>& e) {
+  // log e = a + p log(step), step_k = step_0 / 2^k  ->  slope against x_k = -k log 2.
+  const std::size_t n = e.size();
+  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = -static_cast<double>(k) * std::log(2.0), y = std::log(e[k]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
+  if (opt.levels < 2) throw std::invalid_argument("--levels must be at least 2");
+  if (opt.refine != "time" && opt.refine != "space") throw std::invalid_argument("--refine must be time or space");
+  std::filesystem::create_directories(opt.output_dir);
+  const bool time = opt.refine == "time";
+  Config cfg = base;
+  cfg.output.times = {cfg.time.t_end};  // only t_end: the fixed steps land on it exactly
+  cfg.output.profiles = false;
+
+  std::vector<IntegratorSpec> specs = opt.integrators;
+  if (specs.empty())
+    specs = time ? default_time_integrators() : parse_integrator_list("arkode_erk:ARKODE_DORMAND_PRINCE_7_4_5", "");
+
+  nlohmann::json levels = nlohmann::json::array();
+  nlohmann::json series = nlohmann::json::array();
+  std::ostringstream csv;
+  csv << "refine,integrator,level," << (time ? "dt" : "dx") << ",error,observed_order,expected_order,wall_seconds\n";
+  Chart chart{std::string("convergence in ") + (time ? "time" : "space") + ": " + base.case_name,
+              time ? "dt [s]" : "particle spacing dx [m]", time ? "rel. rms velocity error vs reference run" : "error vs analytic", true,
+              true, {}};
+
+  std::vector<double> ref_state;
+  double dt0 = 0.0;
+  if (time) {
+    if (opt.dt0) dt0 = *opt.dt0;
+    else if (base.time.dt) dt0 = *base.time.dt;
+    else throw std::invalid_argument("converge --refine time needs a base step: time.dt in the config or --dt0");
+    const double dt_fine = dt0 / std::pow(2.0, opt.levels - 1);
+    for (int k = 0; k < opt.levels; ++k) levels.push_back({{"level", k}, {"dt", dt0 / std::pow(2.0, k)}});
+    Config rc = cfg;
+    rc.time.integrator = "arkode_erk";
+    rc.time.table = kReferenceTable;
+    rc.time.dt = dt_fine / kReferenceRefinement;
+    const StudyRun ref = run_study_case(rc);
+    if (ref.blown_up) throw std::runtime_error("converge: the reference run blew up: " + ref.summary["blow_up"].dump());
+    ref_state = ref.final_state;
+    if (opt.log)
+      *opt.log << "converge: reference " << kReferenceTable << " dt = " << fmt(*rc.time.dt) << " (" << fmt(ref.summary["wall_seconds"].get<double>())
+               << " s)\n";
+  } else {
+    const int n0 = base.discretization.particles_across;
+    if (n0 <= 0) throw std::invalid_argument("converge --refine space needs discretization.particles_across");
+    for (int k = 0; k < opt.levels; ++k) levels.push_back({{"level", k}, {"particles_across", n0 << k}});
+  }
+
+  for (const auto& spec : specs) {
+    if (time && spec.adaptive() && spec.integrator == "cvode_adams")
+      throw std::invalid_argument("converge --refine time: cvode_adams has no fixed step");
+    std::vector<double> errors, dts, walls;
+    for (int k = 0; k < opt.levels; ++k) {
+      Config c = cfg;
+      spec.apply(c.time);
+      double xk;
+      if (time) {
+        c.time.dt = dt0 / std::pow(2.0, k);
+        xk = *c.time.dt;
+      } else {
+        c.discretization.particles_across = base.discretization.particles_across << k;
+        c.discretization.spacing = 0.0;
+        if (opt.integrators.empty()) {
+          c.time.rtol = 1e-9;
+          c.time.dt.reset();
+        }
+        xk = base.geometry.channel_height > 0 ? base.geometry.channel_height / c.discretization.particles_across
+                                               : 1.0 / c.discretization.particles_across;
+      }
+      const StudyRun r = run_study_case(c);
+      const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))
+                            : r.error;
+      errors.push_back(e);
+      dts.push_back(xk);
+      walls.push_back(r.summary["wall_seconds"].get<double>());
+      if (opt.log) *opt.log << "converge: " << spec.label << " level " << k << " (" << fmt(xk) << "): error " << fmt(e) << '\n';
+    }
+    const auto orders = pairwise_orders(errors);
+    const double slope = least_squares_order(errors);
+    const int expected = time ? spec.order() : 0;
+    for (int k = 0; k < opt.levels; ++k)
+      csv << opt.refine << ',' << spec.label << ',' << k << ',' << fmt(dts[k]) << ',' << fmt(errors[k]) << ','
+          << (k > 0 ? fmt(orders[k - 1]) : std::string()) << ',' << (expected > 0 ? std::to_string(expected) : std::string()) << ','
+          << fmt(walls[k]) << '\n';
+    nlohmann::json s{{"integrator", spec.label}, {"errors", errors}, {"steps", dts}, {"observed_orders", orders},
+                     {"observed_order", slope}, {"wall_seconds", walls}};
+    s["expected_order"] = expected > 0 ? nlohmann::json(expected) : nlohmann::json(nullptr);
+    series.push_back(s);
+    chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
+    if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
+  }
+  write_file_atomically(opt.output_dir + "/convergence.csv", csv.str());
+  const std::string problem = draw_chart(chart, opt.output_dir + "/convergence.png");
+  nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
+  j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +
+                                  std::string(kReferenceTable) + " at dt_finest/" + std::to_string(kReferenceRefinement)
+                            : "the case's primary final error (" + std::string("vs analytic reference") + ")";
+  if (!problem.empty()) j["chart_problem"] = problem;
+  write_file_atomically(opt.output_dir + "/convergence.json", j.dump(2) + "\n");
+  return j;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,42 @@
+#pragma once
+// Convergence studies (sph-mol converge).
+//  time:  spatial discretisation fixed; fixed step dt0 / 2^k, k = 0..levels-1 (dt0 = time.dt of the
+//         config, or --dt0). Error of level k = rms over all fluid velocity components at t_end of
+//         (v_k - v_ref) divided by max |v_ref|, where v_ref is a reference run of the same
+//         discretisation with ARKODE Verner 8_5_6 (order 6) at step dt_finest / 8. Expected order:
+//         2 for the leapfrogs, the table's q for ERK.
+//  space: particles_across n0 * 2^k with h/dx fixed (discretization.smoothing_ratio); time error made
+//         negligible (ARKODE Dormand-Prince 5 adaptive, rtol 1e-9 unless --integrators says otherwise);
+//         error = the case's primary final error against its analytic reference.
+// Observed order per level pair: log(e_k / e_{k+1}) / log 2; overall: least-squares slope of
+// log e vs log(dt) (or log dx). Writes convergence.csv, convergence.json and convergence.png.
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/studies/integrator_spec.hpp"
+
+namespace sphmol {
+
+struct ConvergeOptions {
+  std::string refine = "time";  // time | space
+  int levels = 4;
+  std::vector<IntegratorSpec> integrators;  // empty: defaults (see default_time_integrators)
+  std::optional<double> dt0;
+  std::string output_dir;
+  std::ostream* log = nullptr;
+};
+
+// leapfrog, leapfrog_kdk, Heun-Euler (2), Bogacki-Shampine (3), Zonneveld (4).
+std::vector<IntegratorSpec> default_time_integrators();
+
+// Observed orders between consecutive levels (refinement ratio 2) and the least-squares slope.
+std::vector<double> pairwise_orders(const std::vector<double>& errors);
+double least_squares_order(const std::vector<double>& errors);
+
+nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt);
+
+}  // namespace sphmol

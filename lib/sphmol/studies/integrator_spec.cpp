@@ -1,0 +1,58 @@
+#include "sphmol/studies/integrator_spec.hpp"
+
+#include <arkode/arkode_butcher_erk.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "sphmol/config/erk_tables.hpp"
+
+namespace sphmol {
+
+int erk_table_order(const std::string& table) {
+  if (!is_erk_table_name(table)) throw std::invalid_argument("'" + table + "' is not a SUNDIALS ERK table");
+  ARKodeButcherTable B = ARKodeButcherTable_LoadERKByName(table.c_str());
+  if (!B) throw std::invalid_argument("cannot load ERK table '" + table + "'");
+  const int q = B->q;
+  ARKodeButcherTable_Free(B);
+  return q;
+}
+
+int IntegratorSpec::order() const {
+  if (integrator == "leapfrog" || integrator == "leapfrog_kdk") return 2;
+  if (integrator == "arkode_erk") return erk_table_order(table);
+  return 0;
+}
+
+void IntegratorSpec::apply(TimeConfig& time) const {
+  time.integrator = integrator;
+  if (integrator == "arkode_erk") time.table = table;
+}
+
+std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const std::string& default_table) {
+  std::vector<IntegratorSpec> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item.empty()) continue;
+    IntegratorSpec s;
+    s.label = item;
+    const auto colon = item.find(':');
+    s.integrator = item.substr(0, colon);
+    if (s.integrator == "arkode_erk") {
+      s.table = colon == std::string::npos ? default_table : item.substr(colon + 1);
+      if (!is_erk_table_name(s.table))
+        throw std::invalid_argument("integrator '" + item + "': '" + s.table + "' is not a SUNDIALS ERK table");
+    } else if (colon != std::string::npos) {
+      throw std::invalid_argument("integrator '" + item + "': only arkode_erk takes a table (arkode_erk:TABLE)");
+    } else if (s.integrator != "leapfrog" && s.integrator != "leapfrog_kdk" && s.integrator != "cvode_adams") {
+      throw std::invalid_argument("unknown integrator '" + item +
+                                  "' (known: leapfrog, leapfrog_kdk, arkode_erk, arkode_erk:TABLE, cvode_adams)");
+    }
+    out.push_back(s);
+  }
+  if (out.empty()) throw std::invalid_argument("empty integrator list");
+  return out;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,95 @@
+#include "sphmol/studies/stability.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "sphmol/io/atomic_file.hpp"
+#include "sphmol/studies/gnuplot_chart.hpp"
+#include "sphmol/studies/study_run.hpp"
+
+namespace sphmol {
+
+constexpr double kDivergedSigned = 1.0;
+
+StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold) {
+  StabilityClass c;
+  if (summary.value("status", "completed") == "blown_up") {
+    c.label = "blown_up";
+    return c;
+  }
+  int last_sign = 0;
+  for (const auto& m : summary["errors"]) {
+    if (!m.contains("e_signed")) continue;
+    const double s = m["e_signed"].get<double>();
+    c.max_abs_signed = std::max(c.max_abs_signed, std::abs(s));
+    if (std::abs(s) <= osc_threshold) continue;  // within the threshold: no sign
+    const int sign = s > 0 ? 1 : -1;
+    if (last_sign != 0 && sign != last_sign) ++c.sign_changes;
+    last_sign = sign;
+  }
+  // An error larger than the velocity scale itself is unbounded growth (a numerical instability
+  // that has not yet thrown a particle out), not the bounded physical oscillation.
+  if (c.max_abs_signed > kDivergedSigned) c.label = "blown_up";
+  else c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
+  return c;
+}
+
+nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
+  std::filesystem::create_directories(opt.output_dir);
+  const bool fixed = base.time.dt.has_value();
+  std::ostringstream csv;
+  csv << "sound_speed," << (fixed ? "dt" : "cfl_factor") << ",class,status,sign_changes,max_abs_e_signed,error,steps,wall_seconds,cause\n";
+  std::map<std::string, ChartSeries> by_class;
+  for (const char* k : {"stable", "oscillating", "blown_up"}) by_class[k] = ChartSeries{k, {}, {}};
+  nlohmann::json runs = nlohmann::json::array();
+  for (double fc : opt.sound_speed_factors)
+    for (double fs : opt.step_factors) {
+      Config c = base;
+      c.fluid.eos.sound_speed *= fc;
+      double step_value = fs;
+      if (fixed) {
+        c.time.dt = *base.time.dt * fs;
+        step_value = *c.time.dt;
+      } else {
+        c.time.cfl.acoustic *= fs;
+        c.time.cfl.force *= fs;
+        c.time.cfl.viscous *= fs;
+      }
+      c.output.times.clear();
+      for (int k = 1; k <= opt.samples; ++k) c.output.times.push_back(c.time.t_end * k / opt.samples);
+      c.output.profiles = false;
+      const StudyRun r = run_study_case(c);
+      const StabilityClass cl = classify_run(r.summary, opt.osc_threshold);
+      const std::string cause = r.blown_up ? r.summary["blow_up"]["cause"].get<std::string>() : std::string();
+      std::string cause_csv = cause;
+      for (char& ch : cause_csv)
+        if (ch == ',' || ch == '"') ch = ';';
+      csv << fmt(c.fluid.eos.sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
+          << cl.sign_changes << ',' << fmt(cl.max_abs_signed) << ',' << fmt(r.error) << ',' << r.summary["steps"] << ','
+          << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
+      runs.push_back({{"sound_speed", c.fluid.eos.sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
+                      {"sign_changes", cl.sign_changes}, {"max_abs_e_signed", cl.max_abs_signed},
+                      {"error", r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(r.error)}, {"cause", cause}});
+      by_class[cl.label].x.push_back(c.fluid.eos.sound_speed);
+      by_class[cl.label].y.push_back(step_value);
+      if (opt.log)
+        *opt.log << "stability: c = " << fmt(c.fluid.eos.sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
+                 << ": " << cl.label << " (sign changes " << cl.sign_changes << ", max |e_signed| " << fmt(cl.max_abs_signed)
+                 << (cause.empty() ? "" : ", " + cause) << ")\n";
+    }
+  write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
+  Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
+  for (const char* k : {"stable", "oscillating", "blown_up"})
+    if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
+  const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");
+  nlohmann::json j{{"case", base.case_name}, {"step_mode", fixed ? "fixed dt" : "cfl factor"}, {"osc_threshold", opt.osc_threshold},
+                   {"samples", opt.samples}, {"runs", runs}};
+  if (!problem.empty()) j["chart_problem"] = problem;
+  write_file_atomically(opt.output_dir + "/stability.json", j.dump(2) + "\n");
+  return j;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,44 @@
+#pragma once
+// Stability map (sph-mol stability): the case is run over a grid of sound speed (fluid.eos.sound_speed
+// x factor) and step (with time.dt in the config: dt x factor, fixed step; otherwise all time.cfl
+// coefficients x factor) and each run is classified:
+//   blown_up    - the run ended with status "blown_up" (run/health_check.hpp: NaN/Inf, particle out of
+//                 the domain, density <= 0, step collapse);
+//   oscillating - the signed mean profile error e_signed (u_sph - u_exact averaged over the profile,
+//                 / v0; channel cases) sampled at kSamples equally spaced times changes sign at least
+//                 twice while |e_signed| > osc_threshold: the velocity swings about the reference, the
+//                 symmetric oscillation about the channel centre of seed 000 §9 / seed 002 §5;
+//                 A run whose max |e_signed| exceeds 1 (error larger than v0: unbounded growth that
+//                 has not yet thrown a particle out) is counted as blown_up too;
+//   stable      - otherwise.
+// Cases without e_signed are classified stable / blown_up only. Writes stability.csv, stability.json,
+// stability.png (map: sound speed vs step, one point style per class).
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+
+namespace sphmol {
+
+struct StabilityOptions {
+  std::vector<double> sound_speed_factors{0.25, 0.5, 1.0, 2.0};
+  std::vector<double> step_factors{0.5, 1.0, 2.0, 4.0};
+  double osc_threshold = 0.01;
+  int samples = 20;
+  std::string output_dir;
+  std::ostream* log = nullptr;
+};
+
+// The classification of one run from its summary (exposed for tests).
+struct StabilityClass {
+  std::string label;  // stable | oscillating | blown_up
+  int sign_changes = 0;
+  double max_abs_signed = 0.0;
+};
+StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold);
+
+nlohmann::json run_stability(const Config& base, const StabilityOptions& opt);
+
+}  // namespace sphmol

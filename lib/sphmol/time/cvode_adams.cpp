@@ -1,0 +1,98 @@
+#include "sphmol/time/cvode_adams.hpp"
+
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sphmol/time/blow_up.hpp"
+
+namespace sphmol {
+
+namespace {
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed: " + CVodeGetReturnFlagName(flag));
+}
+}  // namespace
+
+CvodeAdams::~CvodeAdams() {
+  if (mem_) CVodeFree(&mem_);
+  if (nls_) SUNNonlinSolFree(nls_);
+  if (y_) N_VDestroy(y_);
+  if (ctx_) SUNContext_Free(&ctx_);
+}
+
+nlohmann::json CvodeAdams::describe() const {
+  return {{"name", name()},
+          {"method", "Adams-Moulton, fixed-point iteration"},
+          {"rtol", opt_.rtol},
+          {"atol", opt_.atol},
+          {"step", "adaptive, max step = CFL step"}};
+}
+
+int CvodeAdams::rhs_callback(double t, N_Vector y, N_Vector ydot, void* self) {
+  auto* me = static_cast<CvodeAdams*>(self);
+  me->sys_->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  return 0;
+}
+
+void CvodeAdams::initialize(OdeSystem& sys, double t0, double* y) {
+  sys_ = &sys;
+  t_ = t0;
+  if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
+  y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+  // One evaluation at t0 primes the CFL limit used for the first step.
+  std::vector<double> f(sys.size());
+  sys.rhs(t0, y, f.data());
+
+  mem_ = CVodeCreate(CV_ADAMS, ctx_);
+  if (!mem_) throw std::runtime_error("CVodeCreate failed");
+  check(CVodeInit(mem_, &CvodeAdams::rhs_callback, t0, y_), "Init");
+  check(CVodeSetUserData(mem_, this), "SetUserData");
+  check(CVodeSStolerances(mem_, opt_.rtol, opt_.atol), "SStolerances");
+  nls_ = SUNNonlinSol_FixedPoint(y_, 0, ctx_);
+  if (!nls_) throw std::runtime_error("SUNNonlinSol_FixedPoint failed");
+  check(CVodeSetNonlinearSolver(mem_, nls_), "SetNonlinearSolver");
+  check(CVodeSetMaxNumSteps(mem_, opt_.max_steps), "SetMaxNumSteps");
+  const double hmax = sys.stable_step();
+  if (std::isfinite(hmax)) {
+    check(CVodeSetMaxStep(mem_, hmax), "SetMaxStep");
+    check(CVodeSetInitStep(mem_, 0.1 * hmax), "SetInitStep");  // Adams starts at order 1
+  }
+}
+
+void CvodeAdams::advance(double tout) {
+  check(CVodeSetStopTime(mem_, tout), "SetStopTime");
+  double t = t_;
+  while (t < tout) {
+    const int flag = CVode(mem_, tout, y_, &t, CV_ONE_STEP);
+    if (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE || flag == CV_RHSFUNC_FAIL)
+      throw BlowUp(t, -1, std::string("step-size collapse: CVODE ") + CVodeGetReturnFlagName(flag));
+    if (flag < 0)
+      throw std::runtime_error("CVODE: integration failed at t = " + std::to_string(t) + ": " + CVodeGetReturnFlagName(flag));
+    double h = 0.0;
+    CVodeGetLastStep(mem_, &h);
+    after_step(t, N_VGetArrayPointer(y_), h);
+    // The CFL limit of the latest evaluation bounds the next step.
+    const double hmax = sys_->stable_step();
+    if (std::isfinite(hmax) && hmax > 0.0) check(CVodeSetMaxStep(mem_, hmax), "SetMaxStep");
+    if (flag == CV_TSTOP_RETURN) break;
+  }
+  t_ = tout;
+}
+
+IntegratorStats CvodeAdams::stats() const {
+  IntegratorStats s;
+  long v = 0, w = 0;
+  CVodeGetNumSteps(mem_, &v);
+  s.steps = v;
+  CVodeGetNumErrTestFails(mem_, &v);
+  CVodeGetNumNonlinSolvConvFails(mem_, &w);
+  s.rejected_steps = v + w;
+  CVodeGetLastStep(mem_, &s.last_step);
+  return s;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,45 @@
+#pragma once
+// SUNDIALS CVODE, Adams-Moulton (orders 1-12, variable step) for the non-stiff SPH system, with
+// the fixed-point (functional) nonlinear iteration of SUNNonlinSol_FixedPoint: no Jacobian.
+// Tolerances rtol/atol. CVODE has no stability callback, so the CFL limit is imposed through
+// CVodeSetMaxStep, updated after every step from the stable step of the latest RHS evaluation.
+// The serial N_Vector wraps the caller's state storage (N_VMake_Serial: no copy).
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_nonlinearsolver.h>
+
+#include "sphmol/time/integrator.hpp"
+
+namespace sphmol {
+
+class CvodeAdams final : public Integrator {
+ public:
+  struct Options {
+    double rtol = 1e-6, atol = 1e-12;
+    long max_steps = 10'000'000;
+  };
+  explicit CvodeAdams(Options o) : opt_(o) {}
+  ~CvodeAdams() override;
+  CvodeAdams(const CvodeAdams&) = delete;
+  CvodeAdams& operator=(const CvodeAdams&) = delete;
+
+  std::string name() const override { return "cvode_adams"; }
+  nlohmann::json describe() const override;
+  void initialize(OdeSystem& sys, double t0, double* y) override;
+  void advance(double tout) override;
+  IntegratorStats stats() const override;
+
+ private:
+  static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);
+
+  Options opt_;
+  OdeSystem* sys_ = nullptr;
+  SUNContext ctx_ = nullptr;
+  N_Vector y_ = nullptr;
+  SUNNonlinearSolver nls_ = nullptr;
+  void* mem_ = nullptr;
+  double t_ = 0.0;
+};
+
+}  // namespace sphmol

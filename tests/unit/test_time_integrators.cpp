@@ -1,0 +1,124 @@
+// The built-in and SUNDIALS integrators on small ODEs with known solutions: order of the leapfrogs,
+// CVODE Adams accuracy, the step hook, and the integrator config rules.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "config_test_base.hpp"
+#include "sphmol/time/arkode_erk.hpp"
+#include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/cvode_adams.hpp"
+#include "sphmol/time/leapfrog.hpp"
+#include "sphmol/time/leapfrog_kdk.hpp"
+
+using namespace sphmol;
+
+namespace {
+// Damped oscillator x'' = -w^2 x - g x' as y = [x | v]: velocity-dependent force, like SPH viscosity.
+struct Oscillator final : OdeSystem {
+  double w = 2.0, g = 0.3;
+  long evals = 0;
+  double cfl = 0.05;
+  std::size_t size() const override { return 2; }
+  void rhs(double, const double* y, double* f) override {
+    ++evals;
+    f[0] = y[1];
+    f[1] = -w * w * y[0] - g * y[1];
+  }
+  double stable_step() const override { return cfl; }
+  std::size_t velocities_begin() const override { return 1; }
+  std::size_t velocities_end() const override { return 2; }
+  long rhs_evaluations() const override { return evals; }
+  // Exact solution for x(0) = 1, v(0) = 0.
+  double exact_x(double t) const {
+    const double wd = std::sqrt(w * w - g * g / 4);
+    return std::exp(-g * t / 2) * (std::cos(wd * t) + g / (2 * wd) * std::sin(wd * t));
+  }
+};
+
+double final_error(Integrator& I, double t_end) {
+  Oscillator sys;
+  std::vector<double> y{1.0, 0.0};
+  I.initialize(sys, 0.0, y.data());
+  I.advance(t_end);
+  return std::abs(y[0] - sys.exact_x(t_end));
+}
+}  // namespace
+
+TEST_CASE("leapfrog (DKD) and leapfrog_kdk are second order with a velocity-dependent force", "[time]") {
+  for (int kdk = 0; kdk < 2; ++kdk) {
+    std::vector<double> e;
+    for (double dt : {0.02, 0.01, 0.005}) {
+      if (kdk) {
+        LeapfrogKdk I({dt, 1'000'000});
+        e.push_back(final_error(I, 2.0));
+      } else {
+        Leapfrog I({dt, 1'000'000});
+        e.push_back(final_error(I, 2.0));
+      }
+    }
+    INFO("kdk = " << kdk << ", errors " << e[0] << " " << e[1] << " " << e[2]);
+    CHECK(std::log2(e[0] / e[1]) > 1.8);
+    CHECK(std::log2(e[1] / e[2]) > 1.8);
+    CHECK(e[2] < 1e-4);
+  }
+}
+
+TEST_CASE("leapfrog_kdk counts one RHS evaluation per step and lands on output times", "[time]") {
+  Oscillator sys;
+  std::vector<double> y{1.0, 0.0};
+  LeapfrogKdk I({0.03, 1'000'000});
+  I.initialize(sys, 0.0, y.data());
+  long hooked = 0;
+  double last_t = 0.0;
+  I.set_step_hook([&](double t, const double*, double) { ++hooked, last_t = t; });
+  I.advance(1.0);
+  CHECK(last_t == 1.0);
+  CHECK(I.stats().steps == 34);  // 33 full steps of 0.03 and one of 0.01
+  CHECK(hooked == 34);
+  CHECK(sys.evals == 1 + 34);
+}
+
+TEST_CASE("cvode_adams meets its tolerance and bounds the step by the CFL limit", "[time]") {
+  for (double rtol : {1e-6, 1e-9}) {
+    Oscillator sys;
+    sys.cfl = 0.01;
+    std::vector<double> y{1.0, 0.0};
+    CvodeAdams I({rtol, rtol * 1e-3, 1'000'000});
+    I.initialize(sys, 0.0, y.data());
+    double hmax = 0.0;
+    I.set_step_hook([&](double, const double*, double h) { hmax = std::max(hmax, h); });
+    I.advance(3.0);
+    INFO("rtol " << rtol << ": error " << std::abs(y[0] - sys.exact_x(3.0)));
+    CHECK(std::abs(y[0] - sys.exact_x(3.0)) < 100 * rtol);
+    CHECK(hmax <= 0.01 * (1 + 1e-12));
+    CHECK(I.stats().steps >= 300);
+  }
+}
+
+TEST_CASE("the step hook can end an ARKODE run with BlowUp", "[time]") {
+  Oscillator sys;
+  std::vector<double> y{1.0, 0.0};
+  ArkodeErk I({"ARKODE_HEUN_EULER_2_1_2", 1e-6, 1e-12, 0.01, 1'000'000});
+  I.initialize(sys, 0.0, y.data());
+  I.set_step_hook([](double t, const double*, double) {
+    if (t > 0.5) throw BlowUp(t, 7, "test");
+  });
+  try {
+    I.advance(1.0);
+    FAIL("no BlowUp");
+  } catch (const BlowUp& b) {
+    CHECK(b.t > 0.5);
+    CHECK(b.t < 0.52);
+    CHECK(b.particle == 7);
+  }
+}
+
+TEST_CASE("config: the new integrators are accepted; cvode_adams rejects a fixed step", "[config]") {
+  using config_test::base;
+  using config_test::error_of;
+  CHECK(load_config_string(base, {"time.integrator=leapfrog_kdk"}).time.integrator == "leapfrog_kdk");
+  CHECK(load_config_string(base, {"time.integrator=cvode_adams"}).time.integrator == "cvode_adams");
+  CHECK_THAT(error_of(base, {"time.integrator=cvode_adams", "time.dt=1e-4"}), Catch::Matchers::Contains("cvode_adams is adaptive only"));
+}
