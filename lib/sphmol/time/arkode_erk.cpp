@@ -84,22 +84,8 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
 }
 
 void ArkodeErk::advance(double tout) {
-  check(ERKStepSetStopTime(mem_, tout), "SetStopTime");
   // One step at a time, so the step hook (blow-up detection) sees every accepted step.
-  double t = t_;
-  while (t < tout) {
-    const int flag = ERKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
-    if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL)
-      throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ERKStepGetReturnFlagName(flag));
-    if (flag < 0)
-      throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
-                               ERKStepGetReturnFlagName(flag));
-    double h = 0.0;
-    ERKStepGetLastStep(mem_, &h);
-    after_step(t, N_VGetArrayPointer(y_), h);
-    if (flag == ARK_TSTOP_RETURN) break;
-  }
-  t_ = tout;
+  while (t_ < tout) step_toward(tout);
 }
 
 double ArkodeErk::step_toward(double tout) {
