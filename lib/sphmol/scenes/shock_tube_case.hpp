@@ -36,6 +36,8 @@ class ShockTubeCase final : public Case<D> {
   std::string reference() const override { return "exact Riemann solution (Toro ch. 4)"; }
   nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
+  // Studies compare integrators on the density error: rho carries every wave (shock, contact, fan).
+  std::string primary_error() const override { return "L1_rho"; }
 
  private:
   std::optional<ExactRiemannSolver> exact_;
