@@ -298,6 +298,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                     "' has none (ghost velocities already carry the wall condition)");
       d.wall_model = "prescribed";
     }
+    if (shock && c.dimension == 1 && d.boundary != "wall_particles")
+      disc.fail("boundary", "the 1D shock tube has no side walls; '" + d.boundary + "' needs dimension 2");
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
@@ -405,7 +407,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
 
   // output
-  MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "plots",
+  MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "vtk_ghosts", "plots",
                                          "checkpoint_every"});
   {
     auto& o = c.output;
@@ -438,6 +440,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
     if (const auto v = out.boolean("vtk")) o.vtk = *v;
     if (const auto v = out.boolean("vtk_walls")) o.vtk_walls = *v;
+    if (const auto v = out.boolean("vtk_ghosts")) {
+      o.vtk_ghosts = *v;
+      if (o.vtk_ghosts && c.discretization.boundary != "ghost")
+        out.fail("vtk_ghosts", "needs discretization.boundary: ghost (boundary '" + c.discretization.boundary +
+                                   "' generates no ghost particles)");
+      if (o.vtk_ghosts && !o.vtk) out.fail("vtk_ghosts", "needs output.vtk: true (it adds ghosts to the VTK files)");
+    }
     if (const auto v = out.boolean("plots")) o.plots = *v;
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
