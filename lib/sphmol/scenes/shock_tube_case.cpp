@@ -210,7 +210,7 @@ std::vector<PlotScript> ShockTubeCase<D>::plots(const OutputSink& out) const {
     << "set output 'shock_tube.png'\n"
     << "set datafile separator ','\n"
     << "set datafile commentschars '#x'\n"  // skips the comment and the 'x,rho,...' header
-    << "set grid\nset key top right\nset xlabel 'x'\n"
+    << "set grid\nset key center right\nset xlabel 'x'\n"
     << "set multiplot layout 2,2 title \"shock tube, t = " << t_last << ": points SPH (mid-line), lines exact\"\n";
   const char* names[] = {"density rho", "velocity u", "pressure p", "internal energy e"};
   for (int k = 0; k < 4; ++k)
