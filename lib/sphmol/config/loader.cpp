@@ -291,7 +291,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     // Combinations that mean nothing are errors, not silently ignored keys.
     if (d.boundary != "wall_particles") {
       if (channel_case || c.case_name == "taylor_green")
-        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity), not '" +
+        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity) and the 2D shock tube, not '" +
                                   c.case_name + "'");
       if (disc.has("wall_model") && d.wall_model == "morris")
         disc.fail("wall_model", "morris extrapolates through wall particles; boundary '" + d.boundary +
@@ -300,6 +300,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (shock && c.dimension == 1 && d.boundary != "wall_particles")
       disc.fail("boundary", "the 1D shock tube has no side walls; '" + d.boundary + "' needs dimension 2");
+    if (shock) d.wall_slip = "free_slip";  // the tube's walls are free-slip (seed 003 §3.2); an inviscid gas
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
