@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/physics/eos_tait.hpp"

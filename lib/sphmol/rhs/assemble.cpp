@@ -3,6 +3,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
