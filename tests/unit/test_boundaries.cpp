@@ -1,9 +1,12 @@
 // Tait EOS (seed 003 eq 2.75), the repulsive boundary force (003 eq 2.76) and the ghost generator
-// (003 §2.2.4, §3.3, Fig 3.4): values, signs, mirror positions/velocities, corner images, counts.
+// (003 §2.2.4, §3.3, Fig 3.4): values, signs, mirror positions/velocities, corner images, counts,
+// the copied energy and h, and the hydrostatic image pressure.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
+#include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/physics/eos_tait.hpp"
@@ -87,6 +90,9 @@ struct Scene {
     }
     w.rho = pt.rho;
     w.p.assign(w.n, 0.0);
+    w.h = 1.0;  // with support 0.1 (make_generator): images within 0.1 of a wall
+    w.hs.assign(w.n, 1.0);
+    w.e.assign(w.n, 0.0);
   }
 };
 }  // namespace
@@ -163,4 +169,55 @@ TEST_CASE("ghost generator: free slip mirrors only the normal component (003 eqs
       CHECK(s.w.v[1][k] == Approx(-0.4));
     }
   }
+}
+
+TEST_CASE("ghost generator: images take the source's energy and h; the band follows the largest h", "[ghost]") {
+  auto gen = make_generator(false);
+  Scene s;
+  const std::size_t base = s.w.n;
+  s.w.e = {2.5, 1.8, 1.0, 1.0, 0.7};
+  s.w.hs = {1.0, 1.2, 1.0, 1.0, 1.0};
+  gen.generate(base, s.pt, s.w);
+  REQUIRE(s.w.e.size() == s.w.n);
+  REQUIRE(s.w.hs.size() == s.w.n);
+  REQUIRE(s.w.c.size() == s.w.n);
+  for (std::size_t g = 0; g < gen.count(); ++g) {
+    CHECK(s.w.e[base + g] == s.w.e[gen.sources()[g]]);
+    CHECK(s.w.hs[base + g] == s.w.hs[gen.sources()[g]]);
+  }
+  // Band = support x max h = 0.1 x 1.2 = 0.12: a particle 0.11 above the bottom wall has an image.
+  s.w.x[1][2] = 0.11;
+  s.w.x[0][2] = 0.5;
+  gen.generate(base, s.pt, s.w);
+  CHECK(std::count(gen.sources().begin(), gen.sources().end(), 2u) == 1);
+  s.w.hs = {1.0, 1.0, 1.0, 1.0, 1.0};  // band 0.1: no longer
+  gen.generate(base, s.pt, s.w);
+  CHECK(std::count(gen.sources().begin(), gen.sources().end(), 2u) == 0);
+}
+
+TEST_CASE("ghost hydrostatic pressure: images below carry p_i + rho_i g 2d, side images p_i", "[ghost]") {
+  auto gen = make_generator(false);
+  Scene s;
+  const std::size_t base = s.w.n;
+  gen.generate(base, s.pt, s.w);
+  const TaitLaw law(20.0, 1000.0, 7.0);
+  GhostStateCopy<2>(&gen).apply(s.w);
+  for (std::size_t i = 0; i < s.w.n; ++i) s.w.p[i] = law.pressure(s.w.rho[i]);  // the EOS pass
+  const std::array<double, 2> g{0.0, -9.81};
+  GhostHydrostaticPressure<2> term(&gen, g, 0.0, [law](double p) { return law.density(p); });
+  term.apply(s.w);
+  for (std::size_t k = 0; k < gen.count(); ++k) {
+    const std::size_t i = gen.sources()[k], gi = base + k;
+    const double dy = s.w.x[1][gi] - s.w.x[1][i];  // -2d below the bottom wall, 0 beside a side wall
+    CHECK(s.w.p[gi] == Approx(s.w.p[i] + s.w.rho[i] * 9.81 * (-dy)));
+    CHECK(law.pressure(s.w.rho[gi]) == Approx(s.w.p[gi]));  // density consistent with the EOS
+    if (gen.masks()[k] == 0b0010) CHECK(s.w.p[gi] == s.w.p[i]);  // right wall: no jump
+    if (i == 1) CHECK(s.w.p[gi] == Approx(s.w.p[1] + s.w.rho[1] * 9.81 * 0.04));
+  }
+  // Ramped gravity: at t = 0 of a ramp the images are plain copies.
+  GhostStateCopy<2>(&gen).apply(s.w);
+  for (std::size_t i = 0; i < s.w.n; ++i) s.w.p[i] = law.pressure(s.w.rho[i]);
+  s.w.t = 0.0;
+  GhostHydrostaticPressure<2>(&gen, g, 1.0, [law](double p) { return law.density(p); }).apply(s.w);
+  for (std::size_t k = 0; k < gen.count(); ++k) CHECK(s.w.p[base + k] == Approx(s.w.p[gen.sources()[k]]));
 }

@@ -11,8 +11,8 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-const std::string shock = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string() +
-                          "/verification/shock_tube.yaml";
+// SPHMOL_SOURCE_DIR, not __FILE__: with CCACHE_BASEDIR the latter is relative to the build directory.
+const std::string shock = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube.yaml";
 
 std::string error_of(const std::vector<std::string>& sets) {
   try {
@@ -60,6 +60,18 @@ TEST_CASE("compressible config: nonsense combinations name both keys", "[config]
   CHECK_THAT(error_of({"discretization.artificial_viscosity.eta=0"}), Contains("artificial_viscosity.eta"));
   CHECK_THAT(error_of({"fluid.density=1"}), Contains("fluid.density") && Contains("shock_tube.left.density"));
   CHECK_THAT(error_of({"geometry.channel_height=1"}), Contains("geometry.channel_height"));
+  {
+    const std::string shock1d = shock.substr(0, shock.size() - 5) + "_1d.yaml";
+    std::string e = "<no error>";
+    try {
+      (void)load_config(shock1d, {"discretization.boundary=ghost"});
+    } catch (const ConfigError& x) {
+      e = x.what();
+    }
+    CHECK_THAT(e, Contains("discretization.boundary: the 1D shock tube has no side walls"));
+  }
+  CHECK(error_of({"discretization.boundary=virtual_repulsive", "discretization.repulsive.strength=1e-3"}) == "<no error>");
+  CHECK(error_of({"discretization.boundary=wall_particles"}) == "<no error>");  // y periodic
   CHECK(error_of({"discretization.smoothing_length=density"}) == "<no error>");  // continuity + 2.67 is fine
   CHECK(error_of({"discretization.smoothing_length=constant", "discretization.neighbor_search=all_pairs"}) == "<no error>");
 }

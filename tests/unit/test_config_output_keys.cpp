@@ -45,3 +45,9 @@ TEST_CASE("output keys: errors name file, line, key and the allowed values", "[c
              Contains("case.yaml:18: output.plot: unknown key"));
   CHECK_THAT(error_of(base, {"output.checkpoint_every=abc"}), Contains("--set output.checkpoint_every=abc"));
 }
+
+TEST_CASE("output keys: vtk_ghosts needs ghost walls and vtk", "[config][output][ghost]") {
+  CHECK_FALSE(load_config_string(base).output.vtk_ghosts);
+  CHECK_THAT(error_of(with("  times: [0.1, 0.2]\n", "  times: [0.1, 0.2]\n  vtk: true\n  vtk_ghosts: true\n")),
+             Contains("output.vtk_ghosts: needs discretization.boundary: ghost"));
+}

@@ -8,6 +8,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/vtk_observer.hpp"
 #include "sphmol/scenes/channel_case.hpp"
+#include "sphmol/scenes/hydrostatic_case.hpp"
 
 using namespace sphmol;
 
@@ -96,4 +97,47 @@ TEST_CASE("vtk: the test's XML reader rejects malformed text", "[vtk][output]") 
   CHECK_THROWS(mini_xml::parse("<a x=\"1\" x=\"2\"/>"));
   CHECK_THROWS(mini_xml::parse("<a>"));
   CHECK(mini_xml::parse("<?xml version=\"1.0\"?>\n<a><b c=\"d\"/>1 2</a>\n")->child("b")->attr.at("c") == "d");
+}
+
+TEST_CASE("vtk: ghost particles are written after the fluid with kind 2 and their generated state", "[vtk][ghost]") {
+  const std::string yaml = R"(case: hydrostatic
+fluid:
+  density: 1000.0
+  kinematic_viscosity: 0.01
+  eos: {type: tait, sound_speed: 29.7, gamma: 7.0, clamp_negative: true}
+  body_force: [0.0, -9.81]
+  body_force_ramp: 1.0
+geometry: {box: [1.0, 0.9]}
+discretization: {particles_across: 10, boundary: ghost}
+time: {t_end: 0.01, integrator: leapfrog, dt: 1.0e-3}
+)";
+  HydrostaticCase c;
+  auto sys = c.build(load_config_string(yaml));
+  std::vector<double> y = sys->initial_state(), ydot(y.size());
+  sys->rhs(0.5, y.data(), ydot.data());
+  const std::size_t nf = sys->particles().n_fluid, nb = sys->base_particles(), ng = sys->generated_particles();
+  REQUIRE(nb == nf);  // ghost walls: no scene wall particles
+  REQUIRE(ng > 0);
+  for (const bool walls : {true, false}) {
+    const auto root = mini_xml::parse(vtp_text<2>(*sys, y.data(), 0.5, walls, true));
+    const auto* piece = root->child("PolyData")->child("Piece");
+    REQUIRE(piece->attr.at("NumberOfPoints") == std::to_string(nf + ng));
+    const auto* pd = piece->child("PointData");
+    const auto kind = mini_xml::numbers(array_named(*pd, "kind"));
+    const auto p = mini_xml::numbers(array_named(*pd, "pressure"));
+    const auto xyz = mini_xml::numbers(*piece->child("Points")->child("DataArray"));
+    for (std::size_t k = 0; k < nf + ng; ++k) {
+      REQUIRE(kind[k] == (k < nf ? 0.0 : 2.0));
+      REQUIRE(p[k] == sys->pressure()[k]);
+      if (k >= nf) {
+        REQUIRE(xyz[3 * k] == sys->positions()[0][k]);
+        REQUIRE(xyz[3 * k + 1] == sys->positions()[1][k]);
+        REQUIRE(xyz[3 * k + 1] < 0.9);  // images lie behind a wall: below y = 0 or beside the tank
+        REQUIRE((xyz[3 * k] < 0.0 || xyz[3 * k] > 1.0 || xyz[3 * k + 1] < 0.0));
+      }
+    }
+  }
+  // Without ghosts: the fluid only (and no read past the scene's particles).
+  const auto root = mini_xml::parse(vtp_text<2>(*sys, y.data(), 0.5, true, false));
+  CHECK(root->child("PolyData")->child("Piece")->attr.at("NumberOfPoints") == std::to_string(nf));
 }

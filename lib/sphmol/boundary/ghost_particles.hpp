@@ -1,10 +1,14 @@
 #pragma once
 // Ghost (mirror) particles for planar, axis-aligned walls, seed 003 §2.2.4 (eqs 2.77-2.78) and §3.3
-// (Fig 3.4). At every RHS evaluation, each fluid particle closer than `width` to a wall gets a mirror
+// (Fig 3.4). At every RHS evaluation, each fluid particle closer than the kernel support
+// (kappa * the largest current h, so variable-h scenes get more images where the gas expands, as in
+// 003 §3.4) to a wall gets a mirror
 // image behind it; a particle near two walls (a corner) gets three images: one per wall and one
-// mirrored through both (Fig 3.4); in 3D near three walls, all seven. Images carry the source's mass,
-// density and pressure (003 §3.3: "m_f = m"; density/pressure copied by GhostStateCopy after the
-// density pass). Velocities, with v_w the wall velocity:
+// mirrored through both (Fig 3.4); in 3D near three walls, all seven. Images carry the source's mass
+// (003 §3.3: "m_f = m"), smoothing length and internal energy (003 §3.5: ghosts "take over" the
+// properties of their source), and its density (GhostStateCopy, after the density pass). Under a body
+// force the pressure is not simply copied (boundary/ghost_hydrostatic_pressure.hpp, after the EOS). Velocities, with
+// v_w the wall velocity:
 //   free slip (003 eqs 2.77-2.78): tangential component kept, normal component mirrored about v_w;
 //   no slip: v_g = 2 v_w - v, so the mean of a pair is v_w on the wall (a linear profile continues
 //   through the wall);
@@ -12,6 +16,7 @@
 //   makes the mean of source and image the mean of the two wall velocities; at a stationary corner
 //   simply -v). At the moving lid's corners of a driven cavity this gives the average of lid and side
 //   wall, i.e. half the lid speed: the corner singularity is smoothed over one image, nothing more.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -36,10 +41,14 @@ using BoxWalls = std::array<std::array<PlanarWall<D>, 2>, D>;
 template <int D>
 class GhostGenerator final : public ParticleGenerator<D> {
  public:
-  GhostGenerator(BoxWalls<D> walls, double width) : walls_(walls), width_(width) {}
+  // support: the kernel support in units of h (images are made within support * max h of a wall).
+  GhostGenerator(BoxWalls<D> walls, double support) : walls_(walls), support_(support) {}
 
   bool generate(std::size_t n_base, Particles<D>& pt, Workspace<D>& w) override {
     n_base_ = n_base;
+    double hmax = w.h;
+    for (std::size_t i = 0; i < w.n_fluid && i < w.hs.size(); ++i) hmax = std::max(hmax, w.hs[i]);
+    const double width = support_ * hmax;
     new_source_.clear();
     new_mask_.clear();
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
@@ -50,7 +59,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
           const auto& wall = walls_[d][s];
           if (!wall.present) continue;
           const double dist = s == 0 ? w.x[d][i] - wall.position : wall.position - w.x[d][i];
-          if (dist < width_) near[nn++] = 1u << (2 * d + s);
+          if (dist < width) near[nn++] = 1u << (2 * d + s);
         }
       // every non-empty combination of the nearby walls, never both walls of one direction
       for (unsigned sub = 1; sub < (1u << nn); ++sub) {
@@ -85,8 +94,17 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
     w.rho.resize(n);
     w.p.resize(n);
+    w.c.resize(n);
+    w.e.resize(n);
+    w.hs.resize(n, w.h);
     for (auto& s : w.strain) s.resize(n);
-    for (std::size_t g = 0; g < source_.size(); ++g) image(w, source_[g], mask_[g], n_base + g);
+    for (std::size_t g = 0; g < source_.size(); ++g) {
+      const std::size_t i = source_[g];
+      image(w, i, mask_[g], n_base + g);
+      w.rho[n_base + g] = w.rho[i];
+      w.e[n_base + g] = w.e[i];
+      w.hs[n_base + g] = w.hs[i];
+    }
     return changed;
   }
   std::size_t count() const override { return source_.size(); }
@@ -123,7 +141,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
   }
 
   BoxWalls<D> walls_;
-  double width_;
+  double support_;
   std::size_t n_base_ = 0;
   std::vector<std::uint32_t> source_, new_source_;
   std::vector<std::uint8_t> mask_, new_mask_;

@@ -120,6 +120,7 @@ struct OutputConfig {
   bool profiles = true;       // write profile CSVs at output times
   bool vtk = false;           // VTK XML PolyData particle files (.vtp) at output times + a .pvd collection
   bool vtk_walls = true;      // include wall particles in the .vtp files
+  bool vtk_ghosts = false;    // include the generated ghost particles (boundary: ghost) in the .vtp files
   bool plots = false;         // PNG plots with gnuplot after the run (run/plots.hpp)
   double checkpoint_every = 0.0;  // simulated time between checkpoints [s]; 0 = none
 };

@@ -291,13 +291,16 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     // Combinations that mean nothing are errors, not silently ignored keys.
     if (d.boundary != "wall_particles") {
       if (channel_case || c.case_name == "taylor_green")
-        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity), not '" +
+        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity) and the 2D shock tube, not '" +
                                   c.case_name + "'");
       if (disc.has("wall_model") && d.wall_model == "morris")
         disc.fail("wall_model", "morris extrapolates through wall particles; boundary '" + d.boundary +
                                     "' has none (ghost velocities already carry the wall condition)");
       d.wall_model = "prescribed";
     }
+    if (shock && c.dimension == 1 && d.boundary != "wall_particles")
+      disc.fail("boundary", "the 1D shock tube has no side walls; '" + d.boundary + "' needs dimension 2");
+    if (shock) d.wall_slip = "free_slip";  // the tube's walls are free-slip (seed 003 §3.2); an inviscid gas
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
@@ -405,7 +408,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
 
   // output
-  MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "plots",
+  MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "vtk_ghosts", "plots",
                                          "checkpoint_every"});
   {
     auto& o = c.output;
@@ -438,6 +441,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
     if (const auto v = out.boolean("vtk")) o.vtk = *v;
     if (const auto v = out.boolean("vtk_walls")) o.vtk_walls = *v;
+    if (const auto v = out.boolean("vtk_ghosts")) {
+      o.vtk_ghosts = *v;
+      if (o.vtk_ghosts && c.discretization.boundary != "ghost")
+        out.fail("vtk_ghosts", "needs discretization.boundary: ghost (boundary '" + c.discretization.boundary +
+                                   "' generates no ghost particles)");
+      if (o.vtk_ghosts && !o.vtk) out.fail("vtk_ghosts", "needs output.vtk: true (it adds ghosts to the VTK files)");
+    }
     if (const auto v = out.boolean("plots")) o.plots = *v;
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");

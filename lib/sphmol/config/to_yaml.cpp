@@ -130,6 +130,7 @@ std::string to_yaml(const Config& c) {
     << "  profiles: " << (o.profiles ? "true" : "false") << "\n"
     << "  vtk: " << (o.vtk ? "true" : "false") << "\n"
     << "  vtk_walls: " << (o.vtk_walls ? "true" : "false") << "\n"
+    << "  vtk_ghosts: " << (o.vtk_ghosts ? "true" : "false") << "\n"
     << "  plots: " << (o.plots ? "true" : "false") << "\n"
     << "  checkpoint_every: " << num(o.checkpoint_every) << "\n";
   return y.str();

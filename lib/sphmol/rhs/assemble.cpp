@@ -3,6 +3,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
@@ -47,8 +48,14 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.boundary == "ghost") {
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
     // Images of every particle within the kernel support of a wall; the set is rebuilt each evaluation.
-    ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support() * h);
+    ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support());
     terms.push_back(std::make_unique<GhostStateCopy<D>>(ghosts.get()));
+  }
+  std::array<double, D> g{};
+  bool any_force = false;
+  for (int d = 0; d < D && d < static_cast<int>(fluid.body_force.size()); ++d) {
+    g[d] = fluid.body_force[d];
+    any_force = any_force || g[d] != 0.0;
   }
   std::function<double(double)> rho_of_p;  // the EOS inverted, for extrapolated wall pressures
   if (fluid.eos.type == "ideal_gas") {
@@ -67,13 +74,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   } else {
     throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
   }
-  if (fluid.eos.background_pressure > 0.0) terms.push_back(std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
-  std::array<double, D> g{};
-  bool any_force = false;
-  for (int d = 0; d < D && d < static_cast<int>(fluid.body_force.size()); ++d) {
-    g[d] = fluid.body_force[d];
-    any_force = any_force || g[d] != 0.0;
+  if (ghosts && any_force) {
+    if (!rho_of_p) throw std::invalid_argument("discretization.boundary: ghost walls under a body force need a barotropic EOS");
+    terms.push_back(std::make_unique<GhostHydrostaticPressure<D>>(ghosts.get(), g, fluid.body_force_ramp, rho_of_p));
   }
+  if (fluid.eos.background_pressure > 0.0) terms.push_back(std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
   if (disc.wall_pressure == "extrapolated") {
     if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
     terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));

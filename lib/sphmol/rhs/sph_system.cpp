@@ -92,11 +92,6 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     for (std::size_t i = nf; i < nb; ++i)
       ws_.x[d][i] = domain_.wrap(d, particles_.x_ref[d][i] + (particles_.stationary[i] ? 0.0 : particles_.v[d][i] * t));
   }
-  // Generated (ghost) particles are appended here, from the fluid state just gathered, so that the
-  // neighbour update and every term see them like ordinary wall particles.
-  if (generator_ && generator_->generate(nb, particles_, ws_)) pairs_->invalidate();
-  const std::size_t n = ws_.n;
-
   // Optional fields: per-scene branches outside every pair loop.
   if (layout_.has_density) std::copy(y + layout_.density(), y + layout_.density() + nf, ws_.rho.begin());
   if (layout_.has_energy) std::copy(y + layout_.energy(), y + layout_.energy() + nf, ws_.e.begin());
@@ -104,6 +99,11 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     std::copy(y + layout_.smoothing_length(), y + layout_.smoothing_length() + nf, ws_.hs.begin());
   if (fields_.smoothing_length == SmoothingLengthMode::density)  // seed 003 eq 2.67
     for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
+  // Generated (ghost) particles are appended here, from the fluid state just gathered (positions,
+  // velocities, density, energy, h), so that the neighbour update and every term see them like
+  // ordinary wall particles.
+  if (generator_ && generator_->generate(nb, particles_, ws_)) pairs_->invalidate();
+  const std::size_t n = ws_.n;
   if (fields_.smoothing_length != SmoothingLengthMode::constant) {
     // Pairs are found with h_ij = (h_i + h_j)/2 <= max h: the list radius follows the largest h.
     const double hmax = *std::max_element(ws_.hs.begin(), ws_.hs.end());

@@ -46,6 +46,11 @@ class SphSystem final : public OdeSystem {
   // Appends a term after the scene's terms (a case's monitor, e.g. particle drift at every evaluation).
   void append_term(std::unique_ptr<Term<D>> t) { terms_.push_back(std::move(t)); }
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
+  // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.
+  std::size_t base_particles() const { return n_base_; }
+  // Positions and velocities of all particles, generated ones included, at the most recent evaluation.
+  const std::array<std::vector<double>, D>& positions() const { return ws_.x; }
+  const std::array<std::vector<double>, D>& velocities() const { return ws_.v; }
 
   const StateLayout<D>& layout() const { return layout_; }
   const Particles<D>& particles() const { return particles_; }

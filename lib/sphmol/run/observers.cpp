@@ -7,7 +7,7 @@ namespace sphmol {
 template <int D>
 std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config) {
   std::vector<std::unique_ptr<OutputObserver<D>>> list;
-  if (config.output.vtk) list.push_back(std::make_unique<VtkObserver<D>>(config.output.vtk_walls));
+  if (config.output.vtk) list.push_back(std::make_unique<VtkObserver<D>>(config.output.vtk_walls, config.output.vtk_ghosts));
   return list;
 }
 

@@ -49,22 +49,34 @@ std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
 }  // namespace
 
 template <int D>
-std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool walls) {
+std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool walls, bool ghosts) {
   const auto& P = sys.particles();
   const auto& L = sys.layout();
   const auto& dom = sys.domain();
-  const std::size_t nf = P.n_fluid, n = walls ? P.size() : nf;
-  const auto position = [&](std::size_t i, int d) {
+  // Written: fluid [0, nf), then walls [nf, nb) if asked, then ghosts [nb, nb + ng) if asked.
+  const std::size_t nf = P.n_fluid, nb = sys.base_particles(), ng = ghosts ? sys.generated_particles() : 0;
+  const std::size_t nw = walls ? nb - nf : 0, n = nf + nw + ng;
+  const auto index = [&](std::size_t k) { return k < nf + nw ? k : nb + (k - nf - nw); };  // row -> particle
+  const auto position = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
-    // Fluid from the state; walls move rigidly, x = x_ref + v t. Wrapped into the periodic box.
+    const std::size_t i = index(k);
+    // Fluid from the state; walls move rigidly, x = x_ref + v t; ghosts as generated. Wrapped into
+    // the periodic box.
+    if (i >= nb) return dom.wrap(d, sys.positions()[d][i]);
     return dom.wrap(d, i < nf ? y[L.position(d) + i] : P.x_ref[d][i] + P.v[d][i] * t);
   };
-  const auto velocity = [&](std::size_t i, int d) {
+  const auto velocity = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
+    const std::size_t i = index(k);
+    if (i >= nb) return sys.velocities()[d][i];
     return i < nf ? y[L.velocity(d) + i] : P.v[d][i];
   };
   const std::vector<double>& rho = sys.density();
   const std::vector<double>& p = sys.pressure();
+  const auto kind = [&](std::size_t k) {
+    const std::size_t i = index(k);
+    return i >= nb ? 2.0 : static_cast<double>(P.kind[i]);
+  };
 
   // Further state blocks after the velocities, one scalar per fluid particle each (walls: 0).
   const std::size_t extra = nf > 0 ? (L.size() - L.velocities_end()) / nf : 0;
@@ -83,9 +95,15 @@ std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool wa
     << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"density\" Vectors=\"velocity\">\n";
   data_array(s, "Float64", "velocity", 3, n, velocity);
-  data_array(s, "Float64", "density", 1, n, [&](std::size_t i, int) { return i < rho.size() ? rho[i] : 0.0; });
-  data_array(s, "Float64", "pressure", 1, n, [&](std::size_t i, int) { return i < p.size() ? p[i] : 0.0; });
-  data_array(s, "UInt8", "kind", 1, n, [&](std::size_t i, int) { return static_cast<double>(P.kind[i]); });
+  data_array(s, "Float64", "density", 1, n, [&](std::size_t k, int) {
+    const std::size_t i = index(k);
+    return i < rho.size() ? rho[i] : 0.0;
+  });
+  data_array(s, "Float64", "pressure", 1, n, [&](std::size_t k, int) {
+    const std::size_t i = index(k);
+    return i < p.size() ? p[i] : 0.0;
+  });
+  data_array(s, "UInt8", "kind", 1, n, [&](std::size_t k, int) { return kind(k); });
   for (std::size_t k = 0; k < extra; ++k)
     data_array(s, "Float64", extra_names[k], 1, n,
                [&](std::size_t i, int) { return i < nf ? y[L.velocities_end() + k * nf + i] : 0.0; });
@@ -104,7 +122,7 @@ void VtkObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double 
   if (!out.enabled) return;
   char name[32];
   std::snprintf(name, sizeof name, "particles_%04zu.vtp", written_.size());
-  write_file_atomically(out.path(name), vtp_text(sys, y, t, walls_));
+  write_file_atomically(out.path(name), vtp_text(sys, y, t, walls_, ghosts_));
   written_.emplace_back(t, name);
   // Rewritten every time, so an interrupted run still leaves a complete collection.
   write_file_atomically(out.path("particles.pvd"), pvd_text(written_));
@@ -132,8 +150,8 @@ void VtkObserver<D>::restore_state(const nlohmann::json& state, const OutputSink
 template class VtkObserver<1>;
 template class VtkObserver<2>;
 template class VtkObserver<3>;
-template std::string vtp_text<1>(const SphSystem<1>&, const double*, double, bool);
-template std::string vtp_text<2>(const SphSystem<2>&, const double*, double, bool);
-template std::string vtp_text<3>(const SphSystem<3>&, const double*, double, bool);
+template std::string vtp_text<1>(const SphSystem<1>&, const double*, double, bool, bool);
+template std::string vtp_text<2>(const SphSystem<2>&, const double*, double, bool, bool);
+template std::string vtp_text<3>(const SphSystem<3>&, const double*, double, bool, bool);
 
 }  // namespace sphmol

@@ -1,6 +1,8 @@
 #include "sphmol/scenes/hydrostatic_case.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -83,6 +85,34 @@ void HydrostaticCase::annotate(nlohmann::json& summary) const {
   summary["settle_time"] = settle_;
   summary["final_errors_note"] = "p_rms, p_max: worst over output times t >= settle_time; max_drift over all RHS evaluations";
   summary["discretization"]["spacing"] = spacing_;
+}
+
+// p against depth at the last output time: every fluid particle, and the line rho0 g depth.
+std::vector<PlotScript> HydrostaticCase::plots(const OutputSink& out) const {
+  double t_last = -1.0;
+  std::string file;
+  for (const auto& entry : std::filesystem::directory_iterator(out.directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("pressure_t", 0) != 0 || entry.path().extension() != ".csv") continue;
+    const double t = std::strtod(name.c_str() + 10, nullptr);
+    if (t > t_last) {
+      t_last = t;
+      file = name;
+    }
+  }
+  if (file.empty()) return {};
+  std::ostringstream s;
+  s << std::setprecision(10) << "# hydrostatic column: p vs depth (sph-mol HydrostaticCase)\n"
+    << "set terminal pngcairo size 800,640 font ',11'\n"
+    << "set output 'pressure_depth.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#y'\n"  // skips the comment and the 'y,p_sph,p_exact' header
+    << "set title \"hydrostatic pressure at t = " << t_last << " s\"\n"
+    << "set xlabel 'depth H - y [m]'\nset ylabel 'p [Pa]'\nset key top left\nset grid\n"
+    << "H = " << depth_ << "\nrho0g = " << rho0_ * g_ << "\nset xrange [0:H]\n"
+    << "plot '" << file << "' using (H - $1):2 with points pt 7 ps 0.4 title 'SPH particles', \\\n"
+    << "  rho0g * x with lines lw 2 title 'rho0 g depth'\n";
+  return {{"pressure_depth.png", s.str()}};
 }
 
 }  // namespace sphmol

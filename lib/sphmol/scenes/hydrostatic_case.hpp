@@ -20,6 +20,7 @@ class HydrostaticCase final : public Case<2> {
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   void annotate(nlohmann::json& summary) const override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   double rho0_ = 0.0, g_ = 0.0, depth_ = 0.0, spacing_ = 0.0, settle_ = 0.0;

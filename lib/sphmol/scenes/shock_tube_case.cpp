@@ -1,7 +1,10 @@
 #include "sphmol/scenes/shock_tube_case.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -62,9 +65,13 @@ std::unique_ptr<SphSystem<D>> ShockTubeCase<D>::build(const Config& config) {
                  EulerState{st.right.density, st.right.velocity, st.right.pressure}, gamma_);
   spacing_ = scene.spacing;
   length_ = config.geometry.tube_length;
+  width_ = config.geometry.tube_width;
   wall_layers_ = scene.wall_layers;
   profiles_ = config.output.profiles;
-  return assemble_system<D>(config, std::move(scene.particles), scene.domain, scene.spacing, nullptr, std::move(scene.energy));
+  const bool ghost = config.discretization.boundary == "ghost";
+  boundary_ = config.discretization.boundary;
+  return assemble_system<D>(config, std::move(scene.particles), scene.domain, scene.spacing, ghost ? &scene.walls : nullptr,
+                            std::move(scene.energy));
 }
 
 template <int D>
@@ -78,15 +85,24 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
   const int nb = static_cast<int>(std::lround(length_ / spacing_));
   std::vector<ShockTubeBin> sum(static_cast<std::size_t>(nb), ShockTubeBin{0, 0, 0, 0, 0});
   std::vector<int> count(static_cast<std::size_t>(nb), 0);
-  double l1[4] = {0, 0, 0, 0};
+  double l1[4] = {0, 0, 0, 0}, l1_mid[4] = {0, 0, 0, 0};
+  std::size_t n_mid = 0;
+  // Mid-line particles: within one spacing of y = W/2 (the two central rows); in 1D all particles.
+  std::vector<std::array<double, 9>> mid;
   for (std::size_t i = 0; i < n; ++i) {
     const double x = y[L.position(0) + i], u = y[L.velocity(0) + i];
     const double p = (gamma_ - 1.0) * rho[i] * e[i];
     const RiemannSample q = exact_->sample(x, t, 0.0);
-    l1[0] += std::abs(rho[i] - q.rho);
-    l1[1] += std::abs(u - q.u);
-    l1[2] += std::abs(p - q.p);
-    l1[3] += std::abs(e[i] - q.e);
+    const double err[4] = {std::abs(rho[i] - q.rho), std::abs(u - q.u), std::abs(p - q.p), std::abs(e[i] - q.e)};
+    const bool on_mid = D == 1 || std::abs(y[L.position(D - 1) + i] - 0.5 * width_) < spacing_;
+    for (int k = 0; k < 4; ++k) {
+      l1[k] += err[k];
+      if (on_mid) l1_mid[k] += err[k];
+    }
+    if (on_mid) {
+      ++n_mid;
+      mid.push_back({x, rho[i], u, p, e[i], q.rho, q.u, q.p, q.e});
+    }
     const int b = static_cast<int>(std::floor((x - x0) / spacing_));
     if (b < 0 || b >= nb) continue;
     auto& s = sum[static_cast<std::size_t>(b)];
@@ -120,6 +136,18 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
     name << "profile_t" << std::setprecision(6) << t << ".csv";
     write_file_atomically(out.path(name.str()), s.str());
   }
+  if (out.enabled && profiles_) {
+    std::sort(mid.begin(), mid.end());
+    std::ostringstream s, name;
+    s << "# shock tube: mid-line particles (|y - W/2| < dx; 1D: all) vs the exact Riemann solution at their x, t = "
+      << t << "\nx,rho,u,p,e,rho_exact,u_exact,p_exact,e_exact\n"
+      << std::setprecision(10);
+    for (const auto& r : mid)
+      for (int k = 0; k < 9; ++k) s << r[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
+    name << "midline_t" << std::setprecision(6) << t << ".csv";
+    write_file_atomically(out.path(name.str()), s.str());
+  }
+  const double inv_mid = n_mid > 0 ? 1.0 / static_cast<double>(n_mid) : 0.0;
   auto pos = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
   const double inv_n = 1.0 / static_cast<double>(n);
   return {{"t", t},
@@ -127,6 +155,10 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
           {"L1_u", l1[1] * inv_n},
           {"L1_p", l1[2] * inv_n},
           {"L1_e", l1[3] * inv_n},
+          {"L1_mid_rho", l1_mid[0] * inv_mid},
+          {"L1_mid_u", l1_mid[1] * inv_mid},
+          {"L1_mid_p", l1_mid[2] * inv_mid},
+          {"L1_mid_e", l1_mid[3] * inv_mid},
           {"waves",
            {{"shock", {{"sph", pos(w.shock)}, {"exact", ex.right_head}}},
             {"contact", {{"sph", pos(w.contact)}, {"exact", ex.contact}}},
@@ -138,15 +170,54 @@ template <int D>
 void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
   summary["discretization"]["spacing"] = spacing_;
   summary["discretization"]["wall_layers"] = wall_layers_;
+  summary["y_walls"] = D == 1 ? "none (1D)"
+                       : boundary_ == "ghost"       ? "ghost (mirror) walls at y = 0 and y = W"
+                       : boundary_ == "virtual_repulsive"
+                           ? "virtual particles with the repulsive force (seed 003 eq 2.76) on y = -dx and y = W + dx"
+                           : "none: y periodic";
   summary["exact"] = {{"p_star", exact_->p_star()},
                       {"u_star", exact_->u_star()},
                       {"rho_star_left", exact_->rho_star_left()},
                       {"rho_star_right", exact_->rho_star_right()},
                       {"gamma", gamma_}};
   summary["error_definitions"] = {
-      {"L1", "mean over all fluid particles of |f_sph - f_exact(x_i, t)| (y periodic: every row is a mid-line)"},
+      {"L1", "mean over all fluid particles of |f_sph - f_exact(x_i, t)| (with y periodic every row is a mid-line; "
+             "with walls the rows next to them are included)"},
+      {"L1_mid", "the same mean over the mid-line particles only, |y - W/2| < dx (1D: all particles)"},
       {"waves", "threshold crossings on the x-binned profile: rarefaction head/tail where u passes 5%/95% of u*, "
                 "shock where u falls through u*/2, contact where rho passes (rho*_L + rho*_R)/2"}};
+}
+
+// Rho, u, p, e on the mid-line at the last output time against the exact solution: 4 panels.
+template <int D>
+std::vector<PlotScript> ShockTubeCase<D>::plots(const OutputSink& out) const {
+  if (!profiles_) return {};
+  double t_last = -1.0;
+  std::string file;
+  for (const auto& entry : std::filesystem::directory_iterator(out.directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("midline_t", 0) != 0 || entry.path().extension() != ".csv") continue;
+    const double t = std::strtod(name.c_str() + 9, nullptr);
+    if (t > t_last) {
+      t_last = t;
+      file = name;
+    }
+  }
+  if (file.empty()) return {};
+  std::ostringstream s;
+  s << "# shock tube: mid-line particles vs the exact Riemann solution (sph-mol ShockTubeCase)\n"
+    << "set terminal pngcairo size 1100,800 font ',10'\n"
+    << "set output 'shock_tube.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#x'\n"  // skips the comment and the 'x,rho,...' header
+    << "set grid\nset key center right\nset xlabel 'x'\n"
+    << "set multiplot layout 2,2 title \"shock tube, t = " << t_last << ": points SPH (mid-line), lines exact\"\n";
+  const char* names[] = {"density rho", "velocity u", "pressure p", "internal energy e"};
+  for (int k = 0; k < 4; ++k)
+    s << "set title '" << names[k] << "'\nplot '" << file << "' using 1:" << k + 2
+      << " with points pt 7 ps 0.4 title 'SPH', '' using 1:" << k + 6 << " with lines lw 1.5 title 'exact'\n";
+  s << "unset multiplot\n";
+  return {{"shock_tube.png", s.str()}};
 }
 
 template class ShockTubeCase<1>;

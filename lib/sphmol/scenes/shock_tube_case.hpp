@@ -1,7 +1,7 @@
 #pragma once
 // The shock tube of seed 003 §3 against the exact Riemann solution (Toro): L1 errors of rho, u, p, e
-// over all fluid particles (the scene is 1D-equivalent: y is periodic, so every row is a mid-line),
-// wave positions detected on the x-binned SPH profile, and a CSV of the binned profile with the exact
+// over all fluid particles and over the mid-line particles (|y - W/2| < dx; with y periodic every row is
+// a mid-line, with walls the rows next to them differ), wave positions detected on the x-binned SPH profile, and a CSV of the binned profile with the exact
 // solution at each output time.
 #include <memory>
 #include <optional>
@@ -36,12 +36,14 @@ class ShockTubeCase final : public Case<D> {
   std::string reference() const override { return "exact Riemann solution (Toro ch. 4)"; }
   nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
   // Studies compare integrators on the density error: rho carries every wave (shock, contact, fan).
   std::string primary_error() const override { return "L1_rho"; }
 
  private:
   std::optional<ExactRiemannSolver> exact_;
-  double gamma_ = 1.4, spacing_ = 0.0, length_ = 0.0;
+  double gamma_ = 1.4, spacing_ = 0.0, length_ = 0.0, width_ = 0.0;
+  std::string boundary_;
   int wall_layers_ = 0;
   bool profiles_ = true;
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "sphmol/kernels/registry.hpp"
 
@@ -41,10 +42,27 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
   s.domain.lo[0] = -0.5 * L - layers * dx;
   s.domain.hi[0] = 0.5 * L + layers * dx;
   s.domain.periodic[0] = false;
+  const std::string& boundary = disc.boundary;
   if constexpr (D == 2) {
-    s.domain.lo[1] = 0.0;
-    s.domain.hi[1] = Wd;
-    s.domain.periodic[1] = true;
+    if (boundary == "wall_particles") {  // y periodic (see shock_tube_scene.hpp)
+      s.domain.lo[1] = 0.0;
+      s.domain.hi[1] = Wd;
+      s.domain.periodic[1] = true;
+    } else {  // walls at y = 0 and y = W; the box also holds the ghosts / virtual particles behind them
+      s.domain.lo[1] = -layers * dx;
+      s.domain.hi[1] = Wd + layers * dx;
+      s.domain.periodic[1] = false;
+    }
+    // Free-slip (or, if configured, no-slip) ghost walls at y = 0 and y = W (seed 003 §3.2: "fixed
+    // free-slip wall, v_n = 0"); the x ends stay closed by wall particles, so x has no ghost walls.
+    for (int side = 0; side < 2; ++side) {
+      auto& w = s.walls[1][side];
+      w.present = boundary == "ghost";
+      w.position = side == 0 ? 0.0 : Wd;
+      w.no_slip = disc.wall_slip != "free_slip";
+    }
+  } else if (boundary != "wall_particles") {
+    throw std::invalid_argument("discretization.boundary: the 1D shock tube has no side walls");
   }
   auto place = [&](Kind kind, double x, double y, const ShockTubeState& q, double sign, double depth) {
     std::array<double, D> pos{}, vel{}, normal{};
@@ -60,12 +78,39 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
       const double x = -0.5 * L + (i + 0.5) * dx;
       place(Kind::Fluid, x, (j + 0.5) * dx, x < 0.0 ? Ls : Rs, 0.0, 0.0);
     }
-  for (int j = 0; j < ny; ++j)
+  // With ghost y walls the end walls continue through the corners (behind y = 0 and y = W): the
+  // ghosts image fluid particles only, and a corner particle without wall neighbours on that diagonal
+  // is pushed out through the corner (seen as a blow-up at t = 0.02 without these layers).
+  const int j_ext = (D == 2 && boundary == "ghost") ? layers : 0;
+  for (int j = -j_ext; j < ny + j_ext; ++j)
     for (int k = 0; k < layers; ++k) {
       const double depth = (k + 0.5) * dx;
       place(Kind::Wall, -0.5 * L - depth, (j + 0.5) * dx, Ls, 1.0, depth);
       place(Kind::Wall, 0.5 * L + depth, (j + 0.5) * dx, Rs, -1.0, depth);
     }
+  if (D == 2 && boundary == "virtual_repulsive") {
+    // Seed 003 §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
+    // rectangle enlarged by dx/2 beyond the domain boundary (which lies dx/2 outside the outermost
+    // rows), so that with r0 = dx no particle is repelled in the initial state. Spacing dx/2 along
+    // the wall. As in the textbook code the thesis builds on (Liu & Liu 2003, whose virtual particles
+    // have m = rho dx^2 and enter every SPH sum), they carry mass, density and energy of their side
+    // and so also push the gas by their pressure; massless ones (the box scenes' choice) leave the
+    // wall rows with half a kernel, and with D = 1e-3 the rows cross at t = 0.011 (density < 0).
+    // They span the tube and its end walls and stay fixed.
+    const double x_lo = -0.5 * L - layers * dx, x_hi = 0.5 * L + layers * dx;
+    const int steps = static_cast<int>(std::lround((x_hi - x_lo) / (0.5 * dx)));
+    for (const double yw : {-dx, Wd + dx})
+      for (int k = 0; k <= steps; ++k) {
+        const double x = x_lo + k * 0.5 * dx;
+        std::array<double, D> pos{}, vel{}, normal{};
+        pos[0] = x;
+        pos[D - 1] = yw;
+        normal[D - 1] = yw < 0.0 ? 1.0 : -1.0;
+        const ShockTubeState& q = x < 0.0 ? Ls : Rs;
+        s.particles.add(Kind::Wall, pos, vel, q.density * vol, q.density, normal, 0.0);
+        s.energy.push_back(q.pressure / (gm1 * q.density));
+      }
+  }
   return s;
 }
 
