@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 namespace {
 int run(const std::string& args, const std::string& log) {
@@ -45,6 +46,27 @@ TEST_CASE("sph-mol compare writes one row per integrator setting and names the f
   CHECK(j["runs"].size() == 4 + 5);  // 4 CFL factors, 5 tolerances
   for (const auto& r : j["runs"]) CHECK(r["status"] == "completed");
   CHECK_FALSE(j["fastest"][0]["fastest"].is_null());
+  CHECK(j["fastest"][0]["integrators"].size() == 2);
+  CHECK(j["fastest"][0]["fastest"]["wall_seconds"].get<double>() > 0.0);
   CHECK(std::filesystem::exists(out + "/comparison.csv"));
   CHECK(std::filesystem::exists(out + "/comparison.png"));
+}
+
+TEST_CASE("sph-mol compare --reference-dt measures the time error: second order for the leapfrog", "[integration][compare]") {
+  // Couette at 20 across to t = 0.01 s; CFL steps x 1, 1/2, 1/4; reference Verner 6 at dt = 1e-5.
+  const std::string out = "reports/compare_couette_reference";
+  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
+                  " --integrators leapfrog --reference-dt 1e-5 --step-factors 1,0.5,0.25 --set discretization.particles_across=20"
+                  " --set time.t_end=0.01 --set output.times=[0.01]",
+              out + ".log") == 0);
+  const auto j = read_json(out + "/comparison.json");
+  REQUIRE(j["runs"].size() == 3);
+  std::vector<double> e;
+  for (const auto& r : j["runs"]) e.push_back(r["error"].get<double>());
+  INFO("time errors " << e[0] << " " << e[1] << " " << e[2]);
+  CHECK(e[0] / e[1] > 3.0);  // ~4 for a second-order scheme
+  CHECK(e[1] / e[2] > 3.0);
+  CHECK(e[2] > 1e-12);
+  CHECK(j["reference_run"]["dt"] == 1e-5);
+  CHECK(j["fastest_exact_error"].size() == 2);  // the exact-error summary is kept alongside
 }

@@ -36,6 +36,12 @@ std::string draw_chart(const Chart& chart, const std::string& png_path) {
   for (std::size_t k = 0; k < chart.series.size(); ++k)
     gp << (k ? ", " : "") << gnuplot_quote(stem + ".dat") << " index " << k << " with " << chart.style << " title "
        << gnuplot_quote(chart.series[k].title);
+  // Constant functions rather than arrows: autoscaling then keeps the lines in view.
+  for (std::size_t k = 0; k < chart.hlines.size(); ++k) {
+    std::ostringstream v;
+    v << std::setprecision(10) << chart.hlines[k];
+    gp << (chart.series.empty() && k == 0 ? "" : ", ") << v.str() << " with lines dt 2 lc rgb 'gray40' title " << gnuplot_quote("error " + v.str());
+  }
   gp << "\n";
   write_file_atomically(stem + ".gp", gp.str());
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)

@@ -16,6 +16,7 @@ struct Chart {
   bool logx = true, logy = true;
   std::vector<ChartSeries> series;
   std::string style = "linespoints";  // gnuplot "with" style; "points pointsize 2" for maps
+  std::vector<double> hlines{};       // dashed horizontal reference lines (e.g. target errors)
 };
 
 // Writes PNG_PATH (and PNG_PATH minus ".png" plus ".dat"/".gp"). Returns an empty string on

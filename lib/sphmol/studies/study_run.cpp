@@ -1,5 +1,7 @@
 #include "sphmol/studies/study_run.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -18,6 +20,20 @@ StudyRun run_study_case(const Config& config) {
   const auto& fe = r.summary["final_errors"];
   r.error = (!r.blown_up && fe.contains(key)) ? fe[key].get<double>() : std::numeric_limits<double>::infinity();
   return r;
+}
+
+double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n) {
+  // The velocity blocks follow the D position blocks: y = [x_0..x_{D-1} | v_0..v_{D-1} | ...].
+  if (y.size() != yref.size() || y.size() < 2 * dimension * n || n == 0) return std::numeric_limits<double>::infinity();
+  const std::size_t vb = dimension * n, ve = 2 * dimension * n;
+  double sum = 0.0, vmax = 0.0;
+  for (std::size_t k = vb; k < ve; ++k) {
+    const double d = y[k] - yref[k];
+    sum += d * d;
+    vmax = std::max(vmax, std::abs(yref[k]));
+  }
+  const double rms = std::sqrt(sum / static_cast<double>(ve - vb));
+  return vmax > 0 ? rms / vmax : rms;
 }
 
 std::string fmt(double x) {

@@ -18,6 +18,14 @@ struct StudyRun {
 
 StudyRun run_study_case(const Config& config);
 
+// The reference integrator of the time studies (converge --refine time, compare --reference-dt):
+// ARKODE Verner 8(5)6, order 6, at a fixed step.
+inline constexpr const char* kReferenceTable = "ARKODE_VERNER_8_5_6";
+
+// rms over all fluid velocity components of (y - yref), relative to max |v_ref| (n fluid particles
+// in `dimension` dimensions, state layout of core/state_layout.hpp); +inf if the sizes differ.
+double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n);
+
 // Formats a number for CSV/labels with 6 significant digits.
 std::string fmt(double x);
 
