@@ -41,12 +41,16 @@ TEST_CASE("stability classification", "[studies]") {
     for (double x : s) j["errors"].push_back({{"e_signed", x}});
     return j;
   };
-  CHECK(classify_run(summary({0.1, 0.05, 0.02, 0.005}), 0.01).label == "stable");
-  CHECK(classify_run(summary({0.1, -0.05, 0.03, -0.02}), 0.01).label == "oscillating");
-  CHECK(classify_run(summary({0.1, -0.05, 0.03, -0.02}), 0.01).sign_changes == 3);
-  CHECK(classify_run(summary({0.1, -0.005, 0.003, 0.02}), 0.01).label == "stable");  // small wiggles ignored
-  CHECK(classify_run(summary({}, "blown_up"), 0.01).label == "blown_up");
-  CHECK(classify_run(summary({0.1, -3.0, 40.0, -200.0}), 0.01).label == "blown_up");  // unbounded growth
+  // Settling onto a biased level (the first tenth, the start-up, is skipped): stable.
+  CHECK(classify_run(summary({0.3, 0.05, 0.02, 0.015, 0.014, 0.014, 0.014, 0.014, 0.014, 0.014}), 0.002).label == "stable");
+  // Swinging about a biased level (0.01 +- 0.005): oscillating, even though e_signed never changes sign.
+  const auto o = classify_run(summary({0.3, 0.015, 0.005, 0.015, 0.005, 0.015, 0.005, 0.015, 0.005, 0.015}), 0.002);
+  CHECK(o.label == "oscillating");
+  CHECK(o.sign_changes == 8);
+  CHECK(o.amplitude == Approx(0.005));
+  CHECK(classify_run(summary({0.3, 0.011, 0.009, 0.011, 0.009, 0.011, 0.009, 0.011, 0.009, 0.011}), 0.002).label == "stable");  // small wiggles ignored
+  CHECK(classify_run(summary({}, "blown_up"), 0.002).label == "blown_up");
+  CHECK(classify_run(summary({0.1, -3.0, 40.0, -200.0}), 0.002).label == "blown_up");  // unbounded growth
 }
 
 TEST_CASE("cost at a target error: log-log interpolation on the error-vs-cost curve", "[studies]") {
@@ -98,4 +102,9 @@ TEST_CASE("stability classification of sampled start-up signals", "[studies]") {
   CHECK(classify_run(sampled([&](double t) { return 0.005 * std::sin(2 * pi * t / 0.3); }), 0.01).label == "stable");
   // A swing that grows past the velocity scale: blown up.
   CHECK(classify_run(sampled([&](double t) { return 0.01 * std::exp(6 * t) * std::sin(2 * pi * t / 0.3); }), 0.01).label == "blown_up");
+  // Like the measured Poiseuille oscillation (README): e_signed 0.009 +- 0.004 with a period of 8 s,
+  // 40 samples over 20 s, default threshold 0.002 v0.
+  nlohmann::json j{{"status", "completed"}, {"errors", nlohmann::json::array()}};
+  for (int k = 1; k <= 40; ++k) j["errors"].push_back({{"e_signed", 0.009 + 0.004 * std::cos(2 * pi * (k * 0.5) / 8.0)}});
+  CHECK(classify_run(j, 0.002).label == "oscillating");
 }
