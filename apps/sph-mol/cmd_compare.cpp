@@ -37,7 +37,10 @@ int run() {
                   << (b["upper_bound"].get<bool>() ? "its cheapest run, " + b["first_setting_at_target"].get<std::string>() +
                                                          ", is already below: "
                                                    : "interpolated: ")
-                  << b["wall_seconds"].get<double>() << " s)\n";
+                  << b["wall_seconds"].get<double>() << " s wall)";
+      const auto& c = f["fastest_cpu"];
+      if (!c.is_null()) std::cout << "; by CPU time: " << c["integrator"].get<std::string>() << " (" << c["cpu_seconds"].get<double>() << " s)";
+      std::cout << '\n';
     }
     std::cout << "compare: results in " << opt.output << "/comparison.csv, comparison.json, comparison.png\n";
   } catch (const std::exception& e) {

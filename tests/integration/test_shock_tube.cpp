@@ -11,7 +11,8 @@
 
 namespace {
 
-const std::string source_dir = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+// SPHMOL_SOURCE_DIR rather than __FILE__: with ccache base_dir, __FILE__ is relative to the build tree.
+const std::string source_dir = SPHMOL_SOURCE_DIR;
 
 // Runs the binary; returns the summary, or null when the run failed.
 nlohmann::json run(const std::string& config, const std::string& tag, const std::string& sets) {

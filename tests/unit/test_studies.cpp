@@ -108,3 +108,20 @@ TEST_CASE("stability classification of sampled start-up signals", "[studies]") {
   for (int k = 1; k <= 40; ++k) j["errors"].push_back({{"e_signed", 0.009 + 0.004 * std::cos(2 * pi * (k * 0.5) / 8.0)}});
   CHECK(classify_run(j, 0.002).label == "oscillating");
 }
+
+TEST_CASE("stability: the sound speed factor scales c, for an ideal gas through the pressures", "[studies]") {
+  Config c;
+  c.fluid.eos.type = "linear_relative";
+  c.fluid.eos.sound_speed = 5e-3;
+  CHECK(scale_sound_speed(c, 4.0) == Approx(2e-2));
+  Config g;
+  g.fluid.eos.type = "ideal_gas";
+  g.fluid.eos.gamma = 1.4;
+  g.shock_tube.left = {1.0, 1.0, 0.0};
+  g.shock_tube.right = {0.25, 0.1795, 0.0};
+  const double c0 = std::sqrt(1.4);
+  CHECK(scale_sound_speed(g, 2.0) == Approx(2.0 * c0));
+  CHECK(g.shock_tube.left.pressure == Approx(4.0));
+  CHECK(g.shock_tube.right.pressure == Approx(4.0 * 0.1795));
+  CHECK(g.shock_tube.right.density == 0.25);  // densities unchanged: every state's c doubles
+}

@@ -54,6 +54,21 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
   return c;
 }
 
+double scale_sound_speed(Config& c, double factor) {
+  if (c.fluid.eos.type != "ideal_gas") {
+    c.fluid.eos.sound_speed *= factor;
+    return c.fluid.eos.sound_speed;
+  }
+  // c = sqrt(gamma p / rho): pressures x factor^2 (and velocities x factor) scale every sound speed
+  // by `factor` at fixed densities. Reported: the sound speed of the left state.
+  for (ShockTubeState* st : {&c.shock_tube.left, &c.shock_tube.right}) {
+    st->pressure *= factor * factor;
+    st->velocity *= factor;
+  }
+  const auto& L = c.shock_tube.left;
+  return L.density > 0.0 ? std::sqrt(c.fluid.eos.gamma * L.pressure / L.density) : 0.0;
+}
+
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   std::filesystem::create_directories(opt.output_dir);
   const bool fixed = base.time.dt.has_value();
@@ -65,7 +80,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   for (double fc : opt.sound_speed_factors)
     for (double fs : opt.step_factors) {
       Config c = base;
-      c.fluid.eos.sound_speed *= fc;
+      const double sound_speed = scale_sound_speed(c, fc);
       double step_value = fs;
       if (fixed) {
         c.time.dt = *base.time.dt * fs;
@@ -84,16 +99,16 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       std::string cause_csv = cause;
       for (char& ch : cause_csv)
         if (ch == ',' || ch == '"') ch = ';';
-      csv << fmt(c.fluid.eos.sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
+      csv << fmt(sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
           << cl.sign_changes << ',' << fmt(cl.amplitude) << ',' << fmt(cl.max_abs_signed) << ',' << fmt(r.error) << ',' << r.summary["steps"] << ','
           << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
-      runs.push_back({{"sound_speed", c.fluid.eos.sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
+      runs.push_back({{"sound_speed", sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
                       {"sign_changes", cl.sign_changes}, {"late_amplitude", cl.amplitude}, {"max_abs_e_signed", cl.max_abs_signed},
                       {"error", r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(r.error)}, {"cause", cause}});
-      by_class[cl.label].x.push_back(c.fluid.eos.sound_speed);
+      by_class[cl.label].x.push_back(sound_speed);
       by_class[cl.label].y.push_back(step_value);
       if (opt.log)
-        *opt.log << "stability: c = " << fmt(c.fluid.eos.sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
+        *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
                  << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
                  << (cause.empty() ? "" : ", " + cause) << ")\n";
     }

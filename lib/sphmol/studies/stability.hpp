@@ -1,6 +1,6 @@
 #pragma once
 // Stability map (sph-mol stability): the case is run over a grid of sound speed (fluid.eos.sound_speed
-// x factor) and step (with time.dt in the config: dt x factor, fixed step; otherwise all time.cfl
+// x factor; for an ideal gas, initial pressures x factor^2, see scale_sound_speed) and step (with time.dt in the config: dt x factor, fixed step; otherwise all time.cfl
 // coefficients x factor) and each run is classified:
 //   blown_up    - the run ended with status "blown_up" (run/health_check.hpp: NaN/Inf, particle out of
 //                 the domain, density <= 0, step collapse);
@@ -42,6 +42,11 @@ struct StabilityClass {
   double amplitude = 0.0;  // half the range of e_signed - mean after the start-up
 };
 StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold);
+
+// Multiplies the sound speed by `factor`: fluid.eos.sound_speed, or for an ideal gas (the shock tube,
+// whose c = sqrt(gamma p / rho) comes from the state) the initial pressures by factor^2. Returns the
+// sound speed reported on the map (for an ideal gas: that of the left state).
+double scale_sound_speed(Config& c, double factor);
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt);
 

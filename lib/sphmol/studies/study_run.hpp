@@ -1,6 +1,8 @@
 #pragma once
 // One run of a study: the case in memory (no files), its summary, and "the error": the case's
 // primary final error (Case::primary_error, e.g. e_rms for the channels); +inf for a blown-up run.
+// A run that throws (other than the blow-up detection, which ends it cleanly) is reported as blown up
+// with "run failed: <message>" as its cause.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -12,6 +14,9 @@ namespace sphmol {
 struct StudyRun {
   nlohmann::json summary;
   double error = 0.0;
+  // CPU time of this process during the run (all threads). On a shared machine it varies less than
+  // wall time, which other jobs stretch.
+  double cpu_seconds = 0.0;
   bool blown_up = false;
   std::vector<double> final_state;  // y at t_end (empty if blown up)
 };
