@@ -1,7 +1,7 @@
 #pragma once
 // Integrator comparison (sph-mol compare): the case is run with each integrator over a sweep of its
 // accuracy setting, and error vs cost is tabulated (comparison.csv), charted (comparison.png, log-log
-// error vs wall time, one line per integrator) and summarised (comparison.json: per target error, the
+// error vs wall time, one line per integrator; comparison_cpu.png against CPU time) and summarised (comparison.json: per target error, the
 // integrator that reaches it in the least wall time, the least CPU time, and the fewest RHS evaluations).
 //   Sweeps: arkode_erk, cvode_adams: rtol in {1e-3, 1e-4, 1e-5, 1e-6, 1e-7} (atol from the config);
 //   leapfrog, leapfrog_kdk: with time.dt in the config, dt x {1, 1/2, 1/4, 1/8}; otherwise the CFL step

@@ -31,7 +31,8 @@ std::string draw_chart(const Chart& chart, const std::string& png_path) {
      << "set title " << gnuplot_quote(chart.title) << "\n"
      << "set xlabel " << gnuplot_quote(chart.xlabel) << "\nset ylabel " << gnuplot_quote(chart.ylabel) << "\n"
      << (chart.logx ? "set logscale x\n" : "") << (chart.logy ? "set logscale y\n" : "")
-     << "set grid\nset key below\n";
+     << "set grid\nset key below\n"
+     << "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n";  // points on the axis range stay visible
   gp << "plot ";
   for (std::size_t k = 0; k < chart.series.size(); ++k)
     gp << (k ? ", " : "") << gnuplot_quote(stem + ".dat") << " index " << k << " with " << chart.style << " title "
