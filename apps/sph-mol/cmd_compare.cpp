@@ -1,5 +1,5 @@
 // sph-mol compare --config FILE --integrators LIST [--output DIR] [--reference-dt DT] [--rtols LIST]
-//                  [--step-factors LIST] [--set k=v]...
+//                  [--step-factors LIST] [--targets LIST] [--set k=v]...
 // Integrator comparison: see lib/sphmol/studies/compare.hpp for the sweeps.
 #include <iostream>
 
@@ -13,7 +13,7 @@ struct {
   std::string config, integrators, output = "out/compare";
   std::vector<std::string> overrides;
   double reference_dt = 0.0;
-  std::vector<double> rtols, step_factors;
+  std::vector<double> rtols, step_factors, targets;
 } opt;
 
 int run() {
@@ -27,6 +27,7 @@ int run() {
     if (opt.reference_dt > 0.0) o.reference_dt = opt.reference_dt;
     if (!opt.rtols.empty()) o.rtols = opt.rtols;
     if (!opt.step_factors.empty()) o.step_factors = opt.step_factors;
+    if (!opt.targets.empty()) o.targets = opt.targets;
     const auto j = sphmol::run_compare(*config, o);
     for (const auto& f : j["fastest"]) {
       std::cout << "compare: fastest at " << f["error"].get<std::string>() << " = " << f["target_error"].get<double>() << ": ";
@@ -66,6 +67,9 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
           ->check(CLI::PositiveNumber);
       sub.add_option("--step-factors", opt.step_factors,
                      "factors on time.dt or the CFL coefficients for the leapfrogs, coarse to fine (default 1,0.5,0.25,0.125)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--targets", opt.targets, "target errors for the fastest-integrator summary (default 0.01,0.001)")
           ->delimiter(',')
           ->check(CLI::PositiveNumber);
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);

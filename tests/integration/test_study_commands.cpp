@@ -56,7 +56,8 @@ TEST_CASE("sph-mol compare --reference-dt measures the time error: second order 
   // Couette at 20 across to t = 0.01 s; CFL steps x 1, 1/2, 1/4; reference Verner 6 at dt = 1e-5.
   const std::string out = "reports/compare_couette_reference";
   REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
-                  " --integrators leapfrog --reference-dt 1e-5 --step-factors 1,0.5,0.25 --set discretization.particles_across=20"
+                  " --integrators leapfrog --reference-dt 1e-5 --step-factors 1,0.5,0.25 --targets 1e-4"
+                  " --set discretization.particles_across=20"
                   " --set time.t_end=0.01 --set output.times=[0.01]",
               out + ".log") == 0);
   const auto j = read_json(out + "/comparison.json");
@@ -68,7 +69,15 @@ TEST_CASE("sph-mol compare --reference-dt measures the time error: second order 
   CHECK(e[1] / e[2] > 3.0);
   CHECK(e[2] > 1e-12);
   CHECK(j["reference_run"]["dt"] == 1e-5);
-  CHECK(j["fastest_exact_error"].size() == 2);  // the exact-error summary is kept alongside
+  CHECK(j["fastest_exact_error"].size() == 1);  // the exact-error summary is kept alongside
+  // 1e-4 lies between the first two runs: the cost is interpolated between them.
+  const auto& f = j["fastest"][0]["fastest"];
+  REQUIRE_FALSE(f.is_null());
+  CHECK_FALSE(f["upper_bound"].get<bool>());
+  CHECK(f["first_setting_at_target"] == "cfl_factor=0.5");
+  const double rhs = f["rhs_evals"].get<double>();
+  CHECK(rhs > j["runs"][0]["rhs_evals"].get<double>());
+  CHECK(rhs < j["runs"][1]["rhs_evals"].get<double>());
 }
 
 TEST_CASE("sph-mol stability finds the slow symmetric oscillation of a long Poiseuille run", "[integration][stability]") {

@@ -75,7 +75,9 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   std::ostringstream csv;
   csv << "sound_speed," << (fixed ? "dt" : "cfl_factor") << ",class,status,sign_changes,late_amplitude,max_abs_e_signed,error,steps,wall_seconds,cause\n";
   std::map<std::string, ChartSeries> by_class;
-  for (const char* k : {"stable", "oscillating", "blown_up"}) by_class[k] = ChartSeries{k, {}, {}};
+  by_class["stable"] = ChartSeries{"stable", {}, {}, "forest-green"};
+  by_class["oscillating"] = ChartSeries{"oscillating", {}, {}, "dark-orange"};
+  by_class["blown_up"] = ChartSeries{"blown_up", {}, {}, "red"};
   nlohmann::json runs = nlohmann::json::array();
   for (double fc : opt.sound_speed_factors)
     for (double fs : opt.step_factors) {
@@ -114,6 +116,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
     }
   write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
+  chart.tight = true;
   for (const char* k : {"stable", "oscillating", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
   const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");
