@@ -118,14 +118,18 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
   chart.tight = true;
-  // A log axis within one decade gets no tick labels: the step axis is linear unless it spans one.
-  double step_min = 0.0, step_max = 0.0;
-  for (const auto& [label, series] : by_class)
-    for (double v : series.y) {
-      step_min = step_min > 0.0 ? std::min(step_min, v) : v;
-      step_max = std::max(step_max, v);
-    }
-  chart.logy = step_min > 0.0 && step_max / step_min >= 10.0;
+  // A log axis within one decade gets no tick labels: an axis is linear unless it spans one.
+  const auto spans_decade = [&](std::vector<double> ChartSeries::*axis) {
+    double lo = 0.0, hi = 0.0;
+    for (const auto& [label, series] : by_class)
+      for (double v : series.*axis) {
+        lo = lo > 0.0 ? std::min(lo, v) : v;
+        hi = std::max(hi, v);
+      }
+    return lo > 0.0 && hi / lo >= 10.0;
+  };
+  chart.logx = spans_decade(&ChartSeries::x);
+  chart.logy = spans_decade(&ChartSeries::y);
   for (const char* k : {"stable", "oscillating", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
   const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");

@@ -58,6 +58,9 @@ nlohmann::json LeapfrogBase::save_state() const {
 }
 
 void LeapfrogBase::restore_state(const nlohmann::json& s) {
+  if (!s.contains("f") || !s.contains("cfl_step"))
+    throw std::runtime_error(name() + ": the checkpoint holds no " + name() +
+                             " state (written by an older sph-mol, which did not checkpoint it)");
   const auto f = decode_doubles(s.at("f").get<std::string>());
   const auto h = decode_doubles(s.at("cfl_step").get<std::string>());
   if (f.size() != f_.size() || h.size() != 1)
