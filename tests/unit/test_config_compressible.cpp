@@ -11,8 +11,8 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-const std::string shock = std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string() +
-                          "/verification/shock_tube.yaml";
+// SPHMOL_SOURCE_DIR rather than __FILE__: with ccache base_dir, __FILE__ is relative to the build tree.
+const std::string shock = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube.yaml";
 
 std::string error_of(const std::vector<std::string>& sets) {
   try {
