@@ -1,4 +1,5 @@
-// sph-mol compare --config FILE --integrators LIST [--output DIR] [--set k=v]...
+// sph-mol compare --config FILE --integrators LIST [--output DIR] [--reference-dt DT] [--rtols LIST]
+//                  [--step-factors LIST] [--targets LIST] [--set k=v]...
 // Integrator comparison: see lib/sphmol/studies/compare.hpp for the sweeps.
 #include <iostream>
 
@@ -11,6 +12,8 @@ namespace {
 struct {
   std::string config, integrators, output = "out/compare";
   std::vector<std::string> overrides;
+  double reference_dt = 0.0;
+  std::vector<double> rtols, step_factors, targets;
 } opt;
 
 int run() {
@@ -21,7 +24,25 @@ int run() {
     o.integrators = sphmol::parse_integrator_list(opt.integrators, config->time.table);
     o.output_dir = opt.output;
     o.log = &std::cerr;
-    sphmol::run_compare(*config, o);
+    if (opt.reference_dt > 0.0) o.reference_dt = opt.reference_dt;
+    if (!opt.rtols.empty()) o.rtols = opt.rtols;
+    if (!opt.step_factors.empty()) o.step_factors = opt.step_factors;
+    if (!opt.targets.empty()) o.targets = opt.targets;
+    const auto j = sphmol::run_compare(*config, o);
+    for (const auto& f : j["fastest"]) {
+      std::cout << "compare: fastest at " << f["error"].get<std::string>() << " = " << f["target_error"].get<double>() << ": ";
+      const auto& b = f["fastest"];
+      if (b.is_null()) std::cout << "no integrator reached it\n";
+      else
+        std::cout << b["integrator"].get<std::string>() << " ("
+                  << (b["upper_bound"].get<bool>() ? "its cheapest run, " + b["first_setting_at_target"].get<std::string>() +
+                                                         ", is already below: "
+                                                   : "interpolated: ")
+                  << b["wall_seconds"].get<double>() << " s wall)";
+      const auto& c = f["fastest_cpu"];
+      if (!c.is_null()) std::cout << "; by CPU time: " << c["integrator"].get<std::string>() << " (" << c["cpu_seconds"].get<double>() << " s)";
+      std::cout << '\n';
+    }
     std::cout << "compare: results in " << opt.output << "/comparison.csv, comparison.json, comparison.png\n";
   } catch (const std::exception& e) {
     std::cerr << "sph-mol compare: " << e.what() << '\n';
@@ -38,6 +59,19 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
                      "comma-separated: leapfrog, leapfrog_kdk, arkode_erk, arkode_erk:TABLE, cvode_adams")
           ->required();
       sub.add_option("--output", opt.output, "output directory (default out/compare)");
+      sub.add_option("--reference-dt", opt.reference_dt,
+                     "error = time error against an ARKODE Verner 8(5)6 run at this fixed step (default: the case's exact error)")
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--rtols", opt.rtols, "tolerance sweep of the adaptive integrators, coarse to fine (default 1e-3,...,1e-7)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--step-factors", opt.step_factors,
+                     "factors on time.dt or the CFL coefficients for the leapfrogs, coarse to fine (default 1,0.5,0.25,0.125)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--targets", opt.targets, "target errors for the fastest-integrator summary (default 0.01,0.001)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },
     run}};

@@ -11,7 +11,7 @@ namespace {
 struct {
   std::string config, output = "out/stability";
   std::vector<double> c_factors, step_factors;
-  double threshold = 0.01;
+  double threshold = 0.002;
   int samples = 20;
   std::vector<std::string> overrides;
 } opt;
@@ -46,7 +46,7 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--step-factors", opt.step_factors,
                      "factors on time.dt (fixed step) or on the time.cfl coefficients (default 0.5 1 2 4)")
           ->delimiter(',');
-      sub.add_option("--osc-threshold", opt.threshold, "|e_signed| above which a sign counts (default 0.01)");
+      sub.add_option("--osc-threshold", opt.threshold, "|e_signed - late mean| above which a swing counts, in units of v0 (default 0.002)");
       sub.add_option("--samples", opt.samples, "equally spaced sample times (default 20)")->check(CLI::Range(3, 1000));
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },

@@ -1,9 +1,16 @@
 #pragma once
-// Conserved quantities of the fluid at output times: total momentum sum_i m_i v_i per component
-// and kinetic energy sum_i m_i |v_i|^2 / 2 (fluid particles only; walls are prescribed). Momentum is
-// conserved only in periodic directions without walls or body forces acting along them, so the
-// summary lists which directions are periodic and the drift P(t) - P(0) per component.
+// Conserved quantities of the fluid at output times: total momentum sum_i m_i v_i per component,
+// kinetic energy sum_i m_i |v_i|^2 / 2 and, when the state holds the specific internal energy e
+// (energy equation, seed 003 eq 2.66), the total energy sum_i m_i (|v_i|^2 / 2 + e_i) (fluid
+// particles only; walls are prescribed). Momentum is conserved only in periodic directions without
+// walls or body forces acting along them, so the summary lists which directions are periodic and
+// the drift P(t) - P(0) per component, also relative to the momentum scale sum_i m_i |v_i| (its
+// maximum over the records). The total energy is conserved by the compressible formulation with
+// fixed walls (the artificial-viscosity work, seed 003 eq 2.72, goes into e): its drift E(t) - E(0)
+// and relative drift / E(0) are reported.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -18,7 +25,7 @@ class ConservationLog {
     const auto& L = sys.layout();
     const auto& m = sys.particles().mass;
     std::array<double, D> p{};
-    double ke = 0.0;
+    double ke = 0.0, scale = 0.0, internal = 0.0;
     for (std::size_t i = 0; i < L.n; ++i) {
       double v2 = 0.0;
       for (int d = 0; d < D; ++d) {
@@ -27,10 +34,14 @@ class ConservationLog {
         v2 += v * v;
       }
       ke += 0.5 * m[i] * v2;
+      scale += m[i] * std::sqrt(v2);
+      if (L.has_energy) internal += m[i] * y[L.energy() + i];
     }
     times_.push_back(t);
     momentum_.push_back(p);
     kinetic_.push_back(ke);
+    momentum_scale_ = std::max(momentum_scale_, scale);
+    if (L.has_energy) total_.push_back(ke + internal);
   }
 
   nlohmann::json to_json(const SphSystem<D>& sys) const {
@@ -46,10 +57,23 @@ class ConservationLog {
     double mass = 0.0;
     for (std::size_t i = 0; i < sys.layout().n; ++i) mass += sys.particles().mass[i];
     j["fluid_mass"] = mass;
+    j["momentum_scale"] = momentum_scale_;
     if (momentum_.size() >= 2) {
-      std::vector<double> drift(D);
-      for (int d = 0; d < D; ++d) drift[d] = momentum_.back()[d] - momentum_.front()[d];
+      std::vector<double> drift(D), rel(D);
+      for (int d = 0; d < D; ++d) {
+        drift[d] = momentum_.back()[d] - momentum_.front()[d];
+        rel[d] = momentum_scale_ > 0.0 ? drift[d] / momentum_scale_ : 0.0;
+      }
       j["momentum_drift"] = drift;
+      j["momentum_drift_relative"] = rel;
+    }
+    if (!total_.empty()) {
+      j["total_energy"] = total_;
+      if (total_.size() >= 2) {
+        const double drift = total_.back() - total_.front();
+        j["total_energy_drift"] = drift;
+        j["total_energy_drift_relative"] = total_.front() != 0.0 ? drift / std::abs(total_.front()) : 0.0;
+      }
     }
     return j;
   }
@@ -58,6 +82,8 @@ class ConservationLog {
   std::vector<double> times_;
   std::vector<std::array<double, D>> momentum_;
   std::vector<double> kinetic_;
+  std::vector<double> total_;
+  double momentum_scale_ = 0.0;
 };
 
 }  // namespace sphmol

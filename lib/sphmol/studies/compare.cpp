@@ -4,21 +4,107 @@
 #include <limits>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/studies/fastest_at_error.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
 
 namespace sphmol {
 
+namespace {
+
+// One run of the sweep, as the fastest-at-error summary needs it.
+struct SweepPoint {
+  std::string setting;
+  double wall = 0.0, cpu = 0.0, rhs = 0.0;
+  double error = 0.0;        // the error of the study (time error with a reference run)
+  double exact_error = 0.0;  // the case's primary error against its exact reference
+};
+
+// For each target: per integrator the interpolated wall time, CPU time and RHS evaluations at which
+// its curve reaches the target (studies/fastest_at_error.hpp); the fastest by wall time, by CPU time,
+// and the one with the fewest RHS evaluations.
+nlohmann::json fastest_at_targets(const std::vector<IntegratorSpec>& specs, const std::vector<std::vector<SweepPoint>>& points,
+                                  bool use_exact, const std::string& key, const std::vector<double>& targets, std::ostream* log) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double target : targets) {
+    nlohmann::json per = nlohmann::json::array();
+    for (std::size_t k = 0; k < specs.size(); ++k) {
+      std::vector<CurvePoint> wall, cpu, rhs;
+      for (const auto& p : points[k]) {
+        const double e = use_exact ? p.exact_error : p.error;
+        wall.push_back({p.wall, e});
+        cpu.push_back({p.cpu, e});
+        rhs.push_back({p.rhs, e});
+      }
+      const auto w = cost_at_error(wall, target), c = cost_at_error(cpu, target), n = cost_at_error(rhs, target);
+      nlohmann::json e{{"integrator", specs[k].label}, {"wall_seconds", nullptr}, {"cpu_seconds", nullptr}, {"rhs_evals", nullptr}};
+      if (w) {
+        e["wall_seconds"] = w->cost;
+        e["upper_bound"] = w->bound;  // the cheapest run already met the target
+        e["first_setting_at_target"] = points[k][w->below].setting;
+      }
+      if (c) e["cpu_seconds"] = c->cost;
+      if (n) e["rhs_evals"] = n->cost;
+      per.push_back(e);
+    }
+    const auto best_by = [&](const char* field) {
+      nlohmann::json best = nullptr;
+      for (const auto& e : per)
+        if (!e[field].is_null() && (best.is_null() || e[field].get<double>() < best[field].get<double>())) best = e;
+      return best;
+    };
+    const nlohmann::json fastest = best_by("wall_seconds"), fastest_cpu = best_by("cpu_seconds"), fewest = best_by("rhs_evals");
+    out.push_back({{"target_error", target}, {"error", key}, {"fastest", fastest}, {"fastest_cpu", fastest_cpu},
+                   {"fewest_rhs_evals", fewest}, {"integrators", per}});
+    if (log) {
+      const auto describe = [&](const nlohmann::json& e, const char* field, const char* unit) {
+        if (e.is_null()) return std::string("no integrator reached it");
+        return e["integrator"].get<std::string>() + " (" + (e["upper_bound"].get<bool>() ? "<= " : "") +
+               fmt(e[field].get<double>()) + unit + ")";
+      };
+      *log << "compare: at " << key << " = " << fmt(target) << ": fastest (wall) " << describe(fastest, "wall_seconds", " s")
+           << "; fastest (CPU) " << describe(fastest_cpu, "cpu_seconds", " s") << "; fewest RHS evaluations "
+           << describe(fewest, "rhs_evals", "") << '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   std::filesystem::create_directories(opt.output_dir);
   nlohmann::json runs = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "integrator,setting,wall_seconds,rhs_evals,steps,error,status\n";
-  Chart chart{"error vs wall time: " + base.case_name, "wall time [s]", "error (" + std::string("primary final error") + ")", true, true, {}};
+  csv << "integrator,setting,wall_seconds,cpu_seconds,rhs_evals,steps,error,exact_error,status\n";
+  std::vector<double> ref_state;
+  nlohmann::json reference = nullptr;
+  if (opt.reference_dt) {
+    Config rc = base;
+    rc.time.integrator = "arkode_erk";
+    rc.time.table = kReferenceTable;
+    rc.time.dt = *opt.reference_dt;
+    const StudyRun ref = run_study_case(rc);
+    if (ref.blown_up) throw std::runtime_error("compare: the reference run blew up: " + ref.summary["blow_up"].dump());
+    ref_state = ref.final_state;
+    reference = {{"table", kReferenceTable}, {"dt", *opt.reference_dt}, {"wall_seconds", ref.summary["wall_seconds"]},
+                 {"exact_error", ref.error}};
+    if (opt.log)
+      *opt.log << "compare: reference " << kReferenceTable << " dt = " << fmt(*opt.reference_dt) << ": exact error "
+               << fmt(ref.error) << " (" << fmt(ref.summary["wall_seconds"].get<double>()) << " s)\n";
+  }
+  Chart chart{"error vs wall time: " + base.case_name, "wall time [s]", "", true, true, {}};
+  chart.hlines = opt.targets;
+  Chart cpu_chart{"error vs CPU time: " + base.case_name, "CPU time [s]", "", true, true, {}};
+  cpu_chart.hlines = opt.targets;
+  std::string error_key, exact_key;
+  std::vector<std::vector<SweepPoint>> points;  // per integrator, in sweep order (coarse to fine)
   for (const auto& spec : opt.integrators) {
-    ChartSeries series{spec.label, {}, {}};
+    ChartSeries series{spec.label, {}, {}}, cpu_series{spec.label, {}, {}};
+    points.emplace_back();
     const bool adaptive = spec.adaptive();
     const auto& sweep = adaptive ? opt.rtols : opt.step_factors;
     for (double s : sweep) {
@@ -41,40 +127,50 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
       const StudyRun r = run_study_case(c);
       const auto& S = r.summary;
       const double wall = S["wall_seconds"].get<double>();
-      csv << spec.label << ',' << setting << ',' << fmt(wall) << ',' << S["rhs_evals"] << ',' << S["steps"] << ','
-          << fmt(r.error) << ',' << S["status"].get<std::string>() << '\n';
-      runs.push_back({{"integrator", spec.label}, {"setting", setting}, {"wall_seconds", wall}, {"rhs_evals", S["rhs_evals"]},
-                      {"steps", S["steps"]}, {"error", r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(r.error)},
+      const double inf = std::numeric_limits<double>::infinity();
+      const double error = !opt.reference_dt ? r.error
+                           : r.blown_up    ? inf
+                                           : relative_velocity_error(r.final_state, ref_state, base.dimension,
+                                                                     S["particles"]["fluid"].get<std::size_t>());
+      exact_key = S.value("primary_error", "e_rms");
+      error_key = opt.reference_dt ? "relative velocity error vs reference run" : exact_key;
+      points.back().push_back({setting, wall, r.cpu_seconds, S["rhs_evals"].get<double>(), error, r.error});
+      csv << spec.label << ',' << setting << ',' << fmt(wall) << ',' << fmt(r.cpu_seconds) << ',' << S["rhs_evals"] << ','
+          << S["steps"] << ',' << fmt(error) << ',' << fmt(r.error) << ',' << S["status"].get<std::string>() << '\n';
+      const auto num = [&](double x) { return r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(x); };
+      runs.push_back({{"integrator", spec.label}, {"setting", setting}, {"wall_seconds", wall}, {"cpu_seconds", r.cpu_seconds},
+                      {"rhs_evals", S["rhs_evals"]}, {"steps", S["steps"]}, {"error", num(error)}, {"exact_error", num(r.error)},
                       {"status", S["status"]}});
       if (opt.log)
-        *opt.log << "compare: " << spec.label << ' ' << setting << ": error " << fmt(r.error) << ", wall " << fmt(wall)
-                 << " s, " << S["rhs_evals"] << " RHS evaluations\n";
+        *opt.log << "compare: " << spec.label << ' ' << setting << ": error " << fmt(error) << ", wall " << fmt(wall) << " s, CPU "
+                 << fmt(r.cpu_seconds) << " s, " << S["rhs_evals"] << " RHS evaluations\n";
       if (!r.blown_up) {
         series.x.push_back(wall);
-        series.y.push_back(r.error);
+        series.y.push_back(error);
+        cpu_series.x.push_back(r.cpu_seconds);
+        cpu_series.y.push_back(error);
       }
     }
     chart.series.push_back(std::move(series));
+    cpu_chart.series.push_back(std::move(cpu_series));
   }
-  nlohmann::json fastest = nlohmann::json::array();
-  for (double target : opt.targets) {
-    nlohmann::json best = nullptr;
-    for (const auto& r : runs)
-      if (!r["error"].is_null() && r["error"].get<double>() <= target &&
-          (best.is_null() || r["wall_seconds"].get<double>() < best["wall_seconds"].get<double>()))
-        best = r;
-    fastest.push_back({{"target_error", target}, {"fastest", best}});
-    if (opt.log)
-      *opt.log << "compare: fastest at error <= " << fmt(target) << ": "
-               << (best.is_null() ? std::string("none reached it")
-                                  : best["integrator"].get<std::string>() + " " + best["setting"].get<std::string>() + " (" +
-                                        fmt(best["wall_seconds"].get<double>()) + " s)")
-               << '\n';
-  }
+  chart.ylabel = cpu_chart.ylabel = "final " + error_key;
+  const nlohmann::json fastest = fastest_at_targets(opt.integrators, points, false, error_key, opt.targets, opt.log);
+  // With a reference run, the same summary for the exact-reference error (time + space error).
+  const nlohmann::json fastest_exact =
+      opt.reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
   write_file_atomically(opt.output_dir + "/comparison.csv", csv.str());
   const std::string png = opt.output_dir + "/comparison.png";
   const std::string chart_problem = draw_chart(chart, png);
-  nlohmann::json j{{"case", base.case_name}, {"config_file", base.source}, {"runs", runs}, {"fastest", fastest},
+  // The same against CPU time: on a shared machine other jobs stretch the wall time.
+  draw_chart(cpu_chart, opt.output_dir + "/comparison_cpu.png");
+  nlohmann::json j{{"case", base.case_name},
+                   {"error", error_key},
+                   {"reference_run", reference},
+                   {"config_file", base.source},
+                   {"runs", runs},
+                   {"fastest", fastest},
+                   {"fastest_exact_error", fastest_exact},
                    {"chart", chart_problem.empty() ? nlohmann::json("comparison.png") : nlohmann::json(nullptr)}};
   if (!chart_problem.empty()) {
     j["chart_problem"] = chart_problem;

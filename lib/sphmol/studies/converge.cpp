@@ -15,23 +15,8 @@
 namespace sphmol {
 
 namespace {
-constexpr const char* kReferenceTable = "ARKODE_VERNER_8_5_6";
 constexpr int kReferenceRefinement = 8;
 
-// rms over the velocity blocks of (y - yref), relative to max |v_ref|. The velocity blocks follow
-// the D position blocks of n fluid particles: y = [x_0..x_{D-1} | v_0..v_{D-1} | ...] (core/state_layout.hpp).
-double velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n) {
-  if (y.size() != yref.size() || y.size() < 2 * dimension * n || n == 0) return std::numeric_limits<double>::infinity();
-  const std::size_t vb = dimension * n, ve = 2 * dimension * n;
-  double sum = 0.0, vmax = 0.0;
-  for (std::size_t k = vb; k < ve; ++k) {
-    const double d = y[k] - yref[k];
-    sum += d * d;
-    vmax = std::max(vmax, std::abs(yref[k]));
-  }
-  const double rms = std::sqrt(sum / static_cast<double>(ve - vb));
-  return vmax > 0 ? rms / vmax : rms;
-}
 }  // namespace
 
 std::vector<IntegratorSpec> default_time_integrators() {
@@ -126,7 +111,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
                                                : 1.0 / c.discretization.particles_across;
       }
       const StudyRun r = run_study_case(c);
-      const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))
+      const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : relative_velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))
                             : r.error;
       errors.push_back(e);
       dts.push_back(xk);

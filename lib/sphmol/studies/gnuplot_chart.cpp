@@ -31,11 +31,20 @@ std::string draw_chart(const Chart& chart, const std::string& png_path) {
      << "set title " << gnuplot_quote(chart.title) << "\n"
      << "set xlabel " << gnuplot_quote(chart.xlabel) << "\nset ylabel " << gnuplot_quote(chart.ylabel) << "\n"
      << (chart.logx ? "set logscale x\n" : "") << (chart.logy ? "set logscale y\n" : "")
-     << "set grid\nset key below\n";
+     << "set grid\nset key below\n"
+     << "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n"  // points on the axis range stay visible
+     << (chart.tight ? "set autoscale fix\nset offsets graph 0.08, graph 0.08, graph 0.1, graph 0.1\n" : "");
   gp << "plot ";
   for (std::size_t k = 0; k < chart.series.size(); ++k)
-    gp << (k ? ", " : "") << gnuplot_quote(stem + ".dat") << " index " << k << " with " << chart.style << " title "
+    gp << (k ? ", " : "") << gnuplot_quote(stem + ".dat") << " index " << k << " with " << chart.style
+       << (chart.series[k].color.empty() ? std::string() : " lc rgb " + gnuplot_quote(chart.series[k].color)) << " title "
        << gnuplot_quote(chart.series[k].title);
+  // Constant functions rather than arrows: autoscaling then keeps the lines in view.
+  for (std::size_t k = 0; k < chart.hlines.size(); ++k) {
+    std::ostringstream v;
+    v << std::setprecision(10) << chart.hlines[k];
+    gp << (chart.series.empty() && k == 0 ? "" : ", ") << v.str() << " with lines dt 2 lc rgb 'gray40' title " << gnuplot_quote("error " + v.str());
+  }
   gp << "\n";
   write_file_atomically(stem + ".gp", gp.str());
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)

@@ -9,6 +9,7 @@ namespace sphmol {
 struct ChartSeries {
   std::string title;
   std::vector<double> x, y;
+  std::string color{};  // gnuplot colour name or #rrggbb; empty: gnuplot's sequence
 };
 
 struct Chart {
@@ -16,6 +17,8 @@ struct Chart {
   bool logx = true, logy = true;
   std::vector<ChartSeries> series;
   std::string style = "linespoints";  // gnuplot "with" style; "points pointsize 2" for maps
+  std::vector<double> hlines{};       // dashed horizontal reference lines (e.g. target errors)
+  bool tight = false;                 // axes end at the data (plus a margin), not at whole decades
 };
 
 // Writes PNG_PATH (and PNG_PATH minus ".png" plus ".dat"/".gp"). Returns an empty string on

@@ -1,10 +1,12 @@
 #include "sphmol/studies/stability.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <vector>
 
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
@@ -20,35 +22,68 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
     c.label = "blown_up";
     return c;
   }
+  std::vector<double> s;
+  for (const auto& m : summary["errors"])
+    if (m.contains("e_signed")) s.push_back(m["e_signed"].get<double>());
+  for (double x : s) c.max_abs_signed = std::max(c.max_abs_signed, std::abs(x));
+  // An error larger than the velocity scale itself is unbounded growth (a numerical instability
+  // that has not yet thrown a particle out), not the bounded oscillation.
+  if (c.max_abs_signed > kDivergedSigned) {
+    c.label = "blown_up";
+    return c;
+  }
+  // Skip the start-up (first tenth of the samples); count swings of e_signed about its mean over
+  // the rest. The oscillation of seed 000 §9 is about the run's own (slightly biased) level, not
+  // about the exact solution, so the sign is taken relative to that mean.
+  const std::size_t first = s.size() / 10;
+  double mean = 0.0;
+  for (std::size_t k = first; k < s.size(); ++k) mean += s[k];
+  if (s.size() > first) mean /= static_cast<double>(s.size() - first);
   int last_sign = 0;
-  for (const auto& m : summary["errors"]) {
-    if (!m.contains("e_signed")) continue;
-    const double s = m["e_signed"].get<double>();
-    c.max_abs_signed = std::max(c.max_abs_signed, std::abs(s));
-    if (std::abs(s) <= osc_threshold) continue;  // within the threshold: no sign
-    const int sign = s > 0 ? 1 : -1;
+  double lo = 0.0, hi = 0.0;
+  for (std::size_t k = first; k < s.size(); ++k) {
+    const double d = s[k] - mean;
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+    if (std::abs(d) <= osc_threshold) continue;  // within the threshold: no sign
+    const int sign = d > 0 ? 1 : -1;
     if (last_sign != 0 && sign != last_sign) ++c.sign_changes;
     last_sign = sign;
   }
-  // An error larger than the velocity scale itself is unbounded growth (a numerical instability
-  // that has not yet thrown a particle out), not the bounded physical oscillation.
-  if (c.max_abs_signed > kDivergedSigned) c.label = "blown_up";
-  else c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
+  c.amplitude = 0.5 * (hi - lo);
+  c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
   return c;
+}
+
+double scale_sound_speed(Config& c, double factor) {
+  if (c.fluid.eos.type != "ideal_gas") {
+    c.fluid.eos.sound_speed *= factor;
+    return c.fluid.eos.sound_speed;
+  }
+  // c = sqrt(gamma p / rho): pressures x factor^2 (and velocities x factor) scale every sound speed
+  // by `factor` at fixed densities. Reported: the sound speed of the left state.
+  for (ShockTubeState* st : {&c.shock_tube.left, &c.shock_tube.right}) {
+    st->pressure *= factor * factor;
+    st->velocity *= factor;
+  }
+  const auto& L = c.shock_tube.left;
+  return L.density > 0.0 ? std::sqrt(c.fluid.eos.gamma * L.pressure / L.density) : 0.0;
 }
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   std::filesystem::create_directories(opt.output_dir);
   const bool fixed = base.time.dt.has_value();
   std::ostringstream csv;
-  csv << "sound_speed," << (fixed ? "dt" : "cfl_factor") << ",class,status,sign_changes,max_abs_e_signed,error,steps,wall_seconds,cause\n";
+  csv << "sound_speed," << (fixed ? "dt" : "cfl_factor") << ",class,status,sign_changes,late_amplitude,max_abs_e_signed,error,steps,wall_seconds,cause\n";
   std::map<std::string, ChartSeries> by_class;
-  for (const char* k : {"stable", "oscillating", "blown_up"}) by_class[k] = ChartSeries{k, {}, {}};
+  by_class["stable"] = ChartSeries{"stable", {}, {}, "forest-green"};
+  by_class["oscillating"] = ChartSeries{"oscillating", {}, {}, "dark-orange"};
+  by_class["blown_up"] = ChartSeries{"blown_up", {}, {}, "red"};
   nlohmann::json runs = nlohmann::json::array();
   for (double fc : opt.sound_speed_factors)
     for (double fs : opt.step_factors) {
       Config c = base;
-      c.fluid.eos.sound_speed *= fc;
+      const double sound_speed = scale_sound_speed(c, fc);
       double step_value = fs;
       if (fixed) {
         c.time.dt = *base.time.dt * fs;
@@ -67,21 +102,34 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       std::string cause_csv = cause;
       for (char& ch : cause_csv)
         if (ch == ',' || ch == '"') ch = ';';
-      csv << fmt(c.fluid.eos.sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
-          << cl.sign_changes << ',' << fmt(cl.max_abs_signed) << ',' << fmt(r.error) << ',' << r.summary["steps"] << ','
+      csv << fmt(sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
+          << cl.sign_changes << ',' << fmt(cl.amplitude) << ',' << fmt(cl.max_abs_signed) << ',' << fmt(r.error) << ',' << r.summary["steps"] << ','
           << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
-      runs.push_back({{"sound_speed", c.fluid.eos.sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
-                      {"sign_changes", cl.sign_changes}, {"max_abs_e_signed", cl.max_abs_signed},
+      runs.push_back({{"sound_speed", sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
+                      {"sign_changes", cl.sign_changes}, {"late_amplitude", cl.amplitude}, {"max_abs_e_signed", cl.max_abs_signed},
                       {"error", r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(r.error)}, {"cause", cause}});
-      by_class[cl.label].x.push_back(c.fluid.eos.sound_speed);
+      by_class[cl.label].x.push_back(sound_speed);
       by_class[cl.label].y.push_back(step_value);
       if (opt.log)
-        *opt.log << "stability: c = " << fmt(c.fluid.eos.sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
-                 << ": " << cl.label << " (sign changes " << cl.sign_changes << ", max |e_signed| " << fmt(cl.max_abs_signed)
+        *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
+                 << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
                  << (cause.empty() ? "" : ", " + cause) << ")\n";
     }
   write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
+  chart.tight = true;
+  // A log axis within one decade gets no tick labels: an axis is linear unless it spans one.
+  const auto spans_decade = [&](std::vector<double> ChartSeries::*axis) {
+    double lo = 0.0, hi = 0.0;
+    for (const auto& [label, series] : by_class)
+      for (double v : series.*axis) {
+        lo = lo > 0.0 ? std::min(lo, v) : v;
+        hi = std::max(hi, v);
+      }
+    return lo > 0.0 && hi / lo >= 10.0;
+  };
+  chart.logx = spans_decade(&ChartSeries::x);
+  chart.logy = spans_decade(&ChartSeries::y);
   for (const char* k : {"stable", "oscillating", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
   const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");

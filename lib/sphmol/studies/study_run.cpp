@@ -1,23 +1,65 @@
 #include "sphmol/studies/study_run.hpp"
 
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "sphmol/run/run_case.hpp"
 
 namespace sphmol {
 
+namespace {
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+}  // namespace
+
 StudyRun run_study_case(const Config& config) {
   StudyRun r;
+  const double cpu0 = process_cpu_seconds();
   RunOptions opt;
   opt.write_files = false;
   opt.final_state = &r.final_state;
-  r.summary = run_case(config, opt);
+  try {
+    r.summary = run_case(config, opt);
+  } catch (const std::exception& e) {
+    // A run that stops with an error mid-way (e.g. smoothing lengths grown past half the periodic
+    // width) ends that point of the sweep, not the study: it counts as blown up, with the message.
+    r.summary = {{"status", "blown_up"},
+                 {"blow_up", {{"cause", std::string("run failed: ") + e.what()}}},
+                 {"steps", 0},
+                 {"rhs_evals", 0},
+                 {"wall_seconds", 0.0},
+                 {"particles", {{"fluid", 0}}},
+                 {"errors", nlohmann::json::array()},
+                 {"final_errors", nlohmann::json::object()}};
+  }
+  r.cpu_seconds = process_cpu_seconds() - cpu0;
   r.blown_up = r.summary.value("status", "completed") == "blown_up";
   const std::string key = r.summary.value("primary_error", "e_rms");
   const auto& fe = r.summary["final_errors"];
   r.error = (!r.blown_up && fe.contains(key)) ? fe[key].get<double>() : std::numeric_limits<double>::infinity();
   return r;
+}
+
+double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n) {
+  // The velocity blocks follow the D position blocks: y = [x_0..x_{D-1} | v_0..v_{D-1} | ...].
+  if (y.size() != yref.size() || y.size() < 2 * dimension * n || n == 0) return std::numeric_limits<double>::infinity();
+  const std::size_t vb = dimension * n, ve = 2 * dimension * n;
+  double sum = 0.0, vmax = 0.0;
+  for (std::size_t k = vb; k < ve; ++k) {
+    const double d = y[k] - yref[k];
+    sum += d * d;
+    vmax = std::max(vmax, std::abs(yref[k]));
+  }
+  const double rms = std::sqrt(sum / static_cast<double>(ve - vb));
+  return vmax > 0 ? rms / vmax : rms;
 }
 
 std::string fmt(double x) {

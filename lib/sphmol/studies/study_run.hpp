@@ -1,6 +1,8 @@
 #pragma once
 // One run of a study: the case in memory (no files), its summary, and "the error": the case's
 // primary final error (Case::primary_error, e.g. e_rms for the channels); +inf for a blown-up run.
+// A run that throws (other than the blow-up detection, which ends it cleanly) is reported as blown up
+// with "run failed: <message>" as its cause.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -12,11 +14,22 @@ namespace sphmol {
 struct StudyRun {
   nlohmann::json summary;
   double error = 0.0;
+  // CPU time of this process during the run (all threads). On a shared machine it varies less than
+  // wall time, which other jobs stretch.
+  double cpu_seconds = 0.0;
   bool blown_up = false;
   std::vector<double> final_state;  // y at t_end (empty if blown up)
 };
 
 StudyRun run_study_case(const Config& config);
+
+// The reference integrator of the time studies (converge --refine time, compare --reference-dt):
+// ARKODE Verner 8(5)6, order 6, at a fixed step.
+inline constexpr const char* kReferenceTable = "ARKODE_VERNER_8_5_6";
+
+// rms over all fluid velocity components of (y - yref), relative to max |v_ref| (n fluid particles
+// in `dimension` dimensions, state layout of core/state_layout.hpp); +inf if the sizes differ.
+double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n);
 
 // Formats a number for CSV/labels with 6 significant digits.
 std::string fmt(double x);

@@ -5,44 +5,28 @@
 // is evaluated with the predicted v_n + dt/2 a_{n-1/2} (O(dt^2) accurate, which keeps the scheme
 // second order). The XSPH correction c = dx/dt - v from that evaluation is used in both drifts;
 // any further first-order fields are advanced by the midpoint rule. Fixed dt, or the CFL step.
-#include <optional>
+// Stepping, checkpoint state and the step hook: leapfrog_base.hpp.
 #include <vector>
 
-#include "sphmol/time/integrator.hpp"
+#include "sphmol/time/leapfrog_base.hpp"
 
 namespace sphmol {
 
-class Leapfrog final : public Integrator {
+class Leapfrog final : public LeapfrogBase {
  public:
-  struct Options {
-    std::optional<double> fixed_step;
-    long max_steps = 10'000'000;
-  };
-  explicit Leapfrog(Options o) : opt_(o) {}
-
+  explicit Leapfrog(Options o) : LeapfrogBase(o) {}
   std::string name() const override { return "leapfrog"; }
-  nlohmann::json describe() const override;
-  void initialize(OdeSystem& sys, double t0, double* y) override;
-  void advance(double tout) override;
-  IntegratorStats stats() const override { return stats_; }
-  double step_toward(double tout) override;
-  // Saves the last RHS, the XSPH correction and the CFL step: a restart is bit-identical.
-  nlohmann::json save_state() const override;
-  void restore_state(const nlohmann::json& state) override;
 
  private:
-  void step(double dt);
+  const char* scheme() const override { return "drift-kick-drift (seed 002 eq 22)"; }
+  void step(double dt) override;
+  void initialized() override;
+  // The XSPH correction is checkpointed too: it was evaluated relative to the predicted velocity.
+  void save_extra(nlohmann::json& j) const override;
+  void restore_extra(const nlohmann::json& j) override;
 
-  Options opt_;
-  OdeSystem* sys_ = nullptr;
-  double* y_ = nullptr;
-  double t_ = 0.0;
-  std::vector<double> f_, ymid_, fmid_;
+  std::vector<double> ymid_, fmid_;
   std::vector<double> c_;  // XSPH correction dx/dt - v of the latest evaluation, per position component
-  IntegratorStats stats_;
-  // CFL step of the latest own evaluation, cached so that other rhs() calls on the system (output
-  // fields, VTK) cannot change the step sequence.
-  double cfl_step_ = 0.0;
 };
 
 }  // namespace sphmol

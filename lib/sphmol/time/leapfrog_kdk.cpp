@@ -1,29 +1,10 @@
 #include "sphmol/time/leapfrog_kdk.hpp"
 
-#include <cmath>
-#include <stdexcept>
-#include <string>
-
-#include "sphmol/time/blow_up.hpp"
-
 namespace sphmol {
 
-nlohmann::json LeapfrogKdk::describe() const {
-  nlohmann::json j{{"name", name()}, {"scheme", "kick-drift-kick (velocity Verlet)"}};
-  if (opt_.fixed_step) j["dt"] = *opt_.fixed_step;
-  else j["step"] = "cfl";
-  return j;
-}
-
-void LeapfrogKdk::initialize(OdeSystem& sys, double t0, double* y) {
-  sys_ = &sys;
-  y_ = y;
-  t_ = t0;
-  const std::size_t n = sys.size();
-  f_.assign(n, 0.0);
-  ypred_.assign(n, 0.0);
-  fnew_.assign(n, 0.0);
-  sys.rhs(t0, y, f_.data());  // a_0
+void LeapfrogKdk::initialized() {
+  ypred_.assign(sys_->size(), 0.0);
+  fnew_.assign(sys_->size(), 0.0);
 }
 
 void LeapfrogKdk::step(double dt) {
@@ -44,27 +25,10 @@ void LeapfrogKdk::step(double dt) {
   }
   for (std::size_t k = ve; k < n; ++k) ypred_[k] = y[k] + dt * f_[k];
   sys_->rhs(t_ + dt, ypred_.data(), fnew_.data());
+  evaluated();
   for (std::size_t k = vb; k < ve; ++k) y[k] += 0.5 * dt * fnew_[k];
   for (std::size_t k = ve; k < n; ++k) y[k] += 0.5 * dt * (f_[k] + fnew_[k]);
   f_.swap(fnew_);
-  t_ += dt;
-  ++stats_.steps;
-  stats_.last_step = dt;
-}
-
-void LeapfrogKdk::advance(double tout) {
-  while (t_ < tout) {
-    double dt = opt_.fixed_step ? *opt_.fixed_step : sys_->stable_step();
-    if (!(dt > 0.0) || !std::isfinite(dt)) throw BlowUp(t_, -1, "step-size collapse: the CFL step is " + std::to_string(dt));
-    // Land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
-    const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
-    if (last) dt = tout - t_;
-    if (stats_.steps >= opt_.max_steps)
-      throw std::runtime_error("leapfrog_kdk: time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " + std::to_string(t_));
-    step(dt);
-    if (last) t_ = tout;
-    after_step(t_, y_, dt);
-  }
 }
 
 }  // namespace sphmol
