@@ -19,14 +19,18 @@ nlohmann::json run(const std::string& file, const std::vector<std::string>& over
 }
 }  // namespace
 
-TEST_CASE("taylor_green: early viscous decay at 30 x 30", "[integration][taylor_green]") {
-  const auto s = run("taylor_green.yaml", {"discretization.particles_across=30", "time.t_end=0.1",
-                                           "output.times=[0.02, 0.04, 0.06, 0.08, 0.1]"});
+TEST_CASE("taylor_green: viscous decay to t = 1 s at 30 x 30", "[integration][taylor_green]") {
+  // Measured with the shipped settings at 30 x 30 (leapfrog, ~650 steps): L1 0.037, decay rate within
+  // 1 %, max|v| within 8 %. Checked by hand: viscosity off (nu = 1e-6) gives a decay-rate error ~1; the
+  // transport velocity off lets the stretched lattice break down (L1 > 0.1 at 50 x 50); a wrong sign
+  // on the pressure term blows the vortex up (see README).
+  const auto s = run("taylor_green.yaml", {"discretization.particles_across=30", "time.t_end=1",
+                                           "output.times=[0.2, 0.4, 0.6, 0.8, 1]"});
   const auto& f = s["final_errors"];
   INFO(f.dump());
-  CHECK(f["decay_rate_rel_error"].get<double>() < 0.2);
-  CHECK(f["maxv_rel_error"].get<double>() < 0.01);
-  CHECK(f["L1_velocity"].get<double>() < 0.05);
+  CHECK(f["decay_rate_rel_error"].get<double>() < 0.1);
+  CHECK(f["maxv_rel_error"].get<double>() < 0.15);
+  CHECK(f["L1_velocity"].get<double>() < 0.06);
 }
 
 TEST_CASE("hydrostatic: pressure and drift stay bounded (coarse, 4 s)", "[integration][hydrostatic]") {
