@@ -91,6 +91,8 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
     std::ostringstream name;
     name << "centrelines_t" << std::setprecision(6) << t << ".csv";
     write_file_atomically(out.path(name.str()), csv.str());
+    last_csv_ = name.str();
+    last_t_ = t;
   }
   r["u_rms"] = std::sqrt(su / nu);
   r["u_max"] = mu;
@@ -112,6 +114,32 @@ void CavityCase::annotate(nlohmann::json& summary) const {
   summary["interpolation"] = "Shepard (kernel-weighted, fluid particles)";
   summary["steadiness"] = "rel_ke_change between successive outputs; steady if < 1e-3";
   summary["discretization"]["spacing"] = spacing_;
+}
+
+std::vector<PlotScript> CavityCase::plots(const OutputSink& out) const {
+  if (!ghia_ || last_csv_.empty()) return {};
+  const std::string f = last_csv_;
+  // Rows are "line,coord,sph,ghia"; the ternary keeps the rows of one centre line (1/0 = skip).
+  auto sel = [](const std::string& line, const std::string& x, const std::string& y) {
+    return "(strcol(1) eq '" + line + "' ? " + x + " : 1/0):" + y;
+  };
+  std::ostringstream s;
+  s << "# Cavity centre lines vs Ghia, Ghia & Shin (1982) (sph-mol CavityCase)\n"
+    << "set terminal pngcairo size 1200,560 font ',11'\n"
+    << "set output 'centrelines.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#l'\n"  // skips the comment and the 'line,coord,sph,ghia' header
+    << "set multiplot layout 1,2 title \"Lid-driven cavity, Re = " << Re_ << ", t = " << last_t_
+    << " s: lines SPH, points Ghia et al. (1982)\" noenhanced\n"
+    << "set grid\nset key bottom right\n"
+    << "set xlabel 'u / U at x = 0.5'\nset ylabel 'y / L'\nset yrange [0:1]\n"
+    << "plot '" << f << "' using " << sel("u_x0.5", "$3", "2") << " with linespoints pt 6 lw 2 title 'SPH', \\\n"
+    << "  '" << f << "' using " << sel("u_x0.5", "$4", "2") << " with points pt 7 ps 1.3 title 'Ghia'\n"
+    << "set xlabel 'x / L'\nset ylabel 'v / U at y = 0.5'\nset xrange [0:1]\nset autoscale y\nset key top right\n"
+    << "plot '" << f << "' using " << sel("v_y0.5", "$2", "3") << " with linespoints pt 6 lw 2 title 'SPH', \\\n"
+    << "  '" << f << "' using " << sel("v_y0.5", "$2", "4") << " with points pt 7 ps 1.3 title 'Ghia'\n"
+    << "unset multiplot\n";
+  return {{"centrelines.png", s.str()}};
 }
 
 }  // namespace sphmol

@@ -22,11 +22,15 @@ class CavityCase final : public Case<2> {
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   void annotate(nlohmann::json& summary) const override;
+  // centrelines.png: u(x = 0.5, y) and v(x, y = 0.5) at the last output against the Ghia points.
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   std::optional<GhiaTable> ghia_;
   double U_ = 1.0, L_ = 1.0, Re_ = 0.0, spacing_ = 0.0, ke_prev_ = -1.0;
   std::string kernel_;
+  std::string last_csv_;  // centre-line file of the latest output (plots)
+  double last_t_ = 0.0;
 };
 
 }  // namespace sphmol
