@@ -121,8 +121,8 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
       {"particles_across: 20", "particles_across: 20\n  position_noise: 0.01",
        "case.yaml:14: discretization.position_noise: is implemented for the box scenes (taylor_green, cavity, "
        "hydrostatic), not 'couette'"},
-      {"particles_across: 20", "particles_across: 20\n  transport_velocity: {time_scale: -1}",
-       "case.yaml:14: discretization.transport_velocity.time_scale: -1 is out of range (allowed: >= 0 s; 0 = 0.25 h / c)"},
+      {"particles_across: 20", "particles_across: 20\n  transport_velocity: {step_factor: 0}",
+       "case.yaml:14: discretization.transport_velocity.step_factor: 0 is out of range (allowed: > 0 (tau = step_factor h / c))"},
       {"particles_across: 20", "particles_across: 20\n  skin: -0.1",
        "case.yaml:14: discretization.skin: -0.1 is out of range (allowed: >= 0 (in units of h))"},
       {"particles_across: 20", "particles_across: 20\n  wall_layers: -1",

@@ -65,7 +65,7 @@ struct ArtificialViscosityConfig {
 struct TransportVelocityConfig {
   bool enabled = false;              // true when the map is given, unless it says enabled: false
   double background_pressure = 0.0;  // p_b [Pa] on the particle positions only, >= 0; 0 = rho0 c^2
-  double time_scale = 0.0;           // tau [s] of the shift du, >= 0; 0 = 0.25 h / c (Adami's acoustic step)
+  double step_factor = 0.25;         // time scale of the shift du: tau = step_factor h / c, > 0 (0.25: Adami's step)
   bool extra_stress = true;          // the A = rho v (v~ - v) term in the momentum equation
 };
 

@@ -353,13 +353,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       check(av, "eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
     }
     if (disc.has("transport_velocity")) {
-      MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "time_scale", "extra_stress"});
+      MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "step_factor", "extra_stress"});
       auto& t = d.transport_velocity;
       t.enabled = tv.boolean("enabled").value_or(true);
       if (const auto v = tv.real("background_pressure")) t.background_pressure = *v;
       check(tv, "background_pressure", t.background_pressure >= 0, t.background_pressure, ">= 0 Pa; 0 = rho0 c^2");
-      if (const auto v = tv.real("time_scale")) t.time_scale = *v;
-      check(tv, "time_scale", t.time_scale >= 0, t.time_scale, ">= 0 s; 0 = 0.25 h / c");
+      if (const auto v = tv.real("step_factor")) t.step_factor = *v;
+      check(tv, "step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
       if (const auto v = tv.boolean("extra_stress")) t.extra_stress = *v;
       // Its background pressure would pull a free surface inward, and it needs one constant c.
       if (t.enabled && (c.case_name == "hydrostatic" || c.case_name == "shock_tube" || c.fluid.eos.type == "ideal_gas"))

@@ -110,7 +110,7 @@ std::string to_yaml(const Config& c) {
   if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
   if (d.transport_velocity.enabled)
     y << "  transport_velocity: {background_pressure: " << num(d.transport_velocity.background_pressure)
-      << ", time_scale: " << num(d.transport_velocity.time_scale)
+      << ", step_factor: " << num(d.transport_velocity.step_factor)
       << ", extra_stress: " << (d.transport_velocity.extra_stress ? "true" : "false") << "}\n";
   y << "  energy: " << (d.energy ? "true" : "false") << "\n"
     << "  smoothing_length: " << d.smoothing_length << "\n";

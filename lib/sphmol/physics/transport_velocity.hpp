@@ -6,7 +6,7 @@
 // keeps the particles evenly spread (no tensile clumping where the gauge pressure is negative, no
 // streamline-aligned lattice) without the spurious force a background pressure in the momentum adds.
 // Adami et al. take du from one time step (tau = dt); an ODE right-hand side has no step, so tau is a
-// fixed time scale (default their acoustic step 0.25 h / c, with p_b = rho0 c^2).
+// fixed time scale, tau = step_factor h / c (default 0.25: their acoustic step), with p_b = rho0 c^2.
 // Since v is now carried along v~, the momentum gets the extra stress A = rho v (v~ - v) (their eq. 8/12):
 //   dv_i/dt += (1/m_i) sum_j (V_i^2 + V_j^2) (A_i + A_j)/2 . grad_i W_ij,   (A . g)_a = sum_b A_ab g_b,
 // optional (`extra_stress`). Wall particles enter the sums with their rest volume and A = 0.

@@ -122,7 +122,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     const double c = fluid.eos.sound_speed;
     terms.push_back(std::make_unique<TransportVelocity<D>>(
         tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c,
-        tv.time_scale > 0.0 ? tv.time_scale : 0.25 * h / c, tv.extra_stress));
+        tv.step_factor * h / c, tv.extra_stress));
   }
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
