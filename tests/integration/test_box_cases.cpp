@@ -20,14 +20,18 @@ nlohmann::json run(const std::string& file, const std::vector<std::string>& over
 }
 }  // namespace
 
-TEST_CASE("taylor_green: early viscous decay at 30 x 30", "[integration][taylor_green]") {
-  const auto s = run("taylor_green.yaml", {"discretization.particles_across=30", "time.t_end=0.1",
-                                           "output.times=[0.02, 0.04, 0.06, 0.08, 0.1]"});
+TEST_CASE("taylor_green: viscous decay to t = 1 s at 30 x 30", "[integration][taylor_green]") {
+  // Measured with the shipped settings at 30 x 30 (leapfrog, ~650 steps): L1 0.030, decay rate within
+  // 1.3 %, max|v| within 4.2 %. Checked by hand: viscosity off (nu = 1e-6) gives a decay-rate error ~1; the
+  // transport velocity off lets the stretched lattice break down (L1 > 0.1 at 50 x 50); a wrong sign
+  // on the pressure term blows the vortex up (see README).
+  const auto s = run("taylor_green.yaml", {"discretization.particles_across=30", "time.t_end=1",
+                                           "output.times=[0.2, 0.4, 0.6, 0.8, 1]"});
   const auto& f = s["final_errors"];
   INFO(f.dump());
-  CHECK(f["decay_rate_rel_error"].get<double>() < 0.2);
-  CHECK(f["maxv_rel_error"].get<double>() < 0.01);
-  CHECK(f["L1_velocity"].get<double>() < 0.05);
+  CHECK(f["decay_rate_rel_error"].get<double>() < 0.1);
+  CHECK(f["maxv_rel_error"].get<double>() < 0.15);
+  CHECK(f["L1_velocity"].get<double>() < 0.06);
   // Fully periodic, no walls, no body force: the pairwise-antisymmetric forces conserve momentum to
   // round-off (measured |drift| / sum m|v| ~ 3e-17 in both directions).
   const auto& cons = s["conservation"];
@@ -45,12 +49,17 @@ TEST_CASE("hydrostatic: pressure and drift stay bounded (coarse, 4 s)", "[integr
   CHECK(f["max_drift"].get<double>() < 2.0);
 }
 
-TEST_CASE("cavity: centre lines approach Ghia et al. (20 x 20, t = 3 s)", "[integration][cavity]") {
-  const auto s = run("cavity.yaml", {"discretization.particles_across=20", "time.dt=1.2e-3", "time.t_end=3",
-                                     "output.times=[3]"});
+TEST_CASE("cavity: steady centre lines near Ghia et al. (20 x 20, t = 12 s)", "[integration][cavity]") {
+  // Measured with the shipped settings at 20 x 20 (h = 2 dx = 0.1, 6000 leapfrog steps): steady from
+  // t ~ 8 s, u_rms 0.081, v_rms 0.020 (the coarse h smooths the lid boundary layer; 40 x 40 gives
+  // ~0.016 / 0.008, see README). Checked by hand: wrong sign on the pressure term and the transport
+  // velocity off both fail these bounds (see README).
+  const auto s = run("cavity.yaml", {"discretization.particles_across=20", "time.dt=2e-3", "time.t_end=12",
+                                     "output.times=[8, 10, 12]"});
   REQUIRE(s["compared"].get<bool>());
   const auto& f = s["final_errors"];
   INFO(f.dump());
-  CHECK(f["u_rms"].get<double>() < 0.08);
-  CHECK(f["v_rms"].get<double>() < 0.08);
+  CHECK(f["steady"].get<bool>());
+  CHECK(f["u_rms"].get<double>() < 0.1);
+  CHECK(f["v_rms"].get<double>() < 0.035);
 }

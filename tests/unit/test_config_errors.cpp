@@ -116,6 +116,13 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
        "case.yaml:14: discretization.xsph: 1.5 is out of range (allowed: [0, 1]; 0 = off)"},
       {"particles_across: 20", "particles_across: 20\n  xsph: -0.1",
        "case.yaml:14: discretization.xsph: -0.1 is out of range (allowed: [0, 1]; 0 = off)"},
+      {"particles_across: 20", "particles_across: 20\n  position_noise: 0.3",
+       "case.yaml:14: discretization.position_noise: 0.3 is out of range (allowed: [0, 0.25] particle spacings; 0 = off)"},
+      {"particles_across: 20", "particles_across: 20\n  position_noise: 0.01",
+       "case.yaml:14: discretization.position_noise: is implemented for the box scenes (taylor_green, cavity, "
+       "hydrostatic), not 'couette'"},
+      {"particles_across: 20", "particles_across: 20\n  transport_velocity: {step_factor: 0}",
+       "case.yaml:14: discretization.transport_velocity.step_factor: 0 is out of range (allowed: > 0 (tau = step_factor h / c))"},
       {"particles_across: 20", "particles_across: 20\n  skin: -0.1",
        "case.yaml:14: discretization.skin: -0.1 is out of range (allowed: >= 0 (in units of h))"},
       {"particles_across: 20", "particles_across: 20\n  wall_layers: -1",

@@ -226,3 +226,25 @@ TEST_CASE("config: to_yaml round-trips through load_config_string", "[config]") 
     CHECK(b.time.t_end == 0.30000000000000004);
   }
 }
+
+TEST_CASE("config: transport velocity and position noise of the shipped Taylor-Green file round-trip", "[config]") {
+  const Config a = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/taylor_green.yaml");
+  const auto& ta = a.discretization.transport_velocity;
+  CHECK(ta.enabled);
+  CHECK(ta.step_factor == 0.125);
+  CHECK(ta.background_pressure == 0.0);  // rho0 c^2
+  CHECK(ta.extra_stress);
+  CHECK(a.discretization.position_noise == 0.01);
+  const Config b = load_config_string(to_yaml(a), {}, "case.yaml");
+  const auto& tb = b.discretization.transport_velocity;
+  CHECK(tb.enabled == ta.enabled);
+  CHECK(tb.step_factor == ta.step_factor);
+  CHECK(tb.background_pressure == ta.background_pressure);
+  CHECK(tb.extra_stress == ta.extra_stress);
+  CHECK(b.discretization.position_noise == a.discretization.position_noise);
+  // Switched off by an override: nothing of it is written back.
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/taylor_green.yaml",
+                               {"discretization.transport_velocity.enabled=false"});
+  CHECK_FALSE(c.discretization.transport_velocity.enabled);
+  CHECK_THAT(to_yaml(c), !Contains("transport_velocity"));
+}

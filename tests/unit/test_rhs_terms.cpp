@@ -15,6 +15,7 @@
 #include "sphmol/physics/strain_rate.hpp"
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
+#include "sphmol/physics/transport_velocity.hpp"
 #include "sphmol/physics/xsph.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
@@ -207,5 +208,62 @@ TEST_CASE("XSPH leaves a uniform flow alone and body force adds g", "[rhs]") {
   for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
     CHECK(f.dxdt[0][i] == Approx(0.3).epsilon(1e-14));
     CHECK(f.dvdt[1][i] == Approx(-9.81));
+  }
+}
+
+TEST_CASE("transport velocity: nothing on a lattice, pushes displaced particles back, stress conserves momentum",
+          "[rhs][transport_velocity]") {
+  const double pb = 2.0e5, tau = 1e-4;
+  SECTION("perfect periodic lattice: no shift, no extra stress") {
+    Fixture f(12, true);
+    for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[0][i] = std::sin(2 * M_PI * f.w.x[1][i]);
+    f.pairs();
+    SummationDensity<2>().apply(f.w);
+    TransportVelocity<2>(pb, tau, true).apply(f.w);
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i)
+      for (int d = 0; d < 2; ++d) {
+        CHECK(std::abs(f.dxdt[d][i]) < 1e-12);
+        CHECK(std::abs(f.dvdt[d][i]) < 1e-9);
+      }
+  }
+  SECTION("jittered lattice: the shift points back towards the lattice sites, linear in tau p_b") {
+    Fixture f(14, true, 0, 0.1);
+    f.pairs();
+    SummationDensity<2>().apply(f.w);
+    TransportVelocity<2>(pb, tau, false).apply(f.w);
+    double along = 0.0, norm = 0.0;
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+      const int ix = static_cast<int>(i % 14), iy = static_cast<int>(i / 14);
+      const double xi[2] = {f.P.x[0][i] - (ix + 0.5) * f.dx, f.P.x[1][i] - (iy + 0.5) * f.dx};
+      for (int d = 0; d < 2; ++d) {
+        along += f.dxdt[d][i] * xi[d];
+        norm += f.dxdt[d][i] * f.dxdt[d][i];
+      }
+    }
+    REQUIRE(norm > 0);
+    CHECK(along < 0);  // back towards the sites, on balance
+    const double first = f.dxdt[0][5];
+    f.dxdt[0].assign(f.P.n_fluid, 0.0);
+    f.dxdt[1].assign(f.P.n_fluid, 0.0);
+    TransportVelocity<2>(2 * pb, 3 * tau, false).apply(f.w);
+    CHECK(f.dxdt[0][5] == Approx(6 * first).epsilon(1e-12));
+  }
+  SECTION("extra stress: pairwise, so total momentum is conserved on a disordered set") {
+    Fixture f(14, true, 0, 0.2);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[0][i] = u(rng), f.w.v[1][i] = u(rng);
+    f.pairs();
+    SummationDensity<2>().apply(f.w);
+    TransportVelocity<2>(pb, tau, true).apply(f.w);
+    double px = 0, py = 0, scale = 0;
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+      px += f.P.mass[i] * f.dvdt[0][i];
+      py += f.P.mass[i] * f.dvdt[1][i];
+      scale += f.P.mass[i] * std::hypot(f.dvdt[0][i], f.dvdt[1][i]);
+    }
+    REQUIRE(scale > 0);
+    CHECK(std::abs(px) < 1e-12 * scale);
+    CHECK(std::abs(py) < 1e-12 * scale);
   }
 }

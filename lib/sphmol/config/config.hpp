@@ -61,6 +61,14 @@ struct ArtificialViscosityConfig {
   double eta = 0.1;    // eta / h_ij, > 0
 };
 
+// Transport-velocity formulation (Adami, Hu & Adams 2013; physics/transport_velocity.hpp); absent = off.
+struct TransportVelocityConfig {
+  bool enabled = false;              // true when the map is given, unless it says enabled: false
+  double background_pressure = 0.0;  // p_b [Pa] on the particle positions only, >= 0; 0 = rho0 c^2
+  double step_factor = 0.25;         // time scale of the shift du: tau = step_factor h / c, > 0 (0.25: Adami's step)
+  bool extra_stress = true;          // the A = rho v (v~ - v) term in the momentum equation
+};
+
 // The two initial states of the shock tube (seed 003 §3.2), left for x < 0, right for x >= 0.
 struct ShockTubeState {
   double density = 0.0, pressure = 0.0, velocity = 0.0;
@@ -78,6 +86,7 @@ struct DiscretizationConfig {
   std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117) | symmetric_116 (000 eq 116)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122) | none (inviscid)
   double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
+  double position_noise = 0.0;      // box scenes: seeded random displacement of the initial lattice [spacings], [0, 0.25]
   std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive
   std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
   // wall_particles: "rest" (walls keep rest density and its EOS pressure) or "extrapolated" (Adami 2012
@@ -92,6 +101,7 @@ struct DiscretizationConfig {
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0
   ArtificialViscosityConfig artificial_viscosity;
+  TransportVelocityConfig transport_velocity;
   bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state
   std::string smoothing_length = "constant";  // constant | density (003 eq 2.67) | ode (003 eq 2.68)
 };

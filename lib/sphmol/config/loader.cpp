@@ -253,7 +253,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive",
-                                "artificial_viscosity", "energy", "smoothing_length"});
+                                "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
+                                "position_noise"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -285,6 +286,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris", "none"});
     if (const auto v = disc.real("xsph")) d.xsph = *v;
     check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
+    if (const auto v = disc.real("position_noise")) {
+      d.position_noise = *v;
+      check(disc, "position_noise", d.position_noise >= 0 && d.position_noise <= 0.25, d.position_noise,
+            "[0, 0.25] particle spacings; 0 = off");
+      if (d.position_noise > 0 && c.case_name != "taylor_green" && c.case_name != "cavity" && c.case_name != "hydrostatic")
+        disc.fail("position_noise", "is implemented for the box scenes (taylor_green, cavity, hydrostatic), not '" +
+                                        c.case_name + "'");
+    }
     if (const auto v = disc.string("boundary"))
       d.boundary = disc.choice("boundary", *v, {"wall_particles", "ghost", "virtual_repulsive"});
     if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris"});
@@ -345,6 +354,20 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       check(av, "beta", a.beta >= 0, a.beta, ">= 0");
       if (const auto v = av.real("eta")) a.eta = *v;
       check(av, "eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
+    }
+    if (disc.has("transport_velocity")) {
+      MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "step_factor", "extra_stress"});
+      auto& t = d.transport_velocity;
+      t.enabled = tv.boolean("enabled").value_or(true);
+      if (const auto v = tv.real("background_pressure")) t.background_pressure = *v;
+      check(tv, "background_pressure", t.background_pressure >= 0, t.background_pressure, ">= 0 Pa; 0 = rho0 c^2");
+      if (const auto v = tv.real("step_factor")) t.step_factor = *v;
+      check(tv, "step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
+      if (const auto v = tv.boolean("extra_stress")) t.extra_stress = *v;
+      // Its background pressure would pull a free surface inward, and it needs one constant c.
+      if (t.enabled && (c.case_name == "hydrostatic" || c.case_name == "shock_tube" || c.fluid.eos.type == "ideal_gas"))
+        disc.fail("transport_velocity", "needs a confined liquid with a constant sound speed (no free surface, not "
+                                        "ideal_gas); case '" + c.case_name + "' has none");
     }
     if (const auto v = disc.boolean("energy")) d.energy = *v;
     if (const auto v = disc.string("smoothing_length"))

@@ -107,6 +107,11 @@ std::string to_yaml(const Config& c) {
   if (d.artificial_viscosity.enabled)
     y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
       << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";
+  if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
+  if (d.transport_velocity.enabled)
+    y << "  transport_velocity: {background_pressure: " << num(d.transport_velocity.background_pressure)
+      << ", step_factor: " << num(d.transport_velocity.step_factor)
+      << ", extra_stress: " << (d.transport_velocity.extra_stress ? "true" : "false") << "}\n";
   y << "  energy: " << (d.energy ? "true" : "false") << "\n"
     << "  smoothing_length: " << d.smoothing_length << "\n";
   y << "time:\n"

@@ -23,6 +23,7 @@
 #include "sphmol/physics/strain_rate.hpp"
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
+#include "sphmol/physics/transport_velocity.hpp"
 #include "sphmol/physics/xsph.hpp"
 #include "sphmol/rhs/kernel_pass_variable_h.hpp"
 
@@ -122,6 +123,12 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     terms.push_back(std::make_unique<RepulsiveBoundary<D>>(law));
   }
   if (disc.xsph > 0.0) terms.push_back(std::make_unique<Xsph<D>>(disc.xsph));
+  if (const auto& tv = disc.transport_velocity; tv.enabled) {
+    const double c = fluid.eos.sound_speed;
+    terms.push_back(std::make_unique<TransportVelocity<D>>(
+        tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c,
+        tv.step_factor * h / c, tv.extra_stress));
+  }
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);

@@ -5,6 +5,7 @@
 
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
+#include "sphmol/scenes/position_noise.hpp"
 
 namespace sphmol {
 
@@ -42,6 +43,7 @@ BoxScene build_box_scene(const Config& config, double Lx, double Ly, double flui
   s.domain.hi = {periodic ? Lx : Lx + layers * dx, periodic ? Ly : Ly + layers * dx};
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) s.particles.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, m, rho0);
+  add_position_noise(s.particles, disc.position_noise * dx);
   if (periodic) return s;
 
   const std::array<double, 2> L{Lx, Ly};

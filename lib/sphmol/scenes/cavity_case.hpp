@@ -5,8 +5,14 @@
 //   u_rms, u_max = RMS / max over the table points of (u_sph(0.5, y) - u_ghia) / U, and v likewise on
 //   y = 0.5; the table's end points on the walls (prescribed values, not results) are left out.
 // SPH values at a point are Shepard-interpolated: sum_j V_j u_j W / sum_j V_j W over fluid particles.
-// Steadiness: rel_ke_change = |KE(t_k) - KE(t_{k-1})| / KE(t_k) between successive outputs, reported
-// per output; final_errors also says whether the last change is below 1e-3.
+// Steadiness, per output, as changes per convective time L/U since the previous output (so that it does
+// not depend on the output spacing):
+//   ke_rate = |KE(t_k) - KE(t_{k-1})| / KE(t_k) / ((t_k - t_{k-1}) U / L),
+//   centreline_rate = RMS over the table points of (u_k - u_{k-1}) / U (both lines) / ((t_k - t_{k-1}) U / L);
+// final_errors.steady: both below 5e-3 at the last output. SPH particle noise keeps both near 1e-3 once
+// the flow has settled (measured), so the threshold separates the spin-up (~1e-2 and more) from noise,
+// and keeps the run-to-run change of the centre lines well below their deviation from Ghia.
+// (rel_ke_change, the plain relative change between outputs, is kept for comparison with older runs.)
 #include <optional>
 #include <vector>
 
@@ -22,11 +28,18 @@ class CavityCase final : public Case<2> {
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   void annotate(nlohmann::json& summary) const override;
+  // centrelines.png: u(x = 0.5, y) and v(x, y = 0.5) at the last output against the Ghia points.
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   std::optional<GhiaTable> ghia_;
   double U_ = 1.0, L_ = 1.0, Re_ = 0.0, spacing_ = 0.0, ke_prev_ = -1.0;
   std::string kernel_;
+  static constexpr double kSteadyRate = 5e-3;
+  double t_prev_ = 0.0;
+  std::vector<double> line_prev_;  // centre-line values at the previous output
+  std::string last_csv_;  // centre-line file of the latest output (plots)
+  double last_t_ = 0.0;
 };
 
 }  // namespace sphmol

@@ -90,4 +90,23 @@ void TaylorGreenCase::annotate(nlohmann::json& summary) const {
   summary["discretization"]["spacing"] = spacing_;
 }
 
+std::vector<PlotScript> TaylorGreenCase::plots(const OutputSink& out) const {
+  if (t_.empty()) return {};
+  const double b = ref_.decay_rate() / L_;
+  std::ostringstream s;
+  s << std::setprecision(12) << "# Taylor-Green decay: SPH max|v| vs the exact U e^{bt} (sph-mol TaylorGreenCase)\n"
+    << "set terminal pngcairo size 900,640 font ',11'\n"
+    << "set output 'decay.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#t'\n"  // skips the comment and the 't,maxv_sph,maxv_exact' header
+    << "set title \"Taylor-Green, Re = " << ref_.Re << ": max|v| (points SPH, line exact U e^{bt}, b = " << b
+    << " 1/s)\" noenhanced\n"
+    << "set xlabel 't [s]'\nset ylabel 'max |v| [m/s]'\nset logscale y\nset grid\nset key top right\n"
+    << "set xrange [0:" << t_.back() << "]\n"
+    << "U = " << ref_.U << "\nb = " << b << "\n"
+    << "plot U*exp(b*x) with lines lw 2 title 'exact', \\\n"
+    << "  'decay.csv' using 1:2 with points pt 7 ps 1.2 title 'SPH'\n";
+  return {{"decay.png", s.str()}};
+}
+
 }  // namespace sphmol

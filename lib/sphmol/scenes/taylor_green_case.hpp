@@ -19,6 +19,8 @@ class TaylorGreenCase final : public Case<2> {
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   void annotate(nlohmann::json& summary) const override;
+  // decay.png: max|v| of the particles at the output times against U e^{bt} (log scale).
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   TaylorGreenVortex ref_;
