@@ -16,6 +16,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   a_ = config.geometry.column[0];
   H_ = config.geometry.column[1];
   Lx_ = config.geometry.box[0];
+  t_end_ = config.time.t_end;
   g_ = s.g;
   dx_ = s.spacing;
   wall_layers_ = s.wall_layers;
@@ -143,11 +144,14 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
     << "set datafile commentschars '#t'\n"
     << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"
     << "set xlabel 't [s]'\nset ylabel 'x_{front} [m]'\nset key left top\nset grid\n"
-    << "set yrange [" << a_ * 0.9 << ":" << Lx_ * 1.05 << "]\n"
+    << "set key right bottom box opaque\n"
+    << "set xrange [0:" << t_end_ << "]\nset yrange [" << a_ * 0.9 << ":" << Lx_ * 1.05 << "]\n"
+    << "set samples 400\n"
+    << "ritter(t) = " << a_ << " + 2.0 * sqrt(" << g_ << " * " << H_ << ") * t\n"
     << "plot 'front.csv' using 1:3 with linespoints pt 7 ps 0.6 lw 1.5 title 'SPH', \\\n"
-    << "  'front.csv' using 1:4 with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t', \\\n"
-    << "  'front_reference.csv' index 0 using 2:3 with points pt 5 ps 1 title 'Martin & Moyce 1952 (n^2 = 2)', \\\n"
-    << "  'front_reference.csv' index 1 using 2:3 with points pt 9 ps 1 title 'Koshizuka & Oka 1996', \\\n"
+    << "  ritter(x) with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t (upper bound)', \\\n"
+    << "  'front_reference.csv' index 0 using 2:3 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
+    << "  'front_reference.csv' index 1 using 2:3 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n"
     << "  " << Lx_ << " with lines lc rgb 'black' lw 1 title 'right wall'\n";
   return {{"front.png", s.str()}};
 }

@@ -32,7 +32,7 @@ class DamBreakCase final : public Case<2> {
   std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
-  double a_ = 0.0, H_ = 0.0, Lx_ = 0.0, g_ = 0.0, dx_ = 0.0, mass0_ = 0.0;
+  double a_ = 0.0, H_ = 0.0, Lx_ = 0.0, t_end_ = 0.0, g_ = 0.0, dx_ = 0.0, mass0_ = 0.0;
   std::size_t n_fluid0_ = 0, n_wall_ = 0;
   int wall_layers_ = 0;
   std::string csv_;  // front.csv rows so far
