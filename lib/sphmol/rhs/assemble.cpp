@@ -45,7 +45,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   else if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
   else throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
   const bool dynamic_walls = disc.wall_pressure == "dynamic";
-  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>());
+  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
   if (disc.density_diffusion > 0.0)
     terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
