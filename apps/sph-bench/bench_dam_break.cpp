@@ -4,6 +4,8 @@
 // "us/particle-step" = wall time / (steps x all particles), the number the issue holds against
 // DualSPHysics (0.67 us on 1 thread, 0.37 on 2).
 //   sph-bench --benchmark_filter=DamBreak
+// On a shared machine set OMP_WAIT_POLICY=passive: spinning at barriers while the partner thread is
+// descheduled made 2 threads 4x slower than 1 at load ~10 on 2 cores (1.37x faster with passive).
 // Argument: threads. The column first collapses for 200 steps (leaving the state at rest would
 // understate the neighbour-list rebuilds).
 #include <benchmark/benchmark.h>
