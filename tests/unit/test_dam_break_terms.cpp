@@ -183,3 +183,24 @@ TEST_CASE("dam-break reference fronts: Martin & Moyce and Koshizuka & Oka interp
   for (const auto& pt : martin_moyce_1952_n2_2()) CHECK(pt.Z < 1.0 + 2.0 * pt.T);
   for (const auto& pt : koshizuka_oka_1996()) CHECK(pt.Z <= 1.0 + 2.0 * pt.T);
 }
+
+TEST_CASE("dam_break config: new keys are checked and name the key", "[config][dam_break]") {
+  const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
+  auto error_of = [&](const std::vector<std::string>& sets) -> std::string {
+    try {
+      load_config(file, sets);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "<no error>";
+  };
+  CHECK(error_of({}) == "<no error>");
+  CHECK_THAT(error_of({"discretization.density=summation", "discretization.density_diffusion=0"}),
+             Catch::Contains("discretization.wall_pressure") && Catch::Contains("continuity"));
+  CHECK_THAT(error_of({"discretization.wall_pressure=rest", "discretization.density=summation"}),
+             Catch::Contains("discretization.density_diffusion") && Catch::Contains("continuity"));
+  CHECK_THAT(error_of({"discretization.density_diffusion=-0.1"}), Catch::Contains("discretization.density_diffusion"));
+  CHECK_THAT(error_of({"geometry.column=[5, 2]"}), Catch::Contains("geometry.column") && Catch::Contains("out of range"));
+  CHECK_THAT(error_of({"geometry.column=[1]"}), Catch::Contains("geometry.column"));
+  CHECK_THAT(error_of({"case=hydrostatic"}), Catch::Contains("geometry.column") && Catch::Contains("dam_break"));
+}
