@@ -26,6 +26,7 @@ TEST_CASE("Tait EOS: zero at rest density, slope c0^2, inverse, clamp", "[tait]"
   w.n = 2;
   w.rho = {0.99 * rho0, 1.01 * rho0};
   w.p = {0.0, 0.0};
+  w.c = {0.0, 0.0};  // the EOS also sets the sound speed
   TaitEos<2>(c0, rho0, 7.0).apply(w);
   CHECK(w.p[0] < 0.0);
   CHECK(w.p[1] > 0.0);

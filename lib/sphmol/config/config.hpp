@@ -44,6 +44,7 @@ struct GeometryConfig {
   double velocity_amplitude = 1.0;  // taylor_green: U [m/s], > 0
   double tube_length = 0.0;     // shock_tube: fluid extent in x, centred on the diaphragm at x = 0, > 0
   double tube_width = 0.0;      // shock_tube: extent in y (periodic), > 0
+  std::vector<double> column;   // dam_break: the water column [width, height] at x = 0 of the tank `box`
 };
 
 struct RepulsiveConfig {  // seed 003 eq 2.76, for boundary: virtual_repulsive
@@ -91,7 +92,10 @@ struct DiscretizationConfig {
   std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
   // wall_particles: "rest" (walls keep rest density and its EOS pressure) or "extrapolated" (Adami 2012
   // pressure from the fluid, with the body force; boundary/wall_pressure_extrapolated.hpp)
+  // "dynamic": dynamic boundary particles (Crespo et al. 2007): wall densities in the ODE state,
+  // evolved by continuity with the fluid, pressure from the EOS (boundary/dynamic_wall_density.hpp).
   std::string wall_pressure = "rest";
+  double density_diffusion = 0.0;  // delta-SPH delta (Molteni & Colagrossi 2009), >= 0; 0 = off; needs continuity
   RepulsiveConfig repulsive;
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
   // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).
@@ -137,7 +141,7 @@ struct OutputConfig {
 
 struct Config {
   std::string source;  // file path the config came from ("<string>" for in-memory)
-  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity | shock_tube
+  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity | shock_tube | dam_break
   int dimension = 2;       // 1, 2 or 3 (channel cases need 2)
   FluidConfig fluid;
   GeometryConfig geometry;

@@ -108,8 +108,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                 {"case", "dimension", "fluid", "geometry", "discretization", "time", "output", "shock_tube"});
 
   c.case_name = top.choice("case", top.required(top.string("case"), "case",
-                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube"),
-                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube"});
+                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break"),
+                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube", "dam_break"});
   const bool shock = c.case_name == "shock_tube";
   const bool channel_case = c.case_name == "couette" || c.case_name == "poiseuille";
   if (const auto d = top.integer("dimension")) {
@@ -178,7 +178,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
 
   // geometry
   MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity", "box",
-                                           "velocity_amplitude", "tube_length", "tube_width"});
+                                           "velocity_amplitude", "tube_length", "tube_width", "column"});
   if (shock) {
     for (const char* k : {"channel_height", "channel_length", "wall_velocity"})
       if (geo.has(k)) geo.fail(k, "is not used by case 'shock_tube' (it takes tube_length and tube_width)");
@@ -222,6 +222,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       if (b[i] <= 0) geo.fail_element("box", i, shown(b[i]) + " is out of range (allowed: > 0 m)");
     c.geometry.box = b;
   }
+  if (c.case_name == "dam_break") {
+    const auto col = geo.required(geo.reals("column"), "column", "[width, height] of the water column in m");
+    if (col.size() != 2) geo.fail("column", "has " + std::to_string(col.size()) + " components, expected 2");
+    for (std::size_t i = 0; i < 2; ++i)
+      if (col[i] <= 0 || col[i] > c.geometry.box[i])
+        geo.fail_element("column", i, shown(col[i]) + " is out of range (allowed: > 0 m and <= geometry.box[" +
+                                          std::to_string(i) + "] = " + shown(c.geometry.box[i]) + ")");
+    c.geometry.column = col;
+  } else if (geo.has("column")) {
+    geo.fail("column", "is the water column of case 'dam_break' only");
+  }
   if (const auto v = geo.real("wall_velocity")) c.geometry.wall_velocity = *v;
   if (const auto v = geo.real("velocity_amplitude")) {
     if (c.case_name != "taylor_green") geo.fail("velocity_amplitude", "is the Taylor-Green amplitude U; only for case 'taylor_green'");
@@ -254,7 +265,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive",
                                 "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
-                                "position_noise"});
+                                "position_noise", "density_diffusion"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -315,7 +326,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
     }
     if (const auto v = disc.string("wall_pressure")) {
-      d.wall_pressure = disc.choice("wall_pressure", *v, {"rest", "extrapolated"});
+      d.wall_pressure = disc.choice("wall_pressure", *v, {"rest", "extrapolated", "dynamic"});
       if (d.wall_pressure != "rest" && d.boundary != "wall_particles")
         disc.fail("wall_pressure", "applies to boundary: wall_particles only");
     }
@@ -384,6 +395,16 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.smoothing_length != "constant" && d.density != "continuity")
       disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.density: continuity (got '" +
                                         d.density + "'): a summation density would depend on h implicitly");
+    if (const auto v = disc.real("density_diffusion")) d.density_diffusion = *v;
+    check(disc, "density_diffusion", d.density_diffusion >= 0, d.density_diffusion, ">= 0 (delta; 0 = off)");
+    if (d.density_diffusion > 0 && d.density != "continuity")
+      disc.fail("density_diffusion", "diffuses the continuity density; needs discretization.density: continuity (got '" +
+                                         d.density + "')");
+    if (d.wall_pressure == "dynamic" && d.density != "continuity")
+      disc.fail("wall_pressure", "'dynamic' evolves wall densities by continuity; needs discretization.density: "
+                                 "continuity (got '" + d.density + "')");
+    if (d.wall_pressure == "dynamic" && (c.fluid.eos.type == "ideal_gas" || d.smoothing_length != "constant"))
+      disc.fail("wall_pressure", "'dynamic' needs a barotropic EOS and constant h");
     if (d.smoothing_length != "constant" && d.neighbor_search != "kdtree")
       disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.neighbor_search: kdtree (got '" +
                                         d.neighbor_search + "')");

@@ -76,6 +76,7 @@ std::string to_yaml(const Config& c) {
       y << "  box: " << list(g.box) << "\n";
     y << "  wall_velocity: " << num(g.wall_velocity) << "\n";
     if (c.case_name == "taylor_green") y << "  velocity_amplitude: " << num(g.velocity_amplitude) << "\n";
+    if (!g.column.empty()) y << "  column: " << list(g.column) << "\n";
   }
   y << "discretization:\n";
   // Exactly one of the two is set; the other stays at its 0 "not given" value.
@@ -114,6 +115,7 @@ std::string to_yaml(const Config& c) {
       << ", extra_stress: " << (d.transport_velocity.extra_stress ? "true" : "false") << "}\n";
   y << "  energy: " << (d.energy ? "true" : "false") << "\n"
     << "  smoothing_length: " << d.smoothing_length << "\n";
+  if (d.density_diffusion > 0) y << "  density_diffusion: " << num(d.density_diffusion) << "\n";
   y << "time:\n"
     << "  t_end: " << num(t.t_end) << "\n"
     << "  integrator: " << t.integrator << "\n"

@@ -27,8 +27,16 @@ class TaitEos final : public Term<D> {
   TaitEos(double sound_speed, double rest_density, double gamma, bool clamp_negative = false)
       : law_(sound_speed, rest_density, gamma), floor_(clamp_negative ? 0.0 : -HUGE_VAL) {}
   std::string_view name() const override { return floor_ == 0.0 ? "eos_tait_clamped" : "eos_tait"; }
+  // Also the local sound speed c_i = sqrt(dp/drho) = c0 (rho/rho0)^((gamma-1)/2), which the artificial
+  // viscosity and the CFL limit read (without it they would see c = 0).
   void apply(Workspace<D>& w) const override {
-    for (std::size_t i = 0; i < w.n; ++i) w.p[i] = std::max(floor_, law_.pressure(w.rho[i]));
+    const double c0 = std::sqrt(law_.B * law_.gamma / law_.rho0);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < w.n; ++i) {
+      const double r = w.rho[i] / law_.rho0, rg = std::pow(r, law_.gamma);
+      w.p[i] = std::max(floor_, law_.B * (rg - 1.0));
+      w.c[i] = c0 * std::sqrt(rg / r);
+    }
   }
   const TaitLaw& law() const { return law_; }
 

@@ -3,6 +3,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
@@ -12,6 +13,7 @@
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/continuity_density.hpp"
+#include "sphmol/physics/density_diffusion.hpp"
 #include "sphmol/physics/energy_equation.hpp"
 #include "sphmol/physics/eos_ideal_gas.hpp"
 #include "sphmol/physics/normalised_summation_density.hpp"
@@ -44,6 +46,10 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   else if (disc.density == "normalised_summation") terms.push_back(std::make_unique<NormalisedSummationDensity<D>>());
   else if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
   else throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
+  const bool dynamic_walls = disc.wall_pressure == "dynamic";
+  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (disc.density_diffusion > 0.0)
+    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
   std::unique_ptr<GhostGenerator<D>> ghosts;
   if (disc.boundary == "ghost") {
@@ -139,6 +145,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   StateFields fields;
   fields.density = disc.density == "continuity";
   fields.energy = disc.energy;
+  fields.wall_density = dynamic_walls;
+  fields.wall_density_floor = fluid.density;
   if (disc.smoothing_length == "density") fields.smoothing_length = SmoothingLengthMode::density;
   if (disc.smoothing_length == "ode") fields.smoothing_length = SmoothingLengthMode::ode;
   if (disc.energy && energy.empty())

@@ -48,6 +48,8 @@ void SphSystem<D>::configure_fields(const StateFields& fields, std::vector<doubl
     if (energy.size() != ws_.n) throw std::invalid_argument("configure_fields: energy needs one value per particle");
     ws_.e = std::move(energy);
   }
+  if (fields.wall_density) layout_.n_wall_density = n_base_ - particles_.n_fluid;
+  ws_.n_wall_density = layout_.n_wall_density;
   h_ref_ = ws_.hs;
   rho_ref_ = particles_.rho;
 }
@@ -66,6 +68,7 @@ std::vector<double> SphSystem<D>::initial_state() const {
     if (layout_.has_energy) y[layout_.energy() + i] = ws_.e[i];
     if (layout_.has_smoothing_length) y[layout_.smoothing_length() + i] = h_ref_[i];
   }
+  for (std::size_t k = 0; k < layout_.n_wall_density; ++k) y[layout_.wall_density() + k] = particles_.rho[n + k];
   return y;
 }
 
@@ -97,6 +100,11 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (layout_.has_energy) std::copy(y + layout_.energy(), y + layout_.energy() + nf, ws_.e.begin());
   if (layout_.has_smoothing_length)
     std::copy(y + layout_.smoothing_length(), y + layout_.smoothing_length() + nf, ws_.hs.begin());
+  if (const std::size_t nw = layout_.n_wall_density; nw > 0) {
+    const double* rw = y + layout_.wall_density();
+    const double floor = fields_.wall_density_floor;
+    for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[k]);
+  }
   if (fields_.smoothing_length == SmoothingLengthMode::density)  // seed 003 eq 2.67
     for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
   // Generated (ghost) particles are appended here, from the fluid state just gathered (positions,
@@ -130,6 +138,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (ws_.drhodt) std::fill(ws_.drhodt, ws_.drhodt + nf, 0.0);
   if (ws_.dedt) std::fill(ws_.dedt, ws_.dedt + nf, 0.0);
   if (ws_.dhdt) std::fill(ws_.dhdt, ws_.dhdt + nf, 0.0);
+  ws_.drhodt_wall = layout_.n_wall_density > 0 ? ydot + layout_.wall_density() : nullptr;
+  if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (const auto& term : terms_) term->apply(ws_);
 
   // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does

@@ -13,6 +13,11 @@ struct StateFields {
   bool density = false;  // continuity density (seed 003 eq 2.61): rho in the state
   bool energy = false;   // energy equation (seed 003 eq 2.66/2.72): e in the state
   SmoothingLengthMode smoothing_length = SmoothingLengthMode::constant;
+  // Dynamic boundary particles (Crespo et al. 2007): wall densities in the state. The EOS and the
+  // momentum equation read max(rho_wall, wall_density_floor): DualSPHysics clamps wall densities at
+  // rho0 likewise, so that a wall never pulls fluid in with a negative pressure.
+  bool wall_density = false;
+  double wall_density_floor = 0.0;
 };
 
 }  // namespace sphmol

@@ -44,6 +44,10 @@ struct Workspace {
   double* drhodt = nullptr;
   double* dedt = nullptr;
   double* dhdt = nullptr;
+  // Dynamic boundary particles: rate of the wall densities in the state, indexed i - n_fluid for the
+  // wall particles i in [n_fluid, n_fluid + n_wall_density); null otherwise.
+  double* drhodt_wall = nullptr;
+  std::size_t n_wall_density = 0;
 
 };
 

@@ -79,11 +79,12 @@ std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool wa
   };
 
   // Further state blocks after the velocities, one scalar per fluid particle each (walls: 0).
-  const std::size_t extra = nf > 0 ? (L.size() - L.velocities_end()) / nf : 0;
+  // (Wall densities of dynamic boundary particles, last in the state, are in "density" already.)
+  const std::size_t extra = nf > 0 ? L.extra_blocks() : 0;
   std::vector<std::string> names = L.field_names();
   std::vector<std::string> extra_names;
   for (std::size_t k = 0; k < extra; ++k)
-    extra_names.push_back(names.size() == 2 + extra ? names[2 + k] : "state_block_" + std::to_string(k));
+    extra_names.push_back(names.size() >= 2 + extra ? names[2 + k] : "state_block_" + std::to_string(k));
 
   std::ostringstream s;
   s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"

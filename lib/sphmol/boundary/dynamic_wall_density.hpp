@@ -1,0 +1,46 @@
+#pragma once
+// Dynamic boundary particles (DBC; Crespo, Gomez-Gesteira & Dalrymple 2007, Comput. Mater. Continua
+// 5:173): wall particles obey the same continuity equation as the fluid (seed 003 eq 2.61),
+//   drho_a/dt = sum_j m_j v_aj . grad_a W_aj   over the fluid neighbours j of wall particle a,
+// but do not move; their pressure follows from the same EOS. A fluid particle approaching a wall
+// compresses the wall particles near it, whose pressure then pushes it back. Wall densities live in
+// the ODE state (core/state_layout.hpp, block wall_density), so every integrator advances them with
+// the fluid. Wall rows of the pair list hold exactly the fluid neighbours (neighbors/pair_list.hpp).
+// DualSPHysics resets a wall density below rho0 to rho0 after every step, so that a wall never pulls
+// fluid in with a negative pressure. A method-of-lines state cannot be reset between steps; instead
+// the EOS reads max(rho, floor) (rhs/sph_system.cpp) and here a wall at or below the floor does not
+// decompress further (its rate is cut to zero), so the state stays within one step of the floor and
+// the wall resists the next approaching fluid at once.
+#include "sphmol/rhs/term.hpp"
+
+namespace sphmol {
+
+template <int D>
+class DynamicWallDensity final : public Term<D> {
+ public:
+  explicit DynamicWallDensity(double floor) : floor_(floor) {}
+  std::string_view name() const override { return "dynamic_wall_density"; }
+  void apply(Workspace<D>& w) const override {
+    const auto& P = w.pairs;
+    const auto& m = w.particles->mass;
+    const std::size_t nf = w.n_fluid, nw = w.n_wall_density;
+    double* out = w.drhodt_wall;
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = nf; a < nf + nw; ++a) {
+      double s = 0.0;
+      for (std::uint32_t k = P.offset[a]; k < P.offset[a + 1]; ++k) {
+        const std::uint32_t j = P.j[k];
+        double vdx = 0.0;
+        for (int d = 0; d < D; ++d) vdx += (w.v[d][a] - w.v[d][j]) * w.dx[d][k];
+        s += m[j] * vdx * w.F[k];
+      }
+      // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.
+      out[a - nf] += (w.rho[a] <= floor_ && s < 0.0) ? 0.0 : s;
+    }
+  }
+
+ private:
+  double floor_;
+};
+
+}  // namespace sphmol

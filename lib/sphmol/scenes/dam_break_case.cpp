@@ -1,0 +1,159 @@
+#include "sphmol/scenes/dam_break_case.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "sphmol/io/atomic_file.hpp"
+#include "sphmol/reference/dam_break_front.hpp"
+#include "sphmol/rhs/assemble.hpp"
+#include "sphmol/scenes/dam_break_scene.hpp"
+
+namespace sphmol {
+
+std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
+  DamBreakScene s = build_dam_break_scene(config);
+  a_ = config.geometry.column[0];
+  H_ = config.geometry.column[1];
+  Lx_ = config.geometry.box[0];
+  t_end_ = config.time.t_end;
+  g_ = s.g;
+  dx_ = s.spacing;
+  wall_layers_ = s.wall_layers;
+  n_fluid0_ = s.particles.n_fluid;
+  n_wall_ = s.particles.n_wall();
+  mass0_ = 0.0;
+  for (std::size_t i = 0; i < n_fluid0_; ++i) mass0_ += s.particles.mass[i];
+  csv_ = "# dam break surge front: SPH vs Ritter (2 sqrt(gH) t), Martin & Moyce 1952, Koshizuka & Oka 1996\n"
+         "t,T,x_front,x_ritter,x_mm,x_ko\n";
+  auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
+  sys->append_term(std::make_unique<WallPenetrationMonitor>(Lx_, config.geometry.box[1], penetration_));
+  return sys;
+}
+
+nlohmann::json DamBreakCase::measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) {
+  const auto& L = sys.layout();
+  const auto& m = sys.particles().mass;
+  double xmax = -HUGE_VAL, mass = 0.0;
+  for (std::size_t i = 0; i < L.n; ++i) {
+    xmax = std::max(xmax, y[L.position(0) + i]);
+    if (std::isfinite(y[L.position(0) + i]) && std::isfinite(y[L.position(1) + i])) mass += m[i];
+  }
+  const double x_front = xmax + 0.5 * dx_;
+  const double x_ritter = ritter_front(a_, g_, H_, t);
+  const double T = t * std::sqrt(2.0 * g_ / a_);
+  const auto mm = interpolate_front(martin_moyce_1952_n2_2(), T);
+  const auto ko = interpolate_front(koshizuka_oka_1996(), T);
+  const bool impacted = x_front >= Lx_ - dx_;
+  nlohmann::json j = {{"t", t},
+                      {"x_front", x_front},
+                      {"x_ritter", x_ritter},
+                      {"impacted", impacted},
+                      {"mass_change", (mass - mass0_) / mass0_},
+                      {"wall_penetrations", penetration_->count}};
+  j["x_mm"] = mm ? nlohmann::json(*mm * a_) : nlohmann::json(nullptr);
+  j["x_ko"] = ko ? nlohmann::json(*ko * a_) : nlohmann::json(nullptr);
+
+  std::ostringstream row;
+  row << std::setprecision(10) << t << ',' << T << ',' << x_front << ',' << x_ritter << ',';
+  if (mm) row << *mm * a_;
+  row << ',';
+  if (ko) row << *ko * a_;
+  row << '\n';
+  csv_ += row.str();
+  if (out.enabled) write_file_atomically(out.path("front.csv"), csv_);
+  return j;
+}
+
+nlohmann::json DamBreakCase::final_errors(const nlohmann::json& errors) const {
+  // Over the output times before the impact on the right wall (t > 0).
+  double over_ritter = 0.0, s_mm = 0.0, s_ko = 0.0, signed_mm = 0.0, mass_change = 0.0;
+  int n_free = 0, n_mm = 0, n_ko = 0;
+  for (const auto& e : errors) {
+    mass_change = std::max(mass_change, std::abs(e["mass_change"].get<double>()));
+    const double t = e["t"].get<double>();
+    if (e["impacted"].get<bool>() || t <= 0.0) continue;
+    ++n_free;
+    const double xf = e["x_front"].get<double>();
+    over_ritter = std::max(over_ritter, (xf - a_) / (e["x_ritter"].get<double>() - a_));
+    if (!e["x_mm"].is_null()) {
+      const double d = (xf - e["x_mm"].get<double>()) / a_;
+      s_mm += d * d;
+      signed_mm += d;
+      ++n_mm;
+    }
+    if (!e["x_ko"].is_null()) {
+      const double d = (xf - e["x_ko"].get<double>()) / a_;
+      s_ko += d * d;
+      ++n_ko;
+    }
+  }
+  nlohmann::json f;
+  f["mass_change"] = mass_change;
+  f["wall_penetrations"] = penetration_->count;
+  f["min_wall_gap"] = std::isfinite(penetration_->min_gap) ? penetration_->min_gap / dx_ : 0.0;
+  f["free_surge_outputs"] = n_free;
+  f["front_max_over_ritter"] = n_free > 0 ? nlohmann::json(over_ritter) : nlohmann::json(nullptr);
+  f["front_rms_martin_moyce"] = n_mm > 0 ? nlohmann::json(std::sqrt(s_mm / n_mm)) : nlohmann::json(nullptr);
+  f["front_mean_martin_moyce"] = n_mm > 0 ? nlohmann::json(signed_mm / n_mm) : nlohmann::json(nullptr);
+  f["front_rms_koshizuka_oka"] = n_ko > 0 ? nlohmann::json(std::sqrt(s_ko / n_ko)) : nlohmann::json(nullptr);
+  double t_impact = -1.0;
+  for (const auto& e : errors)
+    if (e["impacted"].get<bool>()) {
+      t_impact = e["t"].get<double>();
+      break;
+    }
+  f["t_impact"] = t_impact >= 0.0 ? nlohmann::json(t_impact) : nlohmann::json(nullptr);
+  if (!errors.empty()) f["x_front"] = errors.back()["x_front"];
+  return f;
+}
+
+void DamBreakCase::annotate(nlohmann::json& summary) const {
+  summary["final_errors_note"] =
+      "front_*: over output times before the front reaches the right wall, (x_front - x_ref)/a; "
+      "front_max_over_ritter = max (x_front - a)/(2 sqrt(gH) t) (<= 1: below the Ritter bound); "
+      "mass_change: largest relative change of the fluid mass; wall_penetrations: fluid particles that ever "
+      "passed a wall (every RHS evaluation); min_wall_gap: closest approach to a wall surface [dx]; "
+      "t_impact: first output time with the front at the right wall";
+  summary["column"] = {a_, H_};
+  summary["discretization"]["spacing"] = dx_;
+  summary["discretization"]["wall_layers"] = wall_layers_;
+  summary["particles_total"] = n_fluid0_ + n_wall_;
+  // The anchor counts all particles (fluid and wall) per step.
+  const long steps = summary.value("steps", 0L);
+  const double wall = summary.value("wall_seconds", 0.0);
+  if (steps > 0)
+    summary["us_per_particle_step"] = 1e6 * wall / (static_cast<double>(steps) * static_cast<double>(n_fluid0_ + n_wall_));
+}
+
+std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
+  // Reference points in dimensional form, for gnuplot.
+  std::ostringstream ref;
+  ref << "# t [s], x_front [m] of the experiments scaled to a = " << a_ << " m, g = " << g_ << " m/s^2\n"
+      << "# source,t,x\n" << std::setprecision(8);
+  const double tscale = 1.0 / std::sqrt(2.0 * g_ / a_);
+  for (const auto& p : martin_moyce_1952_n2_2()) ref << "mm," << p.T * tscale << ',' << p.Z * a_ << '\n';
+  ref << "\n\n";
+  for (const auto& p : koshizuka_oka_1996()) ref << "ko," << p.T * tscale << ',' << p.Z * a_ << '\n';
+  write_file_atomically(out.path("front_reference.csv"), ref.str());
+  std::ostringstream s;
+  s << "# Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)\n"
+    << "set terminal pngcairo size 900,640 font ',11'\n"
+    << "set output 'front.png'\n"
+    << "set datafile separator ','\n"
+    << "set datafile commentschars '#t'\n"
+    << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"
+    << "set xlabel 't [s]'\nset ylabel 'x_{front} [m]'\nset key left top\nset grid\n"
+    << "set key right bottom box opaque\n"
+    << "set xrange [0:" << t_end_ << "]\nset yrange [" << a_ * 0.9 << ":" << Lx_ * 1.05 << "]\n"
+    << "set samples 400\n"
+    << "ritter(t) = " << a_ << " + 2.0 * sqrt(" << g_ << " * " << H_ << ") * t\n"
+    << "plot 'front.csv' using 1:3 with linespoints pt 7 ps 0.6 lw 1.5 title 'SPH', \\\n"
+    << "  ritter(x) with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t (upper bound)', \\\n"
+    << "  'front_reference.csv' index 0 using 2:3 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
+    << "  'front_reference.csv' index 1 using 2:3 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n"
+    << "  " << Lx_ << " with lines lc rgb 'black' lw 1 title 'right wall'\n";
+  return {{"front.png", s.str()}};
+}
+
+}  // namespace sphmol

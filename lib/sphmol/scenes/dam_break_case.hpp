@@ -1,0 +1,42 @@
+#pragma once
+// Dam break (issue 6): a water column of width a and height H collapses into an open tank of width Lx
+// (scenes/dam_break_scene.hpp). Measured at output times, over fluid particles:
+//   x_front     surge-front position: the largest x of any fluid particle plus dx/2 (the edge of its
+//               lattice cell, so x_front(0) = a);
+//   x_ritter    a + 2 sqrt(g H) t, Ritter's shallow-water front, an upper bound before the impact;
+//   x_mm, x_ko  Martin & Moyce 1952 (n^2 = 2) and Koshizuka & Oka 1996 fronts scaled to a, where their
+//               data cover t (reference/dam_break_front.hpp);
+//   mass_change relative change of the total fluid mass, sum_i m_i (constant particle masses and no
+//               particle ever removed: exactly 0 unless a particle is lost);
+//   wall_penetrations  fluid particles that ever passed a wall (every RHS evaluation; analysis/
+//               wall_penetration_monitor.hpp), min_wall_gap the closest approach to a wall surface [dx].
+// A front at the right wall (x_front >= Lx - dx) is "impacted": later times are not compared with the
+// free-surge references. Writes front.csv (all output times so far) and the reference points.
+#include <memory>
+
+#include "sphmol/analysis/wall_penetration_monitor.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+class DamBreakCase final : public Case<2> {
+ public:
+  std::unique_ptr<SphSystem<2>> build(const Config& config) override;
+  std::string reference() const override {
+    return "surge front vs Ritter 2 sqrt(gH) t (upper bound), Martin & Moyce 1952, Koshizuka & Oka 1996";
+  }
+  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  std::string primary_error() const override { return "front_rms_martin_moyce"; }
+  void annotate(nlohmann::json& summary) const override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
+
+ private:
+  double a_ = 0.0, H_ = 0.0, Lx_ = 0.0, t_end_ = 0.0, g_ = 0.0, dx_ = 0.0, mass0_ = 0.0;
+  std::size_t n_fluid0_ = 0, n_wall_ = 0;
+  int wall_layers_ = 0;
+  std::string csv_;  // front.csv rows so far
+  std::shared_ptr<WallPenetration> penetration_ = std::make_shared<WallPenetration>();
+};
+
+}  // namespace sphmol

@@ -1,0 +1,206 @@
+// The dam-break formulation's pieces: Wendland C2 in DualSPHysics' convention, delta-SPH density
+// diffusion (Molteni & Colagrossi 2009), dynamic boundary particles (Crespo et al. 2007) with their
+// densities in the ODE state, and the Tait EOS's local sound speed.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "sphmol/boundary/dynamic_wall_density.hpp"
+#include "sphmol/config/config.hpp"
+#include "sphmol/kernels/wendland_c2.hpp"
+#include "sphmol/neighbors/all_pairs_search.hpp"
+#include "sphmol/physics/density_diffusion.hpp"
+#include "sphmol/physics/eos_tait.hpp"
+#include "sphmol/reference/dam_break_front.hpp"
+#include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/run/case_registry.hpp"
+
+using namespace sphmol;
+
+TEST_CASE("Wendland C2 uses DualSPHysics' h: support 2h, alpha_D = 7/(4 pi h^2), 21/(16 pi h^3)", "[kernel][dam_break]") {
+  // DualSPHysics (Crespo et al. 2015, CPC 187:204, eq. 4): W = alpha_D (1 - q/2)^4 (2q + 1), q = r/h, 0 <= q <= 2,
+  // with h = coefh sqrt(2) dp in 2D; so smoothing_ratio 1.414 reproduces its h, not a kappa h.
+  const double pi = std::numbers::pi, h = 0.01414;
+  for (double q : {0.0, 0.3, 0.99, 1.5, 1.999}) {
+    const double f = std::pow(1.0 - 0.5 * q, 4) * (2.0 * q + 1.0);
+    CHECK(WendlandC2Kernel<2>::W(q * h, h) == Approx(7.0 / (4.0 * pi * h * h) * f).epsilon(1e-13));
+    CHECK(WendlandC2Kernel<3>::W(q * h, h) == Approx(21.0 / (16.0 * pi * h * h * h) * f).epsilon(1e-13));
+  }
+  CHECK(WendlandC2Kernel<2>::support == 2.0);
+  CHECK(WendlandC2Kernel<2>::W(2.0 * h, h) == 0.0);
+}
+
+namespace {
+// A jittered 2D fluid patch (optionally over one row of wall particles) with pairs and kernel values.
+struct Patch {
+  Particles<2> P;
+  Domain<2> dom;
+  Workspace<2> w;
+  PairList verlet;
+  std::vector<double> drho, drho_wall;
+  double dx = 0.1, h = 0.1414;
+
+  Patch(int n, bool wall_row, double jitter, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-jitter * dx, jitter * dx), r(990.0, 1010.0);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) P.add(Kind::Fluid, {(i + 0.5) * dx + u(rng), (j + 0.5) * dx + u(rng)}, {0, 0}, 10.0, r(rng));
+    if (wall_row)
+      for (int i = -2; i < n + 2; ++i) P.add(Kind::Wall, {(i + 0.5) * dx, -0.5 * dx}, {0, 0}, 10.0, 1000.0, {0, 1}, 0.5 * dx);
+    dom.lo = {-1.0, -1.0};
+    dom.hi = {2.0, 2.0};
+    w.n = P.size();
+    w.n_fluid = P.n_fluid;
+    w.n_wall_density = P.n_wall();
+    w.particles = &P;
+    w.domain = &dom;
+    w.h = h;
+    for (int d = 0; d < 2; ++d) {
+      w.x[d] = P.x[d];
+      w.v[d] = P.v[d];
+    }
+    w.rho = P.rho;
+    w.hs.assign(w.n, h);
+    drho.assign(P.n_fluid, 0.0);
+    drho_wall.assign(P.n_wall(), 0.0);
+    w.drhodt = drho.data();
+    w.drhodt_wall = drho_wall.data();
+  }
+  void pairs() {
+    SearchInput<2> in;
+    for (int d = 0; d < 2; ++d) in.x[d] = w.x[d].data();
+    in.kind = P.kind.data();
+    in.n = w.n;
+    in.domain = &dom;
+    in.radius = 2.0 * h;
+    AllPairsSearch<2>().build(in, verlet);
+    KernelPassFor<2, WendlandC2Kernel<2>>().apply(verlet, w);
+  }
+};
+}  // namespace
+
+TEST_CASE("delta-SPH diffusion: zero on uniform density, conserves sum V_i drho_i, smooths a bump", "[physics][dam_break]") {
+  Patch p(8, true, 0.2, 3);
+  p.pairs();
+  const DensityDiffusion<2> diff(0.1, p.h, 50.0);
+  // Uniform density: nothing to diffuse (walls at another density must not matter: fluid pairs only).
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.rho[i] = 1003.0;
+  diff.apply(p.w);
+  for (double r : p.drho) CHECK(r == 0.0);
+  // Random density: the pair terms are antisymmetric with the volumes m/rho, so sum_i V_i D_i = 0.
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.rho[i] = p.P.rho[i];
+  diff.apply(p.w);
+  double s = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) {
+    s += p.P.mass[i] / p.w.rho[i] * p.drho[i];
+    scale += std::abs(p.P.mass[i] / p.w.rho[i] * p.drho[i]);
+  }
+  CHECK(scale > 0.0);
+  CHECK(std::abs(s) <= 1e-12 * scale);
+  // A single denser particle loses density, its neighbours gain.
+  std::fill(p.drho.begin(), p.drho.end(), 0.0);
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.rho[i] = 1000.0;
+  const std::size_t c = 4 * 8 + 4;
+  p.w.rho[c] = 1010.0;
+  diff.apply(p.w);
+  CHECK(p.drho[c] < 0.0);
+  CHECK(p.drho[c + 1] > 0.0);
+  CHECK(p.drho[c + 8] > 0.0);
+}
+
+TEST_CASE("dynamic wall particles: compressed by approaching fluid, relieved by receding fluid", "[boundary][dam_break]") {
+  Patch p(6, true, 0.0, 5);
+  p.pairs();
+  const DynamicWallDensity<2> dbc(900.0);  // walls (1000) above the floor
+  dbc.apply(p.w);
+  for (double r : p.drho_wall) CHECK(r == 0.0);  // fluid at rest
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.v[1][i] = -1.0;  // falling onto the wall
+  dbc.apply(p.w);
+  for (std::size_t k = 2; k < 8; ++k) CHECK(p.drho_wall[k] > 0.0);  // walls under the patch
+  std::fill(p.drho_wall.begin(), p.drho_wall.end(), 0.0);
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.v[1][i] = 1.0;
+  dbc.apply(p.w);
+  for (std::size_t k = 2; k < 8; ++k) CHECK(p.drho_wall[k] < 0.0);
+  // At the floor a wall does not decompress further (DualSPHysics resets it to rho0), but compresses.
+  std::fill(p.drho_wall.begin(), p.drho_wall.end(), 0.0);
+  DynamicWallDensity<2>(1000.0).apply(p.w);
+  for (double r : p.drho_wall) CHECK(r == 0.0);
+  for (std::size_t i = 0; i < p.P.n_fluid; ++i) p.w.v[1][i] = -1.0;
+  DynamicWallDensity<2>(1000.0).apply(p.w);
+  for (std::size_t k = 2; k < 8; ++k) CHECK(p.drho_wall[k] > 0.0);
+}
+
+TEST_CASE("Tait EOS sets the local sound speed c0 (rho/rho0)^((gamma-1)/2)", "[physics][dam_break]") {
+  Workspace<2> w;
+  w.n = 3;
+  w.rho = {1000.0, 1010.0, 990.0};
+  w.p.assign(3, 0.0);
+  w.c.assign(3, 0.0);
+  TaitEos<2>(88.6, 1000.0, 7.0).apply(w);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double r = w.rho[i] / 1000.0;
+    CHECK(w.c[i] == Approx(88.6 * std::pow(r, 3.0)).epsilon(1e-12));
+    // c^2 = dp/drho, checked by a finite difference of p.
+    const TaitLaw law(88.6, 1000.0, 7.0);
+    const double dp = (law.pressure(w.rho[i] + 1e-4) - law.pressure(w.rho[i] - 1e-4)) / 2e-4;
+    CHECK(w.c[i] * w.c[i] == Approx(dp).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the anchor's counts", "[dam_break]") {
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                               {"discretization.spacing=0.05"});
+  auto sys = case_registry().at("dam_break").d2()->build(c);
+  const auto& L = sys->layout();
+  const auto& P = sys->particles();
+  CHECK(P.n_fluid == 20u * 40u);
+  CHECK(P.n_wall() == 2u * 60u + 82u);  // one layer: two side walls of 60 plus a bottom of 80 + 2 corners
+  CHECK(L.n_wall_density == P.n_wall());
+  CHECK(L.size() == 5 * P.n_fluid + P.n_wall());
+  std::vector<double> y = sys->initial_state(), f(y.size());
+  // Column in hydrostatic equilibrium: bottom fluid row compressed, top row at ~rho0.
+  CHECK(y[L.density()] > 1000.0 * (1.0 + 0.5 * 1000.0 * 9.81 * 1.9 / (88.6 * 88.6 * 1000.0)));
+  sys->rhs(0.0, y.data(), f.data());
+  // Released at rest: the rates of the wall densities are those of a state at rest (zero).
+  for (std::size_t k = 0; k < L.n_wall_density; ++k) CHECK(f[L.wall_density() + k] == 0.0);
+  // The wall under the column holds it up: its pressure is the hydrostatic pressure (~rho0 g H).
+  const std::size_t wall0 = P.n_fluid;  // bottom-left corner particle, under the column
+  CHECK(sys->pressure()[wall0 + 2] == Approx(1000.0 * 9.81 * 2.025).epsilon(1e-3));
+  // Moving the fluid down compresses the bottom walls.
+  for (std::size_t i = 0; i < L.n; ++i) y[L.velocity(1) + i] = -0.1;
+  sys->rhs(0.0, y.data(), f.data());
+  CHECK(f[L.wall_density() + 2] > 0.0);
+}
+
+TEST_CASE("dam-break reference fronts: Martin & Moyce and Koshizuka & Oka interpolate inside their range only", "[reference][dam_break]") {
+  CHECK(!interpolate_front(martin_moyce_1952_n2_2(), 0.5));
+  CHECK(*interpolate_front(martin_moyce_1952_n2_2(), 0.832) == Approx(1.217));
+  CHECK(*interpolate_front(koshizuka_oka_1996(), 0.0) == Approx(1.0));
+  CHECK(*interpolate_front(koshizuka_oka_1996(), 0.5) == Approx(1.111 + (0.5 - 0.381) / (0.769 - 0.381) * 0.141));
+  // Both experiments stay behind Ritter's front (Z = 1 + 2 T for H = 2a: x - a = 2 sqrt(gH) t).
+  for (const auto& pt : martin_moyce_1952_n2_2()) CHECK(pt.Z < 1.0 + 2.0 * pt.T);
+  for (const auto& pt : koshizuka_oka_1996()) CHECK(pt.Z <= 1.0 + 2.0 * pt.T);
+}
+
+TEST_CASE("dam_break config: new keys are checked and name the key", "[config][dam_break]") {
+  const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
+  auto error_of = [&](const std::vector<std::string>& sets) -> std::string {
+    try {
+      load_config(file, sets);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "<no error>";
+  };
+  CHECK(error_of({}) == "<no error>");
+  CHECK_THAT(error_of({"discretization.density=summation", "discretization.density_diffusion=0"}),
+             Catch::Contains("discretization.wall_pressure") && Catch::Contains("continuity"));
+  CHECK_THAT(error_of({"discretization.wall_pressure=rest", "discretization.density=summation"}),
+             Catch::Contains("discretization.density_diffusion") && Catch::Contains("continuity"));
+  CHECK_THAT(error_of({"discretization.density_diffusion=-0.1"}), Catch::Contains("discretization.density_diffusion"));
+  CHECK_THAT(error_of({"geometry.column=[5, 2]"}), Catch::Contains("geometry.column") && Catch::Contains("out of range"));
+  CHECK_THAT(error_of({"geometry.column=[1]"}), Catch::Contains("geometry.column"));
+  CHECK_THAT(error_of({"case=hydrostatic"}), Catch::Contains("geometry.column") && Catch::Contains("dam_break"));
+}
