@@ -85,6 +85,10 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
     w.rho.resize(n);
     w.p.resize(n);
+    // Every per-particle array covers the images too: the EOS writes c (and reads e) for all w.n.
+    w.c.resize(n);
+    w.e.resize(n);
+    w.hs.resize(n, w.h);
     for (auto& s : w.strain) s.resize(n);
     for (std::size_t g = 0; g < source_.size(); ++g) image(w, source_[g], mask_[g], n_base + g);
     return changed;
