@@ -28,6 +28,7 @@ class TaitEos final : public Term<D> {
       : law_(sound_speed, rest_density, gamma), floor_(clamp_negative ? 0.0 : -HUGE_VAL) {}
   std::string_view name() const override { return floor_ == 0.0 ? "eos_tait_clamped" : "eos_tait"; }
   void apply(Workspace<D>& w) const override {
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) w.p[i] = std::max(floor_, law_.pressure(w.rho[i]));
   }
   const TaitLaw& law() const { return law_; }
