@@ -22,7 +22,7 @@ class DriftMonitor final : public Term<D> {
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) {
-        const double dx = w.domain->min_image(d, w.x[d][i] - x0_[d][i]);
+        const double dx = w.domain->min_image(d, w.x[d][i] - x0_[d][w.order ? w.order[i] : i]);
         r2 += dx * dx;
       }
       m2 = std::max(m2, r2);

@@ -94,6 +94,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
     w.rho.resize(n);
     w.p.resize(n);
+    // Every per-particle array covers the images too: the EOS writes c (and reads e) for all w.n.
     w.c.resize(n);
     w.e.resize(n);
     w.hs.resize(n, w.h);

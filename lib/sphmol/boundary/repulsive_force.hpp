@@ -28,6 +28,7 @@ class RepulsiveBoundary final : public Term<D> {
   std::string_view name() const override { return "repulsive_boundary"; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
         const std::uint32_t j = P.j[k];

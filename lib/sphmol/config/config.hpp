@@ -104,6 +104,7 @@ struct DiscretizationConfig {
   int wall_layers = 0;              // 0 = enough layers to fill the kernel support
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0
+  bool reorder = false;             // Morton-order the workspace at each list rebuild (rhs/sph_system.hpp)
   ArtificialViscosityConfig artificial_viscosity;
   TransportVelocityConfig transport_velocity;
   bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state

@@ -263,7 +263,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
-                                "neighbor_search", "skin", "wall_slip", "wall_pressure", "repulsive",
+                                "neighbor_search", "skin", "reorder", "wall_slip", "wall_pressure", "repulsive",
                                 "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
                                 "position_noise", "density_diffusion"});
   {
@@ -355,6 +355,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "cell_list", "all_pairs"});
     if (const auto v = disc.real("skin")) d.skin = *v;
     check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
+    if (const auto v = disc.boolean("reorder")) d.reorder = *v;
+    if (d.reorder && d.boundary == "ghost")
+      disc.fail("reorder", "not available with boundary 'ghost' (mirror images refer to the previous particle order)");
     if (disc.has("artificial_viscosity")) {
       MapReader av = disc.section("artificial_viscosity", {"alpha", "beta", "eta"});
       auto& a = d.artificial_viscosity;

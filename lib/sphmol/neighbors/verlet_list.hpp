@@ -19,9 +19,12 @@ class VerletList {
   VerletList(std::unique_ptr<NeighborSearch<D>> search, double support_radius, double skin)
       : search_(std::move(search)), support_(support_radius), skin_(skin) {}
 
+  // True when update(in) would rebuild.
+  bool stale(const SearchInput<D>& in) const { return !built_ || moved_too_far(in); }
+
   // Rebuilds if needed; returns true when it did.
   bool update(const SearchInput<D>& in) {
-    if (!built_ || moved_too_far(in)) {
+    if (stale(in)) {
       SearchInput<D> q = in;
       q.radius = support_ + skin_;
       search_->build(q, pairs_);

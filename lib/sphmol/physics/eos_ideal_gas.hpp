@@ -14,6 +14,7 @@ class IdealGasEos final : public Term<D> {
   explicit IdealGasEos(double gamma) : gamma_(gamma) {}
   std::string_view name() const override { return "eos_ideal_gas"; }
   void apply(Workspace<D>& w) const override {
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       const double e = std::max(w.e[i], 0.0);  // a negative e (overshoot) would make c imaginary
       w.p[i] = (gamma_ - 1.0) * w.rho[i] * w.e[i];

@@ -19,11 +19,13 @@ class NormalisedSummationDensity final : public Term<D> {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
     raw_.assign(w.rho.begin(), w.rho.end());  // walls: their fixed density
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double rho = m[i] * self_W(w, i);
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) rho += m[P.j[k]] * w.W[k];
       raw_[i] = rho;
     }
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       const double w0 = self_W(w, i);
       double num = m[i] * w0, den = m[i] / raw_[i] * w0;

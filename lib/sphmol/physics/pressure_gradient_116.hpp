@@ -14,6 +14,7 @@ class PressureGradient116 final : public Term<D> {
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       double a[D] = {};
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {

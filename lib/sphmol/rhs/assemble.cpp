@@ -153,6 +153,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.energy: case '" + config.case_name + "' provides no initial energy");
   sys->configure_fields(fields, std::move(energy));
   if (ghosts) sys->set_generator(std::move(ghosts));
+  sys->set_reorder(disc.reorder);
   return sys;
 }
 

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
+
+#include "sphmol/neighbors/particle_reorder.hpp"
 
 namespace sphmol {
 
@@ -58,6 +61,10 @@ template <int D>
 std::vector<double> SphSystem<D>::initial_state() const {
   std::vector<double> y(layout_.size());
   const std::size_t n = layout_.n;
+  // Energy and h(0) live in workspace order (reordering); back to state order.
+  std::vector<double> e_tmp, h_tmp;
+  const auto& e0 = state_order(ws_.e, e_tmp);
+  const auto& h0 = state_order(h_ref_, h_tmp);
   for (int d = 0; d < D; ++d)
     for (std::size_t i = 0; i < n; ++i) {
       y[layout_.position(d) + i] = particles_.x[d][i];
@@ -65,8 +72,8 @@ std::vector<double> SphSystem<D>::initial_state() const {
     }
   for (std::size_t i = 0; i < n; ++i) {
     if (layout_.has_density) y[layout_.density() + i] = particles_.rho[i];
-    if (layout_.has_energy) y[layout_.energy() + i] = ws_.e[i];
-    if (layout_.has_smoothing_length) y[layout_.smoothing_length() + i] = h_ref_[i];
+    if (layout_.has_energy) y[layout_.energy() + i] = e0[i];
+    if (layout_.has_smoothing_length) y[layout_.smoothing_length() + i] = h0[i];
   }
   for (std::size_t k = 0; k < layout_.n_wall_density; ++k) y[layout_.wall_density() + k] = particles_.rho[n + k];
   return y;
@@ -84,26 +91,33 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
   ws_.t = t;
   const std::size_t nf = layout_.n, nb = n_base_;
+  const std::uint32_t* ord = perm_.empty() ? nullptr : perm_.data();  // workspace -> state index
+  const Particles<D>& P = *ws_.particles;
   for (int d = 0; d < D; ++d) {
     const double* xs = y + layout_.position(d);
     const double* vs = y + layout_.velocity(d);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < nf; ++i) {
-      ws_.x[d][i] = domain_.wrap(d, xs[i]);
-      ws_.v[d][i] = vs[i];
+      const std::size_t k = ord ? ord[i] : i;
+      ws_.x[d][i] = domain_.wrap(d, xs[k]);
+      ws_.v[d][i] = vs[k];
     }
     for (std::size_t i = nf; i < nb; ++i)
-      ws_.x[d][i] = domain_.wrap(d, particles_.x_ref[d][i] + (particles_.stationary[i] ? 0.0 : particles_.v[d][i] * t));
+      ws_.x[d][i] = domain_.wrap(d, P.x_ref[d][i] + (P.stationary[i] ? 0.0 : P.v[d][i] * t));
   }
   // Optional fields: per-scene branches outside every pair loop.
-  if (layout_.has_density) std::copy(y + layout_.density(), y + layout_.density() + nf, ws_.rho.begin());
-  if (layout_.has_energy) std::copy(y + layout_.energy(), y + layout_.energy() + nf, ws_.e.begin());
-  if (layout_.has_smoothing_length)
-    std::copy(y + layout_.smoothing_length(), y + layout_.smoothing_length() + nf, ws_.hs.begin());
+  auto gather = [&](std::size_t block, std::vector<double>& to) {
+    if (!ord) return std::copy(y + block, y + block + nf, to.begin()), void();
+    for (std::size_t i = 0; i < nf; ++i) to[i] = y[block + ord[i]];
+  };
+  if (layout_.has_density) gather(layout_.density(), ws_.rho);
+  if (layout_.has_energy) gather(layout_.energy(), ws_.e);
+  if (layout_.has_smoothing_length) gather(layout_.smoothing_length(), ws_.hs);
   if (const std::size_t nw = layout_.n_wall_density; nw > 0) {
+    // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0.
     const double* rw = y + layout_.wall_density();
     const double floor = fields_.wall_density_floor;
-    for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[k]);
+    for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
   }
   if (fields_.smoothing_length == SmoothingLengthMode::density)  // seed 003 eq 2.67
     for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
@@ -120,27 +134,44 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
 
   SearchInput<D> in;
   for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();
-  in.kind = particles_.kind.data();
+  in.kind = P.kind.data();
   in.n = n;
   in.domain = &domain_;
+  if (reorder_ && pairs_->stale(in)) {
+    reorder_workspace();  // permutes in place: `in` stays valid
+    ord = perm_.data();
+    pairs_->invalidate();
+  }
   pairs_->update(in);
   kernel_->apply(pairs_->pairs(), ws_);
 
+  // Derivatives are written in workspace order: straight into ydot, or into out_ and scattered below.
+  if (ord) out_.resize(layout_.size());
+  double* const out = ord ? out_.data() : ydot;
   for (int d = 0; d < D; ++d) {
-    ws_.dxdt[d] = ydot + layout_.position(d);
-    ws_.dvdt[d] = ydot + layout_.velocity(d);
+    ws_.dxdt[d] = out + layout_.position(d);
+    ws_.dvdt[d] = out + layout_.velocity(d);
     std::copy(ws_.v[d].begin(), ws_.v[d].begin() + nf, ws_.dxdt[d]);
     std::fill(ws_.dvdt[d], ws_.dvdt[d] + nf, 0.0);
   }
-  ws_.drhodt = layout_.has_density ? ydot + layout_.density() : nullptr;
-  ws_.dedt = layout_.has_energy ? ydot + layout_.energy() : nullptr;
-  ws_.dhdt = layout_.has_smoothing_length ? ydot + layout_.smoothing_length() : nullptr;
+  ws_.drhodt = layout_.has_density ? out + layout_.density() : nullptr;
+  ws_.dedt = layout_.has_energy ? out + layout_.energy() : nullptr;
+  ws_.dhdt = layout_.has_smoothing_length ? out + layout_.smoothing_length() : nullptr;
   if (ws_.drhodt) std::fill(ws_.drhodt, ws_.drhodt + nf, 0.0);
   if (ws_.dedt) std::fill(ws_.dedt, ws_.dedt + nf, 0.0);
   if (ws_.dhdt) std::fill(ws_.dhdt, ws_.dhdt + nf, 0.0);
-  ws_.drhodt_wall = layout_.n_wall_density > 0 ? ydot + layout_.wall_density() : nullptr;
+  ws_.drhodt_wall = layout_.n_wall_density > 0 ? out + layout_.wall_density() : nullptr;
   if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (const auto& term : terms_) term->apply(ws_);
+  if (ord && nf > 0) {
+    // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves).
+    const std::size_t nw = layout_.n_wall_density, blocks = (layout_.size() - nw) / nf;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < nf; ++i)
+      for (std::size_t b = 0; b < blocks; ++b) ydot[b * nf + ord[i]] = out_[b * nf + i];
+    const std::size_t wb = layout_.wall_density();
+    for (std::size_t k = 0; k < nw; ++k) ydot[wb + ord[nf + k] - nf] = out_[wb + k];
+  }
 
   // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does
   // not falls back to the configured c), so compressible runs use the largest local c / h.
@@ -162,6 +193,72 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));
   if (cfl_.kinematic_viscosity > 0.0) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
   stable_step_ = dt;
+}
+
+template <int D>
+void SphSystem<D>::set_generator(std::unique_ptr<ParticleGenerator<D>> g) {
+  if (reorder_ && g) throw std::logic_error("SphSystem: reordering does not support generated particles");
+  generator_ = std::move(g);
+}
+
+template <int D>
+void SphSystem<D>::set_reorder(bool on) {
+  if (rhs_evals_ > 0) throw std::logic_error("SphSystem::set_reorder: must be set before the first evaluation");
+  if (on && generator_) throw std::logic_error("SphSystem: reordering does not support generated particles");
+  reorder_ = on;
+  perm_.clear();
+  ws_.particles = &particles_;
+  ws_.order = nullptr;
+  if (!on) return;
+  wp_ = particles_;
+  perm_.resize(n_base_);
+  std::iota(perm_.begin(), perm_.end(), 0u);
+  ws_.particles = &wp_;
+  ws_.order = perm_.data();
+}
+
+// New Morton order of the fluid and of the walls (each within its own range, so fluid stays first
+// and rows keep their fluid-then-wall structure), applied to every array indexed by workspace index.
+template <int D>
+void SphSystem<D>::reorder_workspace() {
+  const std::size_t nf = layout_.n, nb = n_base_;
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = ws_.x[d].data();
+  // Cells half the list radius wide: neighbours within a few cells, a few particles per cell.
+  const double cell = 0.5 * pairs_->list_radius();
+  const auto fluid = morton_order<D>(xs, 0, nf, domain_, cell);
+  const auto walls = morton_order<D>(xs, nf, nb, domain_, cell);
+  std::vector<double> td;
+  std::vector<std::uint32_t> tu;
+  std::vector<std::uint8_t> tb;
+  std::vector<Kind> tk;
+  auto both = [&](auto& v, auto& tmp) {
+    permute_range(v, fluid, 0, tmp);
+    permute_range(v, walls, nf, tmp);
+  };
+  for (int d = 0; d < D; ++d) {
+    both(ws_.x[d], td);
+    both(ws_.v[d], td);
+    both(wp_.x[d], td);
+    both(wp_.v[d], td);
+    both(wp_.x_ref[d], td);
+    both(wp_.wall_normal[d], td);
+  }
+  for (auto* v : {&ws_.rho, &ws_.p, &ws_.c, &ws_.e, &ws_.hs, &wp_.mass, &wp_.rho, &wp_.wall_depth}) both(*v, td);
+  for (auto& s : ws_.strain) both(s, td);
+  if (!h_ref_.empty()) both(h_ref_, td);
+  if (!rho_ref_.empty()) both(rho_ref_, td);
+  both(wp_.stationary, tb);
+  both(wp_.kind, tk);
+  both(perm_, tu);
+}
+
+template <int D>
+const std::vector<double>& SphSystem<D>::state_order(const std::vector<double>& w, std::vector<double>& out) const {
+  if (perm_.empty()) return w;
+  out = w;
+  for (std::size_t k = 0; k < perm_.size(); ++k) out[perm_[k]] = w[k];
+  return out;
 }
 
 template class SphSystem<1>;

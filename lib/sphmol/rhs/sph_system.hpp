@@ -42,7 +42,16 @@ class SphSystem final : public OdeSystem {
   long rhs_evaluations() const override { return rhs_evals_; }
 
   // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
-  void set_generator(std::unique_ptr<ParticleGenerator<D>> g) { generator_ = std::move(g); }
+  void set_generator(std::unique_ptr<ParticleGenerator<D>> g);
+  // Locality reordering (neighbors/particle_reorder.hpp): at every Verlet-list rebuild the workspace
+  // index is re-sorted along a Morton curve. Only the workspace is reordered: y and ydot keep the
+  // state order (gathered and scattered through the permutation), so an integrator never sees it and
+  // results change only by floating-point summation order. Set before the first rhs(); not with a
+  // particle generator (its images refer to workspace indices of the previous order).
+  void set_reorder(bool on);
+  bool reorder() const { return reorder_; }
+  // Workspace index -> state index of the current order (empty when reordering is off).
+  const std::vector<std::uint32_t>& workspace_order() const { return perm_; }
   // Appends a term after the scene's terms (a case's monitor, e.g. particle drift at every evaluation).
   void append_term(std::unique_ptr<Term<D>> t) { terms_.push_back(std::move(t)); }
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
@@ -62,14 +71,17 @@ class SphSystem final : public OdeSystem {
   const VerletList<D>& pair_list() const { return *pairs_; }
   // Pairs inside the kernel support at the most recent evaluation (directed: each pair twice).
   std::size_t active_pairs() const { return ws_.pairs.pairs(); }
-  // The density and pressure of the most recent evaluation (all particles).
-  const std::vector<double>& density() const { return ws_.rho; }
-  const std::vector<double>& pressure() const { return ws_.p; }
-  const std::vector<double>& sound_speed() const { return ws_.c; }
-  const std::vector<double>& energy() const { return ws_.e; }
-  const std::vector<double>& smoothing_lengths() const { return ws_.hs; }
+  // The density and pressure of the most recent evaluation (all particles, in state order).
+  const std::vector<double>& density() const { return state_order(ws_.rho, rho_out_); }
+  const std::vector<double>& pressure() const { return state_order(ws_.p, p_out_); }
+  const std::vector<double>& sound_speed() const { return state_order(ws_.c, c_out_); }
+  const std::vector<double>& energy() const { return state_order(ws_.e, e_out_); }
+  const std::vector<double>& smoothing_lengths() const { return state_order(ws_.hs, hs_out_); }
 
  private:
+  void reorder_workspace();
+  const std::vector<double>& state_order(const std::vector<double>& w, std::vector<double>& out) const;
+
   Particles<D> particles_;
   Domain<D> domain_;
   StateLayout<D> layout_;
@@ -85,6 +97,14 @@ class SphSystem final : public OdeSystem {
   double support_ = 0.0;                 // kernel support in units of h
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
+  // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
+  // and walls within [n_fluid, n_base); empty when off. wp_ is particles_ in workspace order, out_ the
+  // derivatives in workspace order before the scatter into ydot.
+  bool reorder_ = false;
+  std::vector<std::uint32_t> perm_;
+  Particles<D> wp_;
+  std::vector<double> out_;
+  mutable std::vector<double> rho_out_, p_out_, c_out_, e_out_, hs_out_;
 };
 
 extern template class SphSystem<1>;

@@ -5,6 +5,7 @@
 // image), W and F = (dW/dr)/r, so that grad_i W_ij = F_ij dx_ij. Terms read these and never
 // recompute a distance or a kernel.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "sphmol/core/domain.hpp"
@@ -18,6 +19,10 @@ struct Workspace {
   std::size_t n = 0, n_fluid = 0;
   const Particles<D>* particles = nullptr;  // mass, kind, wall motion
   const Domain<D>* domain = nullptr;
+  // Workspace index -> particle (state) index when the workspace is reordered for locality
+  // (rhs/sph_system.hpp, set_reorder); null when the two agree. Only a term that keeps its own
+  // per-particle data needs it.
+  const std::uint32_t* order = nullptr;
   PairList pairs;  // active pairs (r < support), same row structure as the Verlet list
   double h = 0.0;
   double W0 = 0.0;  // W(0, h): the self-contribution to summation density
