@@ -68,13 +68,7 @@ class KernelPassFor final : public KernelPass<D> {
       }
       po[i + 1] = count;
     }
-    for (long i = 0; i < rows; ++i) po[i + 1] += po[i];
-    const std::size_t n_active = po[rows];
-    P.j.resize(n_active);
-    for (int d = 0; d < D; ++d) w.dx[d].resize(n_active);
-    w.W.resize(n_active);
-    w.F.resize(n_active);
-    w.vfac.resize(n_active);
+    w.size_active_pairs(static_cast<std::size_t>(rows));
     std::uint32_t* pj = P.j.data();
     double *pW = w.W.data(), *pF = w.F.data(), *pv = w.vfac.data();
     double* pdx[D];

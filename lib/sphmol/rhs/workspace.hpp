@@ -54,6 +54,18 @@ struct Workspace {
   double* drhodt_wall = nullptr;
   std::size_t n_wall_density = 0;
 
+  // After a kernel pass has counted each row's active pairs into pairs.offset[i + 1]: turns the
+  // counts into row offsets and sizes every per-pair array for the total.
+  void size_active_pairs(std::size_t rows) {
+    auto& po = pairs.offset;
+    for (std::size_t i = 0; i < rows; ++i) po[i + 1] += po[i];
+    const std::size_t n_active = po[rows];
+    pairs.j.resize(n_active);
+    for (int d = 0; d < D; ++d) dx[d].resize(n_active);
+    W.resize(n_active);
+    F.resize(n_active);
+    vfac.resize(n_active);
+  }
 };
 
 }  // namespace sphmol
