@@ -11,6 +11,7 @@
 // the EOS reads max(rho, floor) (rhs/sph_system.cpp) and here a wall at or below the floor does not
 // decompress further (its rate is cut to zero), so the state stays within one step of the floor and
 // the wall resists the next approaching fluid at once.
+#include "sphmol/physics/continuity_density.hpp"
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -21,19 +22,11 @@ class DynamicWallDensity final : public Term<D> {
   explicit DynamicWallDensity(double floor) : floor_(floor) {}
   std::string_view name() const override { return "dynamic_wall_density"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
-    const auto& m = w.particles->mass;
     const std::size_t nf = w.n_fluid, nw = w.n_wall_density;
     double* out = w.drhodt_wall;
 #pragma omp parallel for schedule(static)
     for (std::size_t a = nf; a < nf + nw; ++a) {
-      double s = 0.0;
-      for (std::uint32_t k = P.offset[a]; k < P.offset[a + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        double vdx = 0.0;
-        for (int d = 0; d < D; ++d) vdx += (w.v[d][a] - w.v[d][j]) * w.dx[d][k];
-        s += m[j] * vdx * w.F[k];
-      }
+      const double s = continuity_rate(w, a);
       // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.
       out[a - nf] += (w.rho[a] <= floor_ && s < 0.0) ? 0.0 : s;
     }

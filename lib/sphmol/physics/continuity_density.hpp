@@ -8,24 +8,28 @@
 
 namespace sphmol {
 
+// The sum of seed 003 eq 2.61 over the active pairs of row i (also used for dynamic wall particles).
+template <int D>
+inline double continuity_rate(const Workspace<D>& w, std::size_t i) {
+  const auto& P = w.pairs;
+  const auto& m = w.particles->mass;
+  double s = 0.0;
+  for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
+    const std::uint32_t j = P.j[k];
+    double vdx = 0.0;
+    for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
+    s += m[j] * vdx * w.F[k];
+  }
+  return s;
+}
+
 template <int D>
 class ContinuityDensity final : public Term<D> {
  public:
   std::string_view name() const override { return "continuity_density"; }
   void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
-    const auto& m = w.particles->mass;
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      double s = 0.0;
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        double vdx = 0.0;
-        for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
-        s += m[j] * vdx * w.F[k];
-      }
-      w.drhodt[i] += s;
-    }
+    for (std::size_t i = 0; i < w.n_fluid; ++i) w.drhodt[i] += continuity_rate(w, i);
   }
 };
 

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/channel_scene.hpp"
 #include "sphmol/time/blow_up.hpp"
@@ -56,14 +56,8 @@ void ChannelCase::annotate(nlohmann::json& summary) const {
 
 std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
   if (!profiles_) return {};
-  std::vector<std::pair<double, std::string>> files;
-  for (const auto& e : std::filesystem::directory_iterator(out.directory)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("profile_t", 0) != 0 || e.path().extension() != ".csv") continue;
-    files.emplace_back(std::strtod(name.c_str() + 9, nullptr), name);
-  }
+  const auto files = timed_output_files(out, "profile_t");
   if (files.empty()) return {};
-  std::sort(files.begin(), files.end());
   std::ostringstream s;
   s << "# SPH velocity profiles vs " << ref_.name << " (sph-mol " << "ChannelCase)\n"
     << "set terminal pngcairo size 900,640 font ',11'\n"

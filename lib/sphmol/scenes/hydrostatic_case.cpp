@@ -1,14 +1,13 @@
 #include "sphmol/scenes/hydrostatic_case.hpp"
 
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
 #include "sphmol/analysis/drift_monitor.hpp"
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 
@@ -89,18 +88,9 @@ void HydrostaticCase::annotate(nlohmann::json& summary) const {
 
 // p against depth at the last output time: every fluid particle, and the line rho0 g depth.
 std::vector<PlotScript> HydrostaticCase::plots(const OutputSink& out) const {
-  double t_last = -1.0;
-  std::string file;
-  for (const auto& entry : std::filesystem::directory_iterator(out.directory)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("pressure_t", 0) != 0 || entry.path().extension() != ".csv") continue;
-    const double t = std::strtod(name.c_str() + 10, nullptr);
-    if (t > t_last) {
-      t_last = t;
-      file = name;
-    }
-  }
-  if (file.empty()) return {};
+  const auto files = timed_output_files(out, "pressure_t");
+  if (files.empty()) return {};
+  const auto& [t_last, file] = files.back();
   std::ostringstream s;
   s << std::setprecision(10) << "# hydrostatic column: p vs depth (sph-mol HydrostaticCase)\n"
     << "set terminal pngcairo size 800,640 font ',11'\n"

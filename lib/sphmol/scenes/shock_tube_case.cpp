@@ -4,12 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/shock_tube_scene.hpp"
 
@@ -192,18 +192,9 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
 template <int D>
 std::vector<PlotScript> ShockTubeCase<D>::plots(const OutputSink& out) const {
   if (!profiles_) return {};
-  double t_last = -1.0;
-  std::string file;
-  for (const auto& entry : std::filesystem::directory_iterator(out.directory)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("midline_t", 0) != 0 || entry.path().extension() != ".csv") continue;
-    const double t = std::strtod(name.c_str() + 9, nullptr);
-    if (t > t_last) {
-      t_last = t;
-      file = name;
-    }
-  }
-  if (file.empty()) return {};
+  const auto files = timed_output_files(out, "midline_t");
+  if (files.empty()) return {};
+  const auto& [t_last, file] = files.back();
   std::ostringstream s;
   s << "# shock tube: mid-line particles vs the exact Riemann solution (sph-mol ShockTubeCase)\n"
     << "set terminal pngcairo size 1100,800 font ',10'\n"
