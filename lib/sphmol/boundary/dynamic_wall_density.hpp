@@ -12,24 +12,19 @@
 // decompress further (its rate is cut to zero), so the state stays within one step of the floor and
 // the wall resists the next approaching fluid at once.
 #include "sphmol/physics/continuity_density.hpp"
-#include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
 
 template <int D>
-class DynamicWallDensity final : public Term<D> {
+class DynamicWallDensity final : public PairTermFor<D, DynamicWallDensity<D>> {
  public:
   explicit DynamicWallDensity(double floor) : floor_(floor) {}
   std::string_view name() const override { return "dynamic_wall_density"; }
-  void apply(Workspace<D>& w) const override {
-    const std::size_t nf = w.n_fluid, nw = w.n_wall_density;
-    double* out = w.drhodt_wall;
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = nf; a < nf + nw; ++a) {
-      const double s = continuity_rate(w, a);
-      // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.
-      out[a - nf] += (w.rho[a] <= floor_ && s < 0.0) ? 0.0 : s;
-    }
+  PairRows rows() const override { return PairRows::dynamic_walls; }
+  void row_impl(Workspace<D>& w, std::size_t a, const PairRow<D>& r) const {
+    const double s = continuity_rate(w, a, r);
+    // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.
+    w.drhodt_wall[a - w.n_fluid] += (w.rho[a] <= floor_ && s < 0.0) ? 0.0 : s;
   }
 
  private:

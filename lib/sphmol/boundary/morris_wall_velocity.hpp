@@ -12,38 +12,37 @@
 // t = 0.5 s); the default 8 acts only on particles closer to the wall than d_B/7.
 #include <algorithm>
 
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 template <int D>
-class MorrisWallVelocity final : public Term<D> {
+class MorrisWallVelocity final : public PairTermFor<D, MorrisWallVelocity<D>> {
  public:
-  explicit MorrisWallVelocity(double beta_max) : beta_max_(beta_max) {}
+  // wall_rows: also set the factor in the wall particles' rows, for terms that sum over wall rows
+  // (the strain rate of physics/strain_rate.hpp); fluid rows always.
+  MorrisWallVelocity(double beta_max, bool wall_rows) : beta_max_(beta_max), wall_rows_(wall_rows) {}
   std::string_view name() const override { return "morris_wall_velocity"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  PairRows rows() const override { return wall_rows_ ? PairRows::all : PairRows::fluid; }
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& pt = *w.particles;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n; ++i) {
-      const bool wall_row = i >= w.n_fluid;
-      // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.
-      std::uint32_t k = P.offset[i];
-      if (!wall_row) k = static_cast<std::uint32_t>(std::lower_bound(P.j.begin() + P.offset[i], P.j.begin() + P.offset[i + 1],
-                                                                     static_cast<std::uint32_t>(w.n_fluid)) - P.j.begin());
-      for (; k < P.offset[i + 1]; ++k) {
-        const std::size_t j = P.j[k];
-        const std::size_t b = wall_row ? i : j;  // the wall particle of the pair
-        const double sign = wall_row ? -1.0 : 1.0;   // dx = x_i - x_j; we need x_fluid - x_wall
-        double dA = -pt.wall_depth[b];
-        for (int d = 0; d < D; ++d) dA += pt.wall_normal[d][b] * sign * w.dx[d][k];
-        w.vfac[k] = dA > 0.0 ? std::min(beta_max_, 1.0 + pt.wall_depth[b] / dA) : beta_max_;
-      }
+    const bool wall_row = i >= w.n_fluid;
+    // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.
+    std::uint32_t k = 0;
+    if (!wall_row) k = static_cast<std::uint32_t>(std::lower_bound(r.j, r.j + r.n, static_cast<std::uint32_t>(w.n_fluid)) - r.j);
+    for (; k < r.n; ++k) {
+      const std::size_t j = r.j[k];
+      const std::size_t b = wall_row ? i : j;  // the wall particle of the pair
+      const double sign = wall_row ? -1.0 : 1.0;   // dx = x_i - x_j; we need x_fluid - x_wall
+      double dA = -pt.wall_depth[b];
+      for (int d = 0; d < D; ++d) dA += pt.wall_normal[d][b] * sign * r.dx[d][k];
+      r.vfac[k] = dA > 0.0 ? std::min(beta_max_, 1.0 + pt.wall_depth[b] / dA) : beta_max_;
     }
   }
 
  private:
   double beta_max_;
+  bool wall_rows_;
 };
 
 }  // namespace sphmol

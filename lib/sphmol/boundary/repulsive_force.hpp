@@ -26,6 +26,7 @@ class RepulsiveBoundary final : public Term<D> {
  public:
   explicit RepulsiveBoundary(RepulsiveLaw law) : law_(law) {}
   std::string_view name() const override { return "repulsive_boundary"; }
+  bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
 #pragma omp parallel for schedule(static)

@@ -20,6 +20,7 @@ class WallPressureExtrapolated final : public Term<D> {
   WallPressureExtrapolated(const std::array<double, D>& g, double ramp, std::function<double(double)> density_of_pressure)
       : g_(g), ramp_(ramp), rho_of_p_(std::move(density_of_pressure)) {}
   std::string_view name() const override { return "wall_pressure_extrapolated"; }
+  bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const double f = body_force_ramp_factor(w.t, ramp_);

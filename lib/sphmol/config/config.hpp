@@ -105,6 +105,9 @@ struct DiscretizationConfig {
   std::string neighbor_search = "kdtree";         // kdtree | all_pairs
   double skin = 0.3;                // Verlet skin in units of h, >= 0
   bool reorder = false;             // Morton-order the workspace at each list rebuild (rhs/sph_system.hpp)
+  // auto: fused pair passes (rhs/fused_pair_pass.hpp) when every pair term has a row form, else stored;
+  // fused: required (error otherwise); stored: the active-pair list is built and kept per evaluation.
+  std::string pair_passes = "auto";
   ArtificialViscosityConfig artificial_viscosity;
   TransportVelocityConfig transport_velocity;
   bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state

@@ -105,7 +105,8 @@ std::string to_yaml(const Config& c) {
     << "  wall_layers: " << d.wall_layers << "\n"
     << "  neighbor_search: " << d.neighbor_search << "\n"
     << "  skin: " << num(d.skin) << "\n"
-    << "  reorder: " << (d.reorder ? "true" : "false") << "\n";
+    << "  reorder: " << (d.reorder ? "true" : "false") << "\n"
+    << "  pair_passes: " << d.pair_passes << "\n";
   if (d.artificial_viscosity.enabled)
     y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
       << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";

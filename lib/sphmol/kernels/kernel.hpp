@@ -45,6 +45,20 @@ struct KernelFromEval {
   }
 };
 
+// W and (dW/dr)/r at h = 1, r = q: what the kernel passes need (rhs/kernel_pass.hpp). A kernel whose
+// derivative carries a factor q defines eval_unit_over_r without the division; otherwise dW/dr / q
+// (0 at q = 0).
+template <class K>
+inline void kernel_unit_over_r(double q, double& w, double& f) {
+  if constexpr (requires { K::eval_unit_over_r(q, w, f); }) {
+    K::eval_unit_over_r(q, w, f);
+  } else {
+    double dw;
+    K::eval(q, 1.0, w, dw);
+    f = q > 0.0 ? dw / q : 0.0;
+  }
+}
+
 // h^D without pow().
 template <int D>
 constexpr double h_power(double h) {

@@ -3,6 +3,7 @@
 // dam-break case. psi_{3,1}(R) = (1 - R)^4 (4R + 1) is positive definite in D <= 3; with
 // R = q/2 (support 2h) it reads (1 - q/2)^4 (2q + 1). Constants from the integral:
 // A_D = 3/(4h), 7/(4 pi h^2), 21/(16 pi h^3).
+#include <cmath>
 #include <numbers>
 #include <string_view>
 
@@ -25,6 +26,14 @@ struct WendlandC2Kernel : KernelFromEval<WendlandC2Kernel<D>> {
     const double a = sigma / h_power<D>(h), t = 1.0 - 0.5 * q, t3 = t * t * t;
     w = a * t3 * t * (2.0 * q + 1.0);
     dw = -5.0 * a / h * q * t3;
+  }
+  // (dW/dq)/q = -5 sigma t^3 needs no division, and t clamped at 0 makes the value 0 outside the
+  // support. The clamp is written (u + |u|)/2, exact, because compilers turn max(0, u) into a branch
+  // here, which mispredicts on the skin pairs the fused kernel pass evaluates and discards.
+  static void eval_unit_over_r(double q, double& w, double& f) {
+    const double u = 1.0 - 0.5 * q, t = 0.5 * (u + std::fabs(u)), t3 = t * t * t;
+    w = sigma * t3 * t * (2.0 * q + 1.0);
+    f = -5.0 * sigma * t3;
   }
 };
 

@@ -6,35 +6,36 @@
 //   de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij         (its work, eq 2.72; only with energy)
 // Pi_ij is symmetric in i, j, so the pair forces are antisymmetric and momentum is conserved; the
 // heating is >= 0. Sound speeds c_i come from the EOS (Workspace::c), h_ij = (h_i + h_j)/2.
-#include "sphmol/rhs/term.hpp"
+#include <algorithm>
+
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 template <int D, bool WithEnergy>
-class ArtificialViscosity final : public Term<D> {
+class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, WithEnergy>> {
  public:
   ArtificialViscosity(double alpha, double beta, double eta_factor) : alpha_(alpha), beta_(beta), eta_(eta_factor) {}
   std::string_view name() const override { return WithEnergy ? "artificial_viscosity+heating" : "artificial_viscosity"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+    {
       double a[D] = {}, de = 0.0;
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
+      for (std::uint32_t k = 0; k < r.n; ++k) {
+        const std::uint32_t j = r.j[k];
         double vx = 0.0, r2 = 0.0;
         for (int d = 0; d < D; ++d) {
-          vx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
-          r2 += w.dx[d][k] * w.dx[d][k];
+          vx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
+          r2 += r.dx[d][k] * r.dx[d][k];
         }
         const double hij = 0.5 * (w.hs[i] + w.hs[j]);
-        const double theta = hij * vx / (r2 + eta_ * eta_ * hij * hij);
         const double cbar = 0.5 * (w.c[i] + w.c[j]), rhobar = 0.5 * (w.rho[i] + w.rho[j]);
-        // Receding pairs (vx >= 0) get no viscosity: a select, not a branch on configuration.
-        const double pi = vx < 0.0 ? (beta_ * theta - alpha_ * cbar) * theta / rhobar : 0.0;
-        const double s = m[j] * pi * w.F[k];
-        for (int d = 0; d < D; ++d) a[d] -= s * w.dx[d][k];
+        // Receding pairs (vx >= 0) get no viscosity: theta = 0 through min(vx, 0), with no branch.
+        // One division: t = theta / rhobar, theta = t rhobar.
+        const double t = hij * std::min(vx, 0.0) / ((r2 + eta_ * eta_ * hij * hij) * rhobar);
+        const double pi = (beta_ * t * rhobar - alpha_ * cbar) * t;
+        const double s = m[j] * pi * r.F[k];
+        for (int d = 0; d < D; ++d) a[d] -= s * r.dx[d][k];
         if constexpr (WithEnergy) de += 0.5 * s * vx;
       }
       for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];

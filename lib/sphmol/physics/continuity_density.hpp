@@ -4,33 +4,29 @@
 // rho is part of the ODE state; this term writes its rate. Wall neighbours enter with their
 // prescribed velocity. No edge effect at density jumps (seed 003 §3.3), but mass is not conserved
 // exactly (the density no longer follows from the positions).
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
-// The sum of seed 003 eq 2.61 over the active pairs of row i (also used for dynamic wall particles).
+// The sum of seed 003 eq 2.61 over one row (also used for dynamic wall particles).
 template <int D>
-inline double continuity_rate(const Workspace<D>& w, std::size_t i) {
-  const auto& P = w.pairs;
+inline double continuity_rate(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
   const auto& m = w.particles->mass;
   double s = 0.0;
-  for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-    const std::uint32_t j = P.j[k];
+  for (std::uint32_t k = 0; k < r.n; ++k) {
+    const std::uint32_t j = r.j[k];
     double vdx = 0.0;
-    for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
-    s += m[j] * vdx * w.F[k];
+    for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
+    s += m[j] * vdx * r.F[k];
   }
   return s;
 }
 
 template <int D>
-class ContinuityDensity final : public Term<D> {
+class ContinuityDensity final : public PairTermFor<D, ContinuityDensity<D>> {
  public:
   std::string_view name() const override { return "continuity_density"; }
-  void apply(Workspace<D>& w) const override {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) w.drhodt[i] += continuity_rate(w, i);
-  }
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const { w.drhodt[i] += continuity_rate(w, i, r); }
 };
 
 }  // namespace sphmol

@@ -7,31 +7,27 @@
 // With grad_i W_ij = F_ij (x_i - x_j) (rhs/workspace.hpp) the dot product is 2 (rho_i - rho_j) F_ij.
 // Applied between fluid particles only, as DualSPHysics does: dynamic wall particles carry the
 // hydrostatic density of the fluid they hold up, not a diffusing field of their own.
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 template <int D>
-class DensityDiffusion final : public Term<D> {
+class DensityDiffusion final : public PairTermFor<D, DensityDiffusion<D>> {
  public:
   DensityDiffusion(double delta, double h, double sound_speed) : coef_(delta * h * sound_speed) {}
   std::string_view name() const override { return "density_diffusion_molteni_colagrossi"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
     const std::size_t nf = w.n_fluid;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i) {
-      double s = 0.0;
-      const double ri = w.rho[i];
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        // Fluid neighbours only: a select on the particle index, not a configuration branch.
-        const double vj = j < nf ? m[j] / w.rho[j] : 0.0;
-        s += 2.0 * (ri - w.rho[j]) * w.F[k] * vj;
-      }
-      w.drhodt[i] += coef_ * s;
+    double s = 0.0;
+    const double ri = w.rho[i];
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      // Fluid neighbours only: a select on the particle index, not a configuration branch.
+      const double vj = j < nf ? m[j] / w.rho[j] : 0.0;
+      s += 2.0 * (ri - w.rho[j]) * r.F[k] * vj;
     }
+    w.drhodt[i] += coef_ * s;
   }
 
  private:

@@ -5,34 +5,32 @@
 // Each form is the work of the matching momentum equation (000 eq 117 / 116), so the total
 // energy sum m (e + v^2/2) is conserved by the pair sums. The artificial viscosity adds its own
 // work (physics/artificial_viscosity.hpp, eq 2.72).
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 enum class EnergyForm { symmetric_116, symmetric_117 };
 
 template <int D, EnergyForm Form>
-class EnergyEquation final : public Term<D> {
+class EnergyEquation final : public PairTermFor<D, EnergyEquation<D, Form>> {
  public:
   std::string_view name() const override {
     return Form == EnergyForm::symmetric_117 ? "energy_equation_2.66" : "energy_equation_2.65";
   }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
+    {
       double de = 0.0;
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
+      for (std::uint32_t k = 0; k < r.n; ++k) {
+        const std::uint32_t j = r.j[k];
         double vx = 0.0;
-        for (int d = 0; d < D; ++d) vx += (w.v[d][i] - w.v[d][j]) * w.dx[d][k];
+        for (int d = 0; d < D; ++d) vx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
         double coef;
         if constexpr (Form == EnergyForm::symmetric_117)
           coef = w.p[i] / (w.rho[i] * w.rho[i]) + w.p[j] / (w.rho[j] * w.rho[j]);
         else
           coef = (w.p[i] + w.p[j]) / (w.rho[i] * w.rho[j]);
-        de += m[j] * coef * vx * w.F[k];
+        de += m[j] * coef * vx * r.F[k];
       }
       w.dedt[i] += 0.5 * de;
     }

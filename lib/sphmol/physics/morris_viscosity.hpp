@@ -3,34 +3,30 @@
 //   dv_i/dt += sum_j m_j (mu_i + mu_j) / (rho_i rho_j) * (x_ij . grad_i W_ij) / (r_ij^2 + eta^2) * v_ij
 // with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. Fluid-wall velocity
 // differences are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 template <int D>
-class MorrisViscosity final : public Term<D> {
+class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D>> {
  public:
   explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
   std::string_view name() const override { return "morris_viscosity"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      double a[D] = {};
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        double r2 = 0.0;
-        for (int d = 0; d < D; ++d) {
-          const double dx = w.dx[d][k];
-          r2 += dx * dx;
-        }
-        const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * w.F[k] * r2 / (r2 + eta2);
-        for (int d = 0; d < D; ++d) a[d] += s * w.vfac[k] * (w.v[d][i] - w.v[d][j]);
+    double a[D] = {};
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double dx = r.dx[d][k];
+        r2 += dx * dx;
       }
-      for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
+      const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * r.F[k] * r2 / (r2 + eta2);
+      for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - w.v[d][j]);
     }
+    for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
   }
 
  private:

@@ -15,6 +15,7 @@ template <int D>
 class NormalisedSummationDensity final : public Term<D> {
  public:
   std::string_view name() const override { return "normalised_summation_density"; }
+  bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;

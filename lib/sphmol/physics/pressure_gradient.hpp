@@ -1,28 +1,24 @@
 #pragma once
 // Pressure part of the symmetric momentum equation, seed 000 eq 117 (seed 002 eq 12):
 //   dv_i/dt -= sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 template <int D>
-class PressureGradient117 final : public Term<D> {
+class PressureGradient117 final : public PairTermFor<D, PressureGradient117<D>> {
  public:
   std::string_view name() const override { return "pressure_gradient_117"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
-      double a[D] = {};
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        const double s = m[j] * (pi + w.p[j] / (w.rho[j] * w.rho[j])) * w.F[k];
-        for (int d = 0; d < D; ++d) a[d] -= s * w.dx[d][k];
-      }
-      for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
+    const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
+    double a[D] = {};
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      const double s = m[j] * (pi + w.p[j] / (w.rho[j] * w.rho[j])) * r.F[k];
+      for (int d = 0; d < D; ++d) a[d] -= s * r.dx[d][k];
     }
+    for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
   }
 };
 

@@ -15,6 +15,7 @@ template <int D>
 class StrainRate final : public Term<D> {
  public:
   std::string_view name() const override { return "strain_rate"; }
+  bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n_fluid; ++i) {

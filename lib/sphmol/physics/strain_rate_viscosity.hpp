@@ -11,6 +11,7 @@ class StrainRateViscosity117 final : public Term<D> {
  public:
   explicit StrainRateViscosity117(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
   std::string_view name() const override { return "strain_rate_viscosity_117"; }
+  bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;

@@ -10,70 +10,87 @@
 // Since v is now carried along v~, the momentum gets the extra stress A = rho v (v~ - v) (their eq. 8/12):
 //   dv_i/dt += (1/m_i) sum_j (V_i^2 + V_j^2) (A_i + A_j)/2 . grad_i W_ij,   (A . g)_a = sum_b A_ab g_b,
 // optional (`extra_stress`). Wall particles enter the sums with their rest volume and A = 0.
+#include <array>
+#include <memory>
 #include <vector>
 
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
+// du_i per fluid particle: written by the shift, read at neighbours by the extra stress.
 template <int D>
-class TransportVelocity final : public Term<D> {
+using TransportShiftField = std::array<std::vector<double>, D>;
+
+template <int D>
+class TransportVelocityShift final : public PairTermFor<D, TransportVelocityShift<D>> {
  public:
-  TransportVelocity(double background_pressure, double time_scale, bool extra_stress)
-      : pb_(background_pressure), tau_(time_scale), stress_(extra_stress) {}
-  std::string_view name() const override { return stress_ ? "transport_velocity+extra_stress" : "transport_velocity"; }
-  void apply(Workspace<D>& w) const override {
-    const auto& P = w.pairs;
+  TransportVelocityShift(double background_pressure, double time_scale, std::shared_ptr<TransportShiftField<D>> du)
+      : pb_(background_pressure), tau_(time_scale), du_(std::move(du)) {}
+  std::string_view name() const override { return "transport_velocity"; }
+  // The extra stress, when on, reads du_j.
+  bool feeds_neighbours() const override { return du_ != nullptr; }
+  void prepare(Workspace<D>& w) const override {
+    if (du_)
+      for (auto& d : *du_) d.assign(w.n_fluid, 0.0);
+  }
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-    const std::size_t nf = w.n_fluid;
-    for (auto& d : du_) d.assign(nf, 0.0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i) {
-      const double Vi = m[i] / w.rho[i];
-      double s[D] = {};
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        const double Vj = m[j] / w.rho[j];
-        const double f = (Vi * Vi + Vj * Vj) * w.F[k];
-        for (int d = 0; d < D; ++d) s[d] += f * w.dx[d][k];
-      }
-      const double c = -tau_ * pb_ / m[i];
-      for (int d = 0; d < D; ++d) {
-        du_[d][i] = c * s[d];
-        w.dxdt[d][i] += du_[d][i];
-      }
+    const double Vi = m[i] / w.rho[i];
+    double s[D] = {};
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      const double Vj = m[j] / w.rho[j];
+      const double f = (Vi * Vi + Vj * Vj) * r.F[k];
+      for (int d = 0; d < D; ++d) s[d] += f * r.dx[d][k];
     }
-    if (!stress_) return;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i) {
-      const double Vi = m[i] / w.rho[i];
-      double a[D] = {};
-      for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
-        const std::uint32_t j = P.j[k];
-        const double Vj = m[j] / w.rho[j];
-        const double f = 0.5 * (Vi * Vi + Vj * Vj) * w.F[k];
-        // (A_i + A_j) . dx, A_ab = rho v_a du_b; walls (j >= n_fluid) carry no extra stress
-        double Ag[D];
-        for (int d = 0; d < D; ++d) {
-          double dui = 0.0;
-          for (int e = 0; e < D; ++e) dui += du_[e][i] * w.dx[e][k];
-          Ag[d] = w.rho[i] * w.v[d][i] * dui;
-        }
-        if (j < nf) {
-          double duj = 0.0;
-          for (int e = 0; e < D; ++e) duj += du_[e][j] * w.dx[e][k];
-          for (int d = 0; d < D; ++d) Ag[d] += w.rho[j] * w.v[d][j] * duj;
-        }
-        for (int d = 0; d < D; ++d) a[d] += f * Ag[d];
-      }
-      for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d] / m[i];
+    const double c = -tau_ * pb_ / m[i];
+    for (int d = 0; d < D; ++d) {
+      const double du = c * s[d];
+      if (du_) (*du_)[d][i] = du;
+      w.dxdt[d][i] += du;
     }
   }
 
  private:
   double pb_, tau_;
-  bool stress_;
-  mutable std::array<std::vector<double>, D> du_;  // per fluid particle, shared by the two passes
+  std::shared_ptr<TransportShiftField<D>> du_;  // null without the extra stress
+};
+
+template <int D>
+class TransportVelocityStress final : public PairTermFor<D, TransportVelocityStress<D>> {
+ public:
+  explicit TransportVelocityStress(std::shared_ptr<const TransportShiftField<D>> du) : du_(std::move(du)) {}
+  std::string_view name() const override { return "transport_velocity_extra_stress"; }
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
+    const auto& m = w.particles->mass;
+    const auto& du = *du_;
+    const std::size_t nf = w.n_fluid;
+    const double Vi = m[i] / w.rho[i];
+    double a[D] = {};
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      const double Vj = m[j] / w.rho[j];
+      const double f = 0.5 * (Vi * Vi + Vj * Vj) * r.F[k];
+      // (A_i + A_j) . dx, A_ab = rho v_a du_b; walls (j >= n_fluid) carry no extra stress
+      double Ag[D];
+      for (int d = 0; d < D; ++d) {
+        double dui = 0.0;
+        for (int e = 0; e < D; ++e) dui += du[e][i] * r.dx[e][k];
+        Ag[d] = w.rho[i] * w.v[d][i] * dui;
+      }
+      if (j < nf) {
+        double duj = 0.0;
+        for (int e = 0; e < D; ++e) duj += du[e][j] * r.dx[e][k];
+        for (int d = 0; d < D; ++d) Ag[d] += w.rho[j] * w.v[d][j] * duj;
+      }
+      for (int d = 0; d < D; ++d) a[d] += f * Ag[d];
+    }
+    for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d] / m[i];
+  }
+
+ private:
+  std::shared_ptr<const TransportShiftField<D>> du_;
 };
 
 }  // namespace sphmol

@@ -41,16 +41,14 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   auto kernel = variable_h ? make_variable_h_kernel_pass<D>(disc.kernel) : make_kernel_pass<D>(disc.kernel);
   const double mu = fluid.density * fluid.kinematic_viscosity;
 
+  // Term order: the density (when summed, every later term reads it), then the per-particle state
+  // (ghost copies, EOS, wall pressures), then every pair sum, then what reads their totals. Pair sums
+  // with no dependence on each other sit together, so that fused passes group them (rhs/pair_pass_plan.hpp).
   std::vector<std::unique_ptr<Term<D>>> terms;
   if (disc.density == "summation") terms.push_back(std::make_unique<SummationDensity<D>>());
   else if (disc.density == "normalised_summation") terms.push_back(std::make_unique<NormalisedSummationDensity<D>>());
-  else if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
-  else throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
+  else if (disc.density != "continuity") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
   const bool dynamic_walls = disc.wall_pressure == "dynamic";
-  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
-  if (disc.density_diffusion > 0.0)
-    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
-  if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
   std::unique_ptr<GhostGenerator<D>> ghosts;
   if (disc.boundary == "ghost") {
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
@@ -90,6 +88,10 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
     terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
   }
+  if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
+  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (disc.density_diffusion > 0.0)
+    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   const bool m116 = disc.momentum == "symmetric_116";
   if (!m116 && disc.momentum != "symmetric_117")
     throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
@@ -97,7 +99,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (m116) return std::make_unique<PressureGradient116<D>>();
     return std::make_unique<PressureGradient117<D>>();
   };
-  if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max));
+  if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
   else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   if (disc.viscosity == "strain_rate") {
@@ -120,7 +122,6 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (m116) terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
     else terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());
   }
-  if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
   if (disc.boundary == "virtual_repulsive") {
     const RepulsiveLaw law{disc.repulsive.strength, disc.repulsive.p1, disc.repulsive.p2, disc.repulsive.r0 * spacing};
     if (law.r0 >= kernel->support() * h)
@@ -131,10 +132,15 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.xsph > 0.0) terms.push_back(std::make_unique<Xsph<D>>(disc.xsph));
   if (const auto& tv = disc.transport_velocity; tv.enabled) {
     const double c = fluid.eos.sound_speed;
-    terms.push_back(std::make_unique<TransportVelocity<D>>(
-        tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c,
-        tv.step_factor * h / c, tv.extra_stress));
+    auto du = tv.extra_stress ? std::make_shared<TransportShiftField<D>>() : nullptr;
+    terms.push_back(std::make_unique<TransportVelocityShift<D>>(
+        tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c, tv.step_factor * h / c, du));
+    if (du) terms.push_back(std::make_unique<TransportVelocityStress<D>>(du));
   }
+  // Reads the complete drho/dt (seed 003 eq 2.68), so after every density sum.
+  if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
+  // Per particle and read by nothing else: last, so that it never splits a fused pass.
+  if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);
@@ -154,6 +160,17 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   sys->configure_fields(fields, std::move(energy));
   if (ghosts) sys->set_generator(std::move(ghosts));
   sys->set_reorder(disc.reorder);
+  const auto unfusable = sys->terms_needing_stored_pairs();
+  if (disc.pair_passes == "fused" && !unfusable.empty()) {
+    std::string names;
+    for (const auto& n : unfusable) {
+      if (!names.empty()) names += ", ";
+      names += n;
+    }
+    throw std::invalid_argument("discretization.pair_passes: 'fused' is not available with " + names +
+                                " (they need the stored pair list); use 'auto' or 'stored'");
+  }
+  if (disc.pair_passes == "fused" || (disc.pair_passes == "auto" && unfusable.empty())) sys->fuse_pair_passes();
   return sys;
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // Compacts the Verlet list to the pairs inside the kernel support and computes dx_ij, W_ij and
-// F_ij = (dW/dr)/r for each, once per RHS evaluation. The only place a kernel is evaluated in the
+// F_ij = (dW/dr)/r for each, once per RHS evaluation: for the whole list at once (stored pairs) or one
+// row at a time (fused passes, rhs/fused_pair_pass.hpp). The only place a kernel is evaluated in the
 // RHS, instantiated per kernel type.
 #include <cmath>
 #include <memory>
 #include <string_view>
 
 #include "sphmol/kernels/kernel.hpp"
+#include "sphmol/rhs/pair_row.hpp"
 #include "sphmol/rhs/workspace.hpp"
 
 namespace sphmol {
@@ -18,82 +20,173 @@ class KernelPass {
   virtual std::string_view kernel_name() const = 0;
   virtual double support() const = 0;  // in units of h
   virtual double value_at_zero(double h) const = 0;
-  virtual void apply(const PairList& verlet, Workspace<D>& w) const = 0;
+  // Per-evaluation constants (h, periods, positions); call before fill_row, once per evaluation.
+  virtual void prepare(const Workspace<D>& w) = 0;
+  // The whole active list into w.pairs (and dx, W, F, vfac): prepares itself.
+  virtual void apply(const PairList& verlet, Workspace<D>& w) = 0;
+  // Row i only, into a per-thread buffer; returns the number of active pairs. Thread-safe after prepare.
+  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out) const = 0;
+  // Number of active pairs in the Verlet list at the workspace's positions (prepares itself).
+  virtual std::size_t count_active(const PairList& verlet, const Workspace<D>& w) = 0;
+};
+
+// Separation x_i - x_j with the minimum image, from the workspace positions.
+template <int D>
+struct PairGeometry {
+  const double* px[D] = {};
+  double period[D] = {}, inv_period[D] = {};
+  bool periodic = false;  // in any direction
+  PairGeometry() = default;
+  explicit PairGeometry(const Workspace<D>& w) {
+    for (int d = 0; d < D; ++d) {
+      px[d] = w.x[d].data();
+      period[d] = w.domain->period(d);
+      inv_period[d] = w.domain->inv_period(d);
+      periodic = periodic || w.domain->periodic[d];
+    }
+  }
+  // Periodic = false skips the image shift (it is zero without periodic directions, but not free).
+  template <bool Periodic = true>
+  double separation(std::size_t i, std::uint32_t j, double (&dx)[D]) const {
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      dx[d] = px[d][i] - px[d][j];
+      if constexpr (Periodic) dx[d] -= period[d] * std::nearbyint(dx[d] * inv_period[d]);
+      r2 += dx[d] * dx[d];
+    }
+    return r2;
+  }
+};
+
+// Both ways of running a kernel pass over the Verlet list, for a Derived that says which pairs are
+// active and evaluates W and F for one (active(i, j, r2), eval(i, j, r2, W, F), using geometry_):
+// apply() compacts the whole list, fill_row() one row. Rows run in parallel in apply(): a first pass
+// counts each row's pairs inside the support, a prefix sum places the rows, and the second pass fills
+// them, so the active list stays one contiguous CSR whatever the thread count and every row is
+// written by one thread.
+template <int D, class Derived>
+class KernelPassRows : public KernelPass<D> {
+ public:
+  void apply(const PairList& verlet, Workspace<D>& w) final {
+    this->prepare(w);
+    const long rows = static_cast<long>(verlet.rows());
+    PairList& P = w.pairs;
+    P.offset.resize(static_cast<std::size_t>(rows) + 1);
+    std::uint32_t* po = P.offset.data();
+    po[0] = 0;
+    count_rows(verlet, po + 1);
+    w.size_active_pairs(static_cast<std::size_t>(rows));
+    double* pdx[D];
+    for (int d = 0; d < D; ++d) pdx[d] = w.dx[d].data();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < rows; ++i) {
+      const std::uint32_t k = po[i];
+      double* dxk[D];
+      for (int d = 0; d < D; ++d) dxk[d] = pdx[d] + k;
+      // Rows are adjacent here, so the row may write only its own active pairs (Compact = false).
+      fill<false>(verlet, static_cast<std::size_t>(i), P.j.data() + k, dxk, w.W.data() + k, w.F.data() + k,
+                  w.vfac.data() + k);
+    }
+  }
+
+  std::size_t count_active(const PairList& verlet, const Workspace<D>& w) final {
+    this->prepare(w);
+    std::vector<std::uint32_t> counts(verlet.rows());
+    count_rows(verlet, counts.data());
+    std::size_t total = 0;
+    for (const auto c : counts) total += c;
+    return total;
+  }
+
+  std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out) const final {
+    out.reserve(verlet.offset[i + 1] - verlet.offset[i]);
+    double* dx[D];
+    for (int d = 0; d < D; ++d) dx[d] = out.dx[d].data();
+    return fill<true>(verlet, i, out.j.data(), dx, out.W.data(), out.F.data(), out.vfac.data());
+  }
+
+ protected:
+  PairGeometry<D> geometry_;
+
+ private:
+  // Each row's number of active pairs into counts[i].
+  void count_rows(const PairList& verlet, std::uint32_t* counts) const {
+    const long rows = static_cast<long>(verlet.rows());
+    const auto* self = static_cast<const Derived*>(this);
+    const std::uint32_t* vj = verlet.j.data();
+    const std::uint32_t* vo = verlet.offset.data();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < rows; ++i) {
+      std::uint32_t count = 0;
+      for (std::uint32_t q = vo[i]; q < vo[i + 1]; ++q) {
+        double dx[D];
+        const auto ii = static_cast<std::size_t>(i);
+        count += self->active(ii, vj[q], geometry_.separation(ii, vj[q], dx)) ? 1u : 0u;
+      }
+      counts[i] = count;
+    }
+  }
+
+  // Compact = true: every Verlet pair is evaluated and written at the next free slot, which advances
+  // only for an active pair; no branch to mispredict (about a quarter of a row lies in the skin), at
+  // the price of kernel evaluations beyond the support, which are discarded. The output must hold the
+  // whole Verlet row.
+  template <bool Compact>
+  std::uint32_t fill(const PairList& verlet, std::size_t i, std::uint32_t* pj, double* const (&pdx)[D], double* pW,
+                     double* pF, double* pv) const {
+    return geometry_.periodic ? fill<Compact, true>(verlet, i, pj, pdx, pW, pF, pv)
+                              : fill<Compact, false>(verlet, i, pj, pdx, pW, pF, pv);
+  }
+  template <bool Compact, bool Periodic>
+  std::uint32_t fill(const PairList& verlet, std::size_t i, std::uint32_t* pj, double* const (&pdx)[D], double* pW,
+                     double* pF, double* pv) const {
+    const auto* self = static_cast<const Derived*>(this);
+    std::uint32_t k = 0;
+    for (std::uint32_t q = verlet.offset[i]; q < verlet.offset[i + 1]; ++q) {
+      const std::uint32_t j = verlet.j[q];
+      double dx[D];
+      const double r2 = geometry_.template separation<Periodic>(i, j, dx);
+      const bool on = self->active(i, j, r2);
+      if constexpr (!Compact)
+        if (!on) continue;
+      double W, F;
+      self->eval(i, j, r2, W, F);
+      pj[k] = j;
+      for (int d = 0; d < D; ++d) pdx[d][k] = dx[d];
+      pW[k] = W;
+      pF[k] = F;
+      pv[k] = 1.0;  // the wall model, if any, overwrites fluid-wall pairs
+      k += on ? 1u : 0u;
+    }
+    return k;
+  }
 };
 
 template <int D, SphKernel K>
-class KernelPassFor final : public KernelPass<D> {
+class KernelPassFor final : public KernelPassRows<D, KernelPassFor<D, K>> {
  public:
   std::string_view kernel_name() const override { return K::name; }
   double support() const override { return K::support; }
   double value_at_zero(double h) const override { return K::W(0.0, h); }
   // Kernels follow W(r, h) = W(r/h, 1) / h^D (kernels/kernel.hpp), so the loop evaluates at h = 1,
   // where every division by h folds away, and scales once (checked for every kernel by a unit test).
-  // Rows run in parallel: a first pass counts each row's pairs inside the support, a prefix sum
-  // places the rows, and the second pass fills them, so the active list stays one contiguous CSR
-  // whatever the thread count and every row is written by one thread.
-  void apply(const PairList& verlet, Workspace<D>& w) const override {
-    const double inv_h = 1.0 / w.h, rc2 = K::support * w.h * K::support * w.h;
-    const double w_scale = 1.0 / h_power<D>(w.h), dw_scale = w_scale * inv_h;
-    const long rows = static_cast<long>(verlet.rows());
-    PairList& P = w.pairs;
-    const double* px[D];
-    double period[D], inv_period[D];
-    for (int d = 0; d < D; ++d) {
-      px[d] = w.x[d].data();
-      period[d] = w.domain->period(d);
-      inv_period[d] = w.domain->inv_period(d);
-    }
-    const std::uint32_t* vj = verlet.j.data();
-    const std::uint32_t* vo = verlet.offset.data();
-    auto separation = [&](std::size_t i, std::uint32_t j, double (&dx)[D]) {
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        dx[d] = px[d][i] - px[d][j];
-        dx[d] -= period[d] * std::nearbyint(dx[d] * inv_period[d]);
-        r2 += dx[d] * dx[d];
-      }
-      return r2;
-    };
-
-    P.offset.resize(static_cast<std::size_t>(rows) + 1);
-    std::uint32_t* po = P.offset.data();
-    po[0] = 0;
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < rows; ++i) {
-      std::uint32_t count = 0;
-      for (std::uint32_t q = vo[i]; q < vo[i + 1]; ++q) {
-        double dx[D];
-        count += separation(static_cast<std::size_t>(i), vj[q], dx) < rc2 ? 1u : 0u;
-      }
-      po[i + 1] = count;
-    }
-    w.size_active_pairs(static_cast<std::size_t>(rows));
-    std::uint32_t* pj = P.j.data();
-    double *pW = w.W.data(), *pF = w.F.data(), *pv = w.vfac.data();
-    double* pdx[D];
-    for (int d = 0; d < D; ++d) pdx[d] = w.dx[d].data();
-
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < rows; ++i) {
-      std::uint32_t k = po[i];
-      for (std::uint32_t q = vo[i]; q < vo[i + 1]; ++q) {
-        const std::uint32_t j = vj[q];
-        double dx[D];
-        const double r2 = separation(static_cast<std::size_t>(i), j, dx);
-        if (r2 >= rc2) continue;
-        const double r = std::sqrt(r2);
-        double wv, dw;
-        K::eval(r * inv_h, 1.0, wv, dw);
-        pj[k] = j;
-        for (int d = 0; d < D; ++d) pdx[d][k] = dx[d];
-        pW[k] = wv * w_scale;
-        pF[k] = r > 0.0 ? dw * dw_scale / r : 0.0;  // coincident particles exert no gradient
-        pv[k] = 1.0;                                 // the wall model, if any, overwrites fluid-wall pairs
-        ++k;
-      }
-    }
+  void prepare(const Workspace<D>& w) override {
+    this->geometry_ = PairGeometry<D>(w);
+    inv_h_ = 1.0 / w.h;
+    rc2_ = K::support * w.h * K::support * w.h;
+    w_scale_ = 1.0 / h_power<D>(w.h);
+    f_scale_ = w_scale_ * inv_h_ * inv_h_;  // F = (dW/dr)/r scales as h^-(D+2)
   }
+  bool active(std::size_t, std::uint32_t, double r2) const { return r2 < rc2_; }
+  void eval(std::size_t, std::uint32_t, double r2, double& W, double& F) const {
+    double wv, f;
+    kernel_unit_over_r<K>(std::sqrt(r2) * inv_h_, wv, f);
+    W = wv * w_scale_;
+    F = r2 > 0.0 ? f * f_scale_ : 0.0;  // coincident particles exert no gradient
+  }
+
+ private:
+  double inv_h_ = 0.0, rc2_ = 0.0, w_scale_ = 0.0, f_scale_ = 0.0;
 };
 
 template <int D>

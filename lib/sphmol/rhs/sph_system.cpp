@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sphmol/neighbors/particle_reorder.hpp"
+#include "sphmol/rhs/pair_pass_plan.hpp"
 
 namespace sphmol {
 
@@ -82,8 +83,55 @@ std::vector<double> SphSystem<D>::initial_state() const {
 template <int D>
 std::vector<std::string> SphSystem<D>::active_terms() const {
   std::vector<std::string> names;
-  for (const auto& t : terms_) names.emplace_back(t->name());
+  for (const auto& t : terms_) {
+    if (const auto* f = dynamic_cast<const FusedPairPass<D>*>(t.get()))
+      for (const auto& m : f->terms()) names.emplace_back(m->name());
+    else
+      names.emplace_back(t->name());
+  }
   return names;
+}
+
+template <int D>
+void SphSystem<D>::append_term(std::unique_ptr<Term<D>> t) {
+  if (!stored_pairs_ && t->reads_stored_pairs())
+    throw std::logic_error("SphSystem::append_term: '" + std::string(t->name()) + "' reads the stored pair list, "
+                           "which fused pair passes do not build");
+  terms_.push_back(std::move(t));
+}
+
+template <int D>
+std::vector<std::string> SphSystem<D>::terms_needing_stored_pairs() const {
+  std::vector<std::string> names;
+  for (const auto& t : terms_)
+    if (!can_run_fused(*t)) names.emplace_back(t->name());
+  return names;
+}
+
+template <int D>
+void SphSystem<D>::fuse_pair_passes() {
+  if (rhs_evals_ > 0) throw std::logic_error("SphSystem::fuse_pair_passes: must be set before the first evaluation");
+  if (!stored_pairs_) return;
+  terms_ = fuse_pair_terms(std::move(terms_), kernel_.get());
+  stored_pairs_ = false;
+  ws_.pairs.clear(0);  // never filled: a term reading it by mistake sees no pairs
+}
+
+template <int D>
+std::vector<std::vector<std::string>> SphSystem<D>::pair_passes() const {
+  std::vector<std::vector<std::string>> passes;
+  for (const auto& t : terms_)
+    if (const auto* f = dynamic_cast<const FusedPairPass<D>*>(t.get())) {
+      passes.emplace_back();
+      for (const auto& m : f->terms()) passes.back().emplace_back(m->name());
+    }
+  return passes;
+}
+
+template <int D>
+std::size_t SphSystem<D>::active_pairs() const {
+  if (stored_pairs_ || rhs_evals_ == 0) return ws_.pairs.pairs();
+  return kernel_->count_active(pairs_->pairs(), ws_);
 }
 
 template <int D>
@@ -143,7 +191,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     pairs_->invalidate();
   }
   pairs_->update(in);
-  kernel_->apply(pairs_->pairs(), ws_);
+  ws_.verlet = &pairs_->pairs();
+  if (stored_pairs_) kernel_->apply(pairs_->pairs(), ws_);
 
   // Derivatives are written in workspace order: straight into ydot, or into out_ and scattered below.
   if (ord) out_.resize(layout_.size());

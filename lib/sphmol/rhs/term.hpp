@@ -14,6 +14,9 @@ class Term {
   virtual ~Term() = default;
   virtual std::string_view name() const = 0;
   virtual void apply(Workspace<D>& w) const = 0;
+  // True for a term that reads the stored active-pair list (Workspace::pairs). Pair terms written row
+  // by row (rhs/pair_term.hpp) say true too but can also run in a fused pass instead.
+  virtual bool reads_stored_pairs() const { return false; }
 };
 
 }  // namespace sphmol

@@ -23,6 +23,7 @@ struct Workspace {
   // (rhs/sph_system.hpp, set_reorder); null when the two agree. Only a term that keeps its own
   // per-particle data needs it.
   const std::uint32_t* order = nullptr;
+  const PairList* verlet = nullptr;  // the Verlet list (with skin) of this evaluation
   PairList pairs;  // active pairs (r < support), same row structure as the Verlet list
   double h = 0.0;
   double W0 = 0.0;  // W(0, h): the self-contribution to summation density

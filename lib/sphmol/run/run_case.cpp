@@ -189,7 +189,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"smoothing_length", sys->smoothing_length()},
                          {"neighbor_search", std::string(sys->pair_list().search_name())},
                          {"pair_list_radius", sys->pair_list().list_radius()},
-                         {"verlet_pairs", sys->pair_list().pairs().pairs()}};
+                         {"verlet_pairs", sys->pair_list().pairs().pairs()},
+                         {"pair_passes", sys->pair_passes().empty() ? nlohmann::json("stored") : nlohmann::json(sys->pair_passes())}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
   j["status"] = signal ? "interrupted" : blow_up.is_null() ? "completed" : "blown_up";

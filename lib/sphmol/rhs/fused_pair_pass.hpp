@@ -1,0 +1,69 @@
+#pragma once
+// A fused pair pass: for each row, the kernel pass fills a per-thread buffer with the row's active
+// pairs (dx, W, F) straight from the Verlet list, and every pair term of the pass sums over that
+// buffer in turn, while the neighbours' data are still in cache. Nothing per pair outlives the row, so
+// the active-pair list (about 44 bytes per pair in 2D) is never stored: memory and memory traffic
+// drop, and the kernel is still evaluated once per pair per pass. Terms whose output a later term
+// reads at neighbouring particles end a pass (rhs/pair_pass_plan.hpp). Results equal those of the
+// stored list bit for bit: the same pairs, in the same order, with the same arithmetic.
+#include <memory>
+#include <omp.h>
+#include <string>
+#include <vector>
+
+#include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/pair_term.hpp"
+
+namespace sphmol {
+
+template <int D>
+class FusedPairPass final : public Term<D> {
+ public:
+  FusedPairPass(KernelPass<D>* kernel, std::vector<std::unique_ptr<PairTerm<D>>> terms)
+      : kernel_(kernel), terms_(std::move(terms)) {
+    for (const auto& t : terms_) {
+      if (t->rows() != PairRows::dynamic_walls) fluid_.push_back(t.get());
+      if (t->rows() != PairRows::fluid) walls_.push_back(t.get());
+      if (!name_.empty()) name_ += '+';
+      name_ += t->name();
+    }
+  }
+  std::string_view name() const override { return name_; }
+  const std::vector<std::unique_ptr<PairTerm<D>>>& terms() const { return terms_; }
+
+  void apply(Workspace<D>& w) const override {
+    kernel_->prepare(w);
+    for (const auto& t : terms_) t->prepare(w);
+    const PairList& verlet = *w.verlet;
+    const std::size_t nf = w.n_fluid;
+    std::size_t wall_hi = nf;  // wall rows run up to the furthest any term needs
+    for (const auto* t : walls_) wall_hi = std::max(wall_hi, row_range(t->rows(), w).second);
+    buffers_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel
+    {
+      RowBuffer<D>& buf = buffers_[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < nf; ++i) {
+        const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf));
+        for (const auto* t : fluid_) t->row(w, i, row);
+      }
+      if (wall_hi > nf) {
+#pragma omp for schedule(static)
+        for (std::size_t i = nf; i < wall_hi; ++i) {
+          const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf));
+          for (const auto* t : walls_)
+            if (i < row_range(t->rows(), w).second) t->row(w, i, row);
+        }
+      }
+    }
+  }
+
+ private:
+  KernelPass<D>* kernel_;  // owned by the system, which owns this pass too
+  std::vector<std::unique_ptr<PairTerm<D>>> terms_;
+  std::vector<const PairTerm<D>*> fluid_, walls_;  // the terms with fluid rows, with wall rows
+  std::string name_;
+  mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
+};
+
+}  // namespace sphmol

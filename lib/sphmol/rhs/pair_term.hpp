@@ -1,0 +1,57 @@
+#pragma once
+// A term that sums over each particle's active pairs, written as one row at a time so that it runs
+// either over the stored active-pair list (apply) or inside a fused pass that evaluates the kernel
+// for a row and hands the row to every term of the pass in turn (rhs/fused_pair_pass.hpp).
+// Derived classes implement row_impl(w, i, row) and inherit both entry points through PairTermFor
+// (CRTP), so the stored loop calls row_impl directly, with no virtual call per row.
+#include <utility>
+
+#include "sphmol/rhs/pair_row.hpp"
+#include "sphmol/rhs/term.hpp"
+
+namespace sphmol {
+
+// Which rows a pair term sums: fluid particles, the dynamic wall particles (walls whose density is
+// in the state), or every row of the list.
+enum class PairRows { fluid, dynamic_walls, all };
+
+template <int D>
+std::pair<std::size_t, std::size_t> row_range(PairRows rows, const Workspace<D>& w) {
+  switch (rows) {
+    case PairRows::fluid: return {0, w.n_fluid};
+    case PairRows::dynamic_walls: return {w.n_fluid, w.n_fluid + w.n_wall_density};
+    case PairRows::all: return {0, w.n};
+  }
+  return {0, 0};
+}
+
+template <int D>
+class PairTerm : public Term<D> {
+ public:
+  bool reads_stored_pairs() const override { return true; }
+  virtual PairRows rows() const { return PairRows::fluid; }
+  // True when a later term reads this term's output at neighbouring particles (summation density's
+  // rho_j, the transport-velocity shift du_j): a fused pass must end after this term.
+  virtual bool feeds_neighbours() const { return false; }
+  // Once per evaluation, before any row (sizing per-particle scratch).
+  virtual void prepare(Workspace<D>&) const {}
+  virtual void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const = 0;
+};
+
+template <int D, class Derived>
+class PairTermFor : public PairTerm<D> {
+ public:
+  void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const final {
+    static_cast<const Derived*>(this)->row_impl(w, i, r);
+  }
+  void apply(Workspace<D>& w) const final {
+    this->prepare(w);
+    const auto range = row_range(this->rows(), w);
+    const std::size_t lo = range.first, hi = range.second;
+    const auto* self = static_cast<const Derived*>(this);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = lo; i < hi; ++i) self->row_impl(w, i, stored_row(w, i));
+  }
+};
+
+}  // namespace sphmol
