@@ -108,6 +108,9 @@ struct DiscretizationConfig {
   // auto: fused pair passes (rhs/fused_pair_pass.hpp) when every pair term has a row form, else stored;
   // fused: required (error otherwise); stored: the active-pair list is built and kept per evaluation.
   std::string pair_passes = "auto";
+  // Merge pair terms that meet in one scene into one pair loop (physics/weakly_compressible_row.hpp);
+  // bit-identical, off only to measure the gain.
+  bool combine_terms = true;
   ArtificialViscosityConfig artificial_viscosity;
   TransportVelocityConfig transport_velocity;
   bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state

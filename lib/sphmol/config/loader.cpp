@@ -263,7 +263,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
-                                "neighbor_search", "skin", "reorder", "pair_passes", "wall_slip", "wall_pressure", "repulsive",
+                                "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
                                 "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
                                 "position_noise", "density_diffusion"});
   {
@@ -356,6 +356,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = disc.real("skin")) d.skin = *v;
     check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
     if (const auto v = disc.boolean("reorder")) d.reorder = *v;
+    if (const auto v = disc.boolean("combine_terms")) d.combine_terms = *v;
     if (const auto v = disc.string("pair_passes")) d.pair_passes = disc.choice("pair_passes", *v, {"auto", "fused", "stored"});
     if (d.reorder && d.boundary == "ghost")
       disc.fail("reorder", "not available with boundary 'ghost' (mirror images refer to the previous particle order)");

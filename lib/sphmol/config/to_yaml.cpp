@@ -106,7 +106,8 @@ std::string to_yaml(const Config& c) {
     << "  neighbor_search: " << d.neighbor_search << "\n"
     << "  skin: " << num(d.skin) << "\n"
     << "  reorder: " << (d.reorder ? "true" : "false") << "\n"
-    << "  pair_passes: " << d.pair_passes << "\n";
+    << "  pair_passes: " << d.pair_passes << "\n"
+    << "  combine_terms: " << (d.combine_terms ? "true" : "false") << "\n";
   if (d.artificial_viscosity.enabled)
     y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
       << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";

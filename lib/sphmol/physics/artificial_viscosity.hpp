@@ -12,10 +12,20 @@
 
 namespace sphmol {
 
+// Monaghan's Pi_ij for one pair from vx = v_ij . x_ij and r2 = |x_ij|^2. Receding pairs (vx >= 0) get
+// no viscosity: theta = 0 through min(vx, 0), with no branch. One division: t = theta / rhobar.
+struct MonaghanPi {
+  double alpha, beta, eta;
+  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
+    const double t = hij * std::min(vx, 0.0) / ((r2 + eta * eta * hij * hij) * rhobar);
+    return (beta * t * rhobar - alpha * cbar) * t;
+  }
+};
+
 template <int D, bool WithEnergy>
 class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, WithEnergy>> {
  public:
-  ArtificialViscosity(double alpha, double beta, double eta_factor) : alpha_(alpha), beta_(beta), eta_(eta_factor) {}
+  ArtificialViscosity(double alpha, double beta, double eta_factor) : pi_{alpha, beta, eta_factor} {}
   std::string_view name() const override { return WithEnergy ? "artificial_viscosity+heating" : "artificial_viscosity"; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
@@ -28,12 +38,7 @@ class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, W
           vx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
           r2 += r.dx[d][k] * r.dx[d][k];
         }
-        const double hij = 0.5 * (w.hs[i] + w.hs[j]);
-        const double cbar = 0.5 * (w.c[i] + w.c[j]), rhobar = 0.5 * (w.rho[i] + w.rho[j]);
-        // Receding pairs (vx >= 0) get no viscosity: theta = 0 through min(vx, 0), with no branch.
-        // One division: t = theta / rhobar, theta = t rhobar.
-        const double t = hij * std::min(vx, 0.0) / ((r2 + eta_ * eta_ * hij * hij) * rhobar);
-        const double pi = (beta_ * t * rhobar - alpha_ * cbar) * t;
+        const double pi = pi_(vx, r2, 0.5 * (w.hs[i] + w.hs[j]), 0.5 * (w.c[i] + w.c[j]), 0.5 * (w.rho[i] + w.rho[j]));
         const double s = m[j] * pi * r.F[k];
         for (int d = 0; d < D; ++d) a[d] -= s * r.dx[d][k];
         if constexpr (WithEnergy) de += 0.5 * s * vx;
@@ -44,7 +49,7 @@ class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, W
   }
 
  private:
-  double alpha_, beta_, eta_;
+  MonaghanPi pi_;
 };
 
 }  // namespace sphmol

@@ -11,6 +11,9 @@
 
 namespace sphmol {
 
+// One pair's share of the sum below, before the factor delta h c0; vj = m_j / rho_j, 0 for walls.
+inline double density_diffusion_pair(double ri, double rj, double F, double vj) { return 2.0 * (ri - rj) * F * vj; }
+
 template <int D>
 class DensityDiffusion final : public PairTermFor<D, DensityDiffusion<D>> {
  public:
@@ -25,7 +28,7 @@ class DensityDiffusion final : public PairTermFor<D, DensityDiffusion<D>> {
       const std::uint32_t j = r.j[k];
       // Fluid neighbours only: a select on the particle index, not a configuration branch.
       const double vj = j < nf ? m[j] / w.rho[j] : 0.0;
-      s += 2.0 * (ri - w.rho[j]) * r.F[k] * vj;
+      s += density_diffusion_pair(ri, w.rho[j], r.F[k], vj);
     }
     w.drhodt[i] += coef_ * s;
   }

@@ -26,6 +26,7 @@
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
 #include "sphmol/physics/transport_velocity.hpp"
+#include "sphmol/physics/weakly_compressible_row.hpp"
 #include "sphmol/physics/xsph.hpp"
 #include "sphmol/rhs/kernel_pass_variable_h.hpp"
 
@@ -88,13 +89,24 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
     terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
   }
-  if (disc.density == "continuity") terms.push_back(std::make_unique<ContinuityDensity<D>>());
-  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
-  if (disc.density_diffusion > 0.0)
-    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   const bool m116 = disc.momentum == "symmetric_116";
   if (!m116 && disc.momentum != "symmetric_117")
     throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
+  const auto& av = disc.artificial_viscosity;
+  // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
+  // formulation), bit-identical to the four separate terms.
+  const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
+                      av.enabled && !disc.energy;
+  const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
+  const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
+  if (wc_row) {
+    if (diffusion > 0.0) terms.push_back(std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
+    else terms.push_back(std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
+  }
+  if (disc.density == "continuity" && !wc_row) terms.push_back(std::make_unique<ContinuityDensity<D>>());
+  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (disc.density_diffusion > 0.0 && !wc_row)
+    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
     if (m116) return std::make_unique<PressureGradient116<D>>();
     return std::make_unique<PressureGradient117<D>>();
@@ -110,11 +122,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     terms.push_back(pressure());
     terms.push_back(std::make_unique<MorrisViscosity<D>>(mu));
   } else if (disc.viscosity == "none") {
-    terms.push_back(pressure());
+    if (!wc_row) terms.push_back(pressure());
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
-  if (const auto& av = disc.artificial_viscosity; av.enabled) {
+  if (av.enabled && !wc_row) {
     if (disc.energy) terms.push_back(std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
     else terms.push_back(std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
   }

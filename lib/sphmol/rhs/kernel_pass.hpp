@@ -83,8 +83,7 @@ class KernelPassRows : public KernelPass<D> {
       const std::uint32_t k = po[i];
       double* dxk[D];
       for (int d = 0; d < D; ++d) dxk[d] = pdx[d] + k;
-      // Rows are adjacent here, so the row may write only its own active pairs (Compact = false).
-      fill<false>(verlet, static_cast<std::size_t>(i), P.j.data() + k, dxk, w.W.data() + k, w.F.data() + k,
+      fill(verlet, static_cast<std::size_t>(i), P.j.data() + k, dxk, w.W.data() + k, w.F.data() + k,
                   w.vfac.data() + k);
     }
   }
@@ -99,16 +98,51 @@ class KernelPassRows : public KernelPass<D> {
   }
 
   std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out) const final {
-    out.reserve(verlet.offset[i + 1] - verlet.offset[i]);
-    double* dx[D];
-    for (int d = 0; d < D; ++d) dx[d] = out.dx[d].data();
-    return fill<true>(verlet, i, out.j.data(), dx, out.W.data(), out.F.data(), out.vfac.data());
+    const std::uint32_t q0 = verlet.offset[i], n = verlet.offset[i + 1] - q0;
+    out.reserve(n);
+    return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out)
+                              : staged<false>(verlet.j.data() + q0, n, i, out);
   }
 
  protected:
   PairGeometry<D> geometry_;
 
  private:
+  // One row in three stages: (A) the separations of all its Verlet pairs (gathers of x_j), (B) the
+  // kernel for all of them over contiguous arrays, with no branch and no gather, which the compiler
+  // vectorises for a branch-free kernel (a pair beyond the support costs an evaluation, not a
+  // misprediction), (C) the active pairs moved to the front in place (slot k <= q).
+  template <bool Periodic>
+  std::uint32_t staged(const std::uint32_t* vj, std::uint32_t n, std::size_t i, RowBuffer<D>& b) const {
+    const auto* self = static_cast<const Derived*>(this);
+    std::uint32_t* __restrict pj = b.j.data();
+    double* __restrict pr2 = b.r2.data();
+    double* __restrict pW = b.W.data();
+    double* __restrict pF = b.F.data();
+    double* __restrict pv = b.vfac.data();
+    double* pdx[D];
+    for (int d = 0; d < D; ++d) pdx[d] = b.dx[d].data();
+    for (std::uint32_t q = 0; q < n; ++q) {
+      const std::uint32_t j = vj[q];
+      double dx[D];
+      pr2[q] = geometry_.template separation<Periodic>(i, j, dx);
+      pj[q] = j;
+      for (int d = 0; d < D; ++d) pdx[d][q] = dx[d];
+    }
+    for (std::uint32_t q = 0; q < n; ++q) self->eval(i, pj[q], pr2[q], pW[q], pF[q]);
+    std::uint32_t k = 0;
+    for (std::uint32_t q = 0; q < n; ++q) {
+      const bool on = self->active(i, pj[q], pr2[q]);
+      pj[k] = pj[q];
+      for (int d = 0; d < D; ++d) pdx[d][k] = pdx[d][q];
+      pW[k] = pW[q];
+      pF[k] = pF[q];
+      pv[k] = 1.0;  // the wall model, if any, overwrites fluid-wall pairs
+      k += on ? 1u : 0u;
+    }
+    return k;
+  }
+
   // Each row's number of active pairs into counts[i].
   void count_rows(const PairList& verlet, std::uint32_t* counts) const {
     const long rows = static_cast<long>(verlet.rows());
@@ -127,17 +161,12 @@ class KernelPassRows : public KernelPass<D> {
     }
   }
 
-  // Compact = true: every Verlet pair is evaluated and written at the next free slot, which advances
-  // only for an active pair; no branch to mispredict (about a quarter of a row lies in the skin), at
-  // the price of kernel evaluations beyond the support, which are discarded. The output must hold the
-  // whole Verlet row.
-  template <bool Compact>
+  // Row i of the stored list: only active pairs are written, since the next row follows at once.
   std::uint32_t fill(const PairList& verlet, std::size_t i, std::uint32_t* pj, double* const (&pdx)[D], double* pW,
                      double* pF, double* pv) const {
-    return geometry_.periodic ? fill<Compact, true>(verlet, i, pj, pdx, pW, pF, pv)
-                              : fill<Compact, false>(verlet, i, pj, pdx, pW, pF, pv);
+    return geometry_.periodic ? fill<true>(verlet, i, pj, pdx, pW, pF, pv) : fill<false>(verlet, i, pj, pdx, pW, pF, pv);
   }
-  template <bool Compact, bool Periodic>
+  template <bool Periodic>
   std::uint32_t fill(const PairList& verlet, std::size_t i, std::uint32_t* pj, double* const (&pdx)[D], double* pW,
                      double* pF, double* pv) const {
     const auto* self = static_cast<const Derived*>(this);
@@ -146,17 +175,12 @@ class KernelPassRows : public KernelPass<D> {
       const std::uint32_t j = verlet.j[q];
       double dx[D];
       const double r2 = geometry_.template separation<Periodic>(i, j, dx);
-      const bool on = self->active(i, j, r2);
-      if constexpr (!Compact)
-        if (!on) continue;
-      double W, F;
-      self->eval(i, j, r2, W, F);
+      if (!self->active(i, j, r2)) continue;
+      self->eval(i, j, r2, pW[k], pF[k]);
       pj[k] = j;
       for (int d = 0; d < D; ++d) pdx[d][k] = dx[d];
-      pW[k] = W;
-      pF[k] = F;
       pv[k] = 1.0;  // the wall model, if any, overwrites fluid-wall pairs
-      k += on ? 1u : 0u;
+      ++k;
     }
     return k;
   }
@@ -182,7 +206,9 @@ class KernelPassFor final : public KernelPassRows<D, KernelPassFor<D, K>> {
     double wv, f;
     kernel_unit_over_r<K>(std::sqrt(r2) * inv_h_, wv, f);
     W = wv * w_scale_;
-    F = r2 > 0.0 ? f * f_scale_ : 0.0;  // coincident particles exert no gradient
+    // No select on r = 0, so that the loop vectorises: coincident particles have dx = 0 and exert no
+    // force; F there is the kernel's limit of (dW/dr)/r (0 for a kernel without the closed form).
+    F = f * f_scale_;
   }
 
  private:

@@ -41,6 +41,7 @@ struct RowBuffer {
   std::vector<std::uint32_t> j;
   std::array<std::vector<double>, D> dx;
   std::vector<double> W, F, vfac;
+  std::vector<double> r2;  // scratch of the kernel pass: |dx|^2 of every Verlet pair of the row
 
   void reserve(std::size_t n) {
     if (j.size() >= n) return;
@@ -49,6 +50,7 @@ struct RowBuffer {
     W.resize(n);
     F.resize(n);
     vfac.resize(n);
+    r2.resize(n);
   }
   PairRow<D> row(std::uint32_t n) {
     PairRow<D> r;
