@@ -2,8 +2,9 @@
 // interactions per second ("pairs/s", and its inverse "ns/pair") and as wall time per particle per
 // RHS evaluation ("us/particle"); compare variants (threads, searches, skin, order) from one run, as
 // ratios of medians (--benchmark_repetitions=5), since a shared machine is noisy.
-//   sph-bench --benchmark_filter=Rhs/            RHS, Poiseuille (laminar) and shock tube (compressible),
-//                                                1e4..1e6 particles, 1 and 2 threads
+//   sph-bench --benchmark_filter=Rhs/            RHS, Poiseuille (laminar), shock tube (compressible) and
+//                                                dam break (free surface), 1e4..1e6 particles, 1 and 2 threads
+//   sph-bench --benchmark_filter=RhsPasses       fused pair passes vs the stored pair list (1e5, 1 thread)
 //   sph-bench --benchmark_filter=RhsScaling      Taylor-Green RHS from 1e3 to 1e6 particles
 //   sph-bench --benchmark_filter=RhsReorder      RHS with the workspace in lattice / shuffled order,
 //                                                locality reordering off / on (1e5 particles)
@@ -15,6 +16,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <sstream>
 #include <string>
@@ -63,6 +65,14 @@ sphmol::Config taylor_green(long n, const std::string& search = "cell_list") {
                                                                  "discretization.neighbor_search=" + search});
 }
 
+// The dam break (free surface, continuity + delta-SPH, artificial viscosity, dynamic walls) with the
+// spacing scaled so that the column holds about n fluid particles (20,000 at the shipped dp = 0.01 m).
+sphmol::Config dam_break(long n, const std::string& search) {
+  const double dp = 0.01 * std::sqrt(20'000.0 / static_cast<double>(n));
+  return sphmol::load_config(verification("dam_break.yaml"),
+                             {"discretization.spacing=" + num(dp), "discretization.neighbor_search=" + search});
+}
+
 std::unique_ptr<sphmol::SphSystem<2>> build(const sphmol::Config& c) {
   auto cs = sphmol::case_registry().at(c.case_name).d2();
   return cs->build(c);
@@ -106,9 +116,36 @@ BENCHMARK_CAPTURE(Rhs, shock_tube, shock_tube)
     ->ArgNames({"n", "threads"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK_CAPTURE(Rhs, dam_break, dam_break)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {1, 2}})
+    ->ArgNames({"n", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(Rhs, taylor_green, taylor_green)
     ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000}, {1, 2}})
     ->ArgNames({"n", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Fused pair passes (rhs/fused_pair_pass.hpp) against the stored active-pair list, and the dam break's
+// combined weakly compressible row against its four terms apart; 1e5 particles, 1 thread. Args: fused
+// (0/1), combined (0/1).
+void RhsPasses(benchmark::State& state, sphmol::Config (*config)(long, const std::string&)) {
+  omp_set_num_threads(1);
+  auto c = config(100'000, "cell_list");
+  c.discretization.pair_passes = state.range(0) != 0 ? "fused" : "stored";
+  c.discretization.combine_terms = state.range(1) != 0;
+  auto sys = build(c);
+  time_rhs(state, *sys);
+}
+BENCHMARK_CAPTURE(RhsPasses, dam_break, dam_break)
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->ArgNames({"fused", "combined"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(RhsPasses, taylor_green, taylor_green)
+    ->ArgsProduct({{0, 1}, {1}})
+    ->ArgNames({"fused", "combined"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

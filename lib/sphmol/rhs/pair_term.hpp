@@ -49,7 +49,8 @@ class PairTermFor : public PairTerm<D> {
     const auto range = row_range(this->rows(), w);
     const std::size_t lo = range.first, hi = range.second;
     const auto* self = static_cast<const Derived*>(this);
-#pragma omp parallel for schedule(static)
+    // Chunks handed out as threads free up: rows differ in cost (rhs/fused_pair_pass.hpp).
+#pragma omp parallel for schedule(dynamic, 64)
     for (std::size_t i = lo; i < hi; ++i) self->row_impl(w, i, stored_row(w, i));
   }
 };

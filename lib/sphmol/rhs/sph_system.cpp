@@ -155,8 +155,9 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   }
   // Optional fields: per-scene branches outside every pair loop.
   auto gather = [&](std::size_t block, std::vector<double>& to) {
-    if (!ord) return std::copy(y + block, y + block + nf, to.begin()), void();
-    for (std::size_t i = 0; i < nf; ++i) to[i] = y[block + ord[i]];
+    double* dst = to.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < nf; ++i) dst[i] = y[block + (ord ? ord[i] : i)];
   };
   if (layout_.has_density) gather(layout_.density(), ws_.rho);
   if (layout_.has_energy) gather(layout_.energy(), ws_.e);
@@ -200,15 +201,22 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   for (int d = 0; d < D; ++d) {
     ws_.dxdt[d] = out + layout_.position(d);
     ws_.dvdt[d] = out + layout_.velocity(d);
-    std::copy(ws_.v[d].begin(), ws_.v[d].begin() + nf, ws_.dxdt[d]);
-    std::fill(ws_.dvdt[d], ws_.dvdt[d] + nf, 0.0);
   }
   ws_.drhodt = layout_.has_density ? out + layout_.density() : nullptr;
   ws_.dedt = layout_.has_energy ? out + layout_.energy() : nullptr;
   ws_.dhdt = layout_.has_smoothing_length ? out + layout_.smoothing_length() : nullptr;
-  if (ws_.drhodt) std::fill(ws_.drhodt, ws_.drhodt + nf, 0.0);
-  if (ws_.dedt) std::fill(ws_.dedt, ws_.dedt + nf, 0.0);
-  if (ws_.dhdt) std::fill(ws_.dhdt, ws_.dhdt + nf, 0.0);
+  // dx/dt = v, every other rate 0, before the terms add to them (one parallel pass: serial copies
+  // here were a tenth of the 2-thread step's serial time).
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    for (int d = 0; d < D; ++d) {
+      ws_.dxdt[d][i] = ws_.v[d][i];
+      ws_.dvdt[d][i] = 0.0;
+    }
+    if (ws_.drhodt) ws_.drhodt[i] = 0.0;
+    if (ws_.dedt) ws_.dedt[i] = 0.0;
+    if (ws_.dhdt) ws_.dhdt[i] = 0.0;
+  }
   ws_.drhodt_wall = layout_.n_wall_density > 0 ? out + layout_.wall_density() : nullptr;
   if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (const auto& term : terms_) term->apply(ws_);
