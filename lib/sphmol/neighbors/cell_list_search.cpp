@@ -60,8 +60,9 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
       local_.resize(static_cast<std::size_t>(threads));
       block_sum.assign(static_cast<std::size_t>(threads) + 1, 0);
     }
+    // The thread's rows, back to back in local[0, used); grown geometrically, never shrunk.
     std::vector<std::uint32_t>& local = local_[t];
-    local.clear();
+    std::size_t used = 0;
     const auto cell_at_or_after = [&](long particles) {
       const auto end = cell_start_.begin() + static_cast<std::ptrdiff_t>(total);
       return static_cast<std::size_t>(
@@ -69,8 +70,11 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     };
     const std::size_t c_lo = cell_at_or_after(n * t / threads);
     const std::size_t c_hi = t + 1 == threads ? total : cell_at_or_after(n * (t + 1) / threads);
+    const detail::PairDistance<D> pd(in);
     std::vector<std::size_t> cells;
-    std::vector<std::uint32_t> cand;
+    std::vector<std::uint32_t> cand;            // candidate neighbours of the cell, ascending
+    std::array<std::vector<double>, D> cand_x;  // their coordinates, contiguous
+    std::vector<std::uint8_t> cand_fluid;
     for (std::size_t c = c_lo; c < c_hi; ++c) {
       if (cell_start_[c] == cell_start_[c + 1]) continue;
       std::array<int, D> cc;
@@ -106,13 +110,32 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
       for (const std::size_t nc : cells)
         cand.insert(cand.end(), cell_items_.begin() + cell_start_[nc], cell_items_.begin() + cell_start_[nc + 1]);
       std::sort(cand.begin(), cand.end());
+      const std::size_t m = cand.size();
+      for (int d = 0; d < D; ++d) {
+        cand_x[d].resize(m);
+        for (std::size_t k = 0; k < m; ++k) cand_x[d][k] = in.x[d][cand[k]];
+      }
+      cand_fluid.resize(m);
+      for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid;
+      if (local.size() < used + m * static_cast<std::size_t>(cell_start_[c + 1] - cell_start_[c]))
+        local.resize(2 * (used + m * (cell_start_[c + 1] - cell_start_[c])));
       for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
         const std::uint32_t i = cell_items_[q];
-        const std::size_t start = local.size();
-        for (const std::uint32_t j : cand)
-          if (detail::is_pair(in, i, j)) local.push_back(j);
-        row_at_[i] = static_cast<std::uint32_t>(start);
-        out.offset[i + 1] = static_cast<std::uint32_t>(local.size() - start);  // length; offsets below
+        const bool fluid_i = in.kind[i] == Kind::Fluid;
+        std::array<double, D> xi;
+        for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
+        // detail::is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
+        std::uint32_t* const row = local.data() + used;
+        std::size_t len = 0;
+        for (std::size_t k = 0; k < m; ++k) {
+          std::array<double, D> dx;
+          for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
+          row[len] = cand[k];
+          len += static_cast<std::size_t>(pd.within(dx) & (cand[k] != i) & (fluid_i | (cand_fluid[k] != 0)));
+        }
+        row_at_[i] = static_cast<std::uint32_t>(used);
+        out.offset[i + 1] = static_cast<std::uint32_t>(len);  // length; offsets below
+        used += len;
       }
     }
     // Row lengths to offsets: a prefix sum over fixed blocks of rows, then the block sums.
