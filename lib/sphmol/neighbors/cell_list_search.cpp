@@ -117,13 +117,14 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
       }
       cand_fluid.resize(m);
       for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid;
-      if (local.size() < used + m * static_cast<std::size_t>(cell_start_[c + 1] - cell_start_[c]))
-        local.resize(2 * (used + m * (cell_start_[c + 1] - cell_start_[c])));
       for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
         const std::uint32_t i = cell_items_[q];
         const bool fluid_i = in.kind[i] == Kind::Fluid;
         std::array<double, D> xi;
         for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
+        // A row holds at most m entries (room for them per row, not per cell: one crowded cell
+        // could otherwise ask for m^2).
+        if (local.size() < used + m) local.resize(std::max(2 * local.size(), used + m));
         // detail::is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
         std::uint32_t* const row = local.data() + used;
         std::size_t len = 0;
