@@ -8,7 +8,7 @@
 //   sph-bench --benchmark_filter=RhsScaling      Taylor-Green RHS from 1e3 to 1e6 particles
 //   sph-bench --benchmark_filter=RhsReorder      RHS with the workspace in lattice / shuffled order,
 //                                                locality reordering off / on (1e5 particles)
-//   sph-bench --benchmark_filter=Search          neighbour-list build + query, cell list vs CGAL kd-tree
+//   sph-bench --benchmark_filter=Search          neighbour-list build + query, cell list (1, 2 threads) vs kd-tree
 //   sph-bench --benchmark_filter=Rebuilds        Verlet rebuilds per 100 ARKODE steps, skin 0.3 h vs 0
 //   scripts/bench_memory.sh                      peak memory per particle (one process per size)
 #include <benchmark/benchmark.h>
@@ -176,9 +176,10 @@ BENCHMARK(RhsReorder)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// Neighbour-list build + query (the whole PairList) per particle, Poiseuille lattice, 1 thread.
-void Search(benchmark::State& state, const char* method) {
-  omp_set_num_threads(1);
+// Neighbour-list build + query (the whole PairList) per particle, Poiseuille lattice, 1 thread
+// (cell_list_2threads: the cell list on 2 threads; its list is the same for any thread count).
+void Search(benchmark::State& state, const char* method, int threads = 1) {
+  omp_set_num_threads(threads);
   const auto c = poiseuille(state.range(0), method);
   auto sys = build(c);
   const auto& P = sys->particles();
@@ -199,6 +200,7 @@ void Search(benchmark::State& state, const char* method) {
   state.counters["pairs/particle"] = static_cast<double>(out.pairs()) / static_cast<double>(in.n);
 }
 BENCHMARK_CAPTURE(Search, cell_list, "cell_list")->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Search, cell_list_2threads, "cell_list", 2)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(Search, kdtree, "kdtree")->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Verlet rebuilds per 100 accepted ARKODE steps of the Taylor-Green vortex (1e4 particles, U = 1,

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "sphmol/config/config.hpp"
@@ -19,23 +20,41 @@ const std::string couette = SPHMOL_SOURCE_DIR "/verification/couette.yaml";
 
 TEST_CASE("an unstable run ends cleanly as blown_up with exit code 3", "[integration][blowup]") {
   // Leapfrog with a fixed step 40x the viscous stability limit (0.125 h^2/nu ~ 5e-4 s at 20 across).
-  const std::string out = "reports/blow_up";
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories("reports");  // the stderr redirection below needs it
-  const std::string cmd = std::string(SPHMOL_BINARY) + " --config " + couette + " --output " + out +
-                          " --set discretization.particles_across=20 --set time.integrator=leapfrog --set time.dt=2e-2"
-                          " --set time.t_end=5 --set output.times=[5] 2>" + out + ".log";
-  const int rc = std::system(cmd.c_str());
-  REQUIRE(WIFEXITED(rc));
-  CHECK(WEXITSTATUS(rc) == 3);
-  std::ifstream f(out + "/summary.json");
-  REQUIRE(f.good());
-  const auto s = nlohmann::json::parse(f);
-  CHECK(s["status"] == "blown_up");
-  INFO(s["blow_up"].dump());
-  CHECK(s["blow_up"]["t"].get<double>() < 5.0);
-  CHECK_FALSE(s["blow_up"]["cause"].get<std::string>().empty());
-  CHECK(std::filesystem::exists(out + "/last_good_state.csv"));
+  // On 1 and 2 threads: the health check runs in parallel (run/health_check.hpp) and must name the
+  // same particle and cause, and keep the same last good state.
+  nlohmann::json first;
+  for (const int threads : {1, 2}) {
+    INFO("threads " << threads);
+    const std::string out = "reports/blow_up_" + std::to_string(threads);
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories("reports");  // the stderr redirection below needs it
+    const std::string cmd = std::string(SPHMOL_BINARY) + " --threads " + std::to_string(threads) + " --config " + couette +
+                            " --output " + out +
+                            " --set discretization.particles_across=20 --set time.integrator=leapfrog --set time.dt=2e-2"
+                            " --set time.t_end=5 --set output.times=[5] 2>" + out + ".log";
+    const int rc = std::system(cmd.c_str());
+    REQUIRE(WIFEXITED(rc));
+    CHECK(WEXITSTATUS(rc) == 3);
+    std::ifstream f(out + "/summary.json");
+    REQUIRE(f.good());
+    const auto s = nlohmann::json::parse(f);
+    CHECK(s["status"] == "blown_up");
+    INFO(s["blow_up"].dump());
+    CHECK(s["blow_up"]["t"].get<double>() < 5.0);
+    CHECK_FALSE(s["blow_up"]["cause"].get<std::string>().empty());
+    CHECK(std::filesystem::exists(out + "/last_good_state.csv"));
+    std::ifstream g(out + "/last_good_state.csv");
+    const std::string state((std::istreambuf_iterator<char>(g)), std::istreambuf_iterator<char>());
+    CHECK(state.size() > 100);
+    if (threads == 1) {
+      first = s["blow_up"];
+      first["state"] = state;
+    } else {
+      CHECK(s["blow_up"]["message"] == first["message"]);
+      CHECK(s["blow_up"]["last_good_t"] == first["last_good_t"]);
+      CHECK(state == first["state"].get<std::string>());
+    }
+  }
 }
 
 TEST_CASE("conservation: Couette y-momentum stays near 0 and a stable run reports status completed", "[integration][conservation]") {

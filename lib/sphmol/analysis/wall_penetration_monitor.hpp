@@ -28,16 +28,23 @@ class WallPenetrationMonitor final : public Term<2> {
   void apply(Workspace<2>& w) const override {
     auto& s = *s_;
     s.crossed.resize(w.n_fluid, 0);
+    const long n = static_cast<long>(w.n_fluid);
+    const double *const xs = w.x[0].data(), *const ys = w.x[1].data();
+    std::uint8_t* const crossed = s.crossed.data();
+    // Every evaluation: a parallel pass. A count and a minimum do not depend on the thread count.
     double gap = s.min_gap;
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      const double x = w.x[0][i], y = w.x[1][i];
+    long count = 0;
+#pragma omp parallel for schedule(static) reduction(min : gap) reduction(+ : count)
+    for (long i = 0; i < n; ++i) {
+      const double x = xs[i], y = ys[i];
       const bool out = y < 0.0 || (y < Ly_ && (x < 0.0 || x > Lx_));
-      if (out && !s.crossed[i]) {
-        s.crossed[i] = 1;
-        ++s.count;
+      if (out && !crossed[i]) {
+        crossed[i] = 1;
+        ++count;
       }
       if (!out && x >= 0.0 && x <= Lx_) gap = std::min(gap, std::min({x, Lx_ - x, y}));
     }
+    s.count += count;
     s.min_gap = gap;
   }
 

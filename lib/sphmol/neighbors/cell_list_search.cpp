@@ -20,83 +20,146 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     inv_size[d] = ncell[d] / dom.length(d);
     total *= static_cast<std::size_t>(ncell[d]);
   }
-  auto cell_coord = [&](std::size_t i, int d) {
-    const int c = static_cast<int>(std::floor((in.x[d][i] - dom.lo[d]) * inv_size[d]));
-    return std::clamp(c, 0, ncell[d] - 1);
-  };
-  // Counting sort of particles by cell.
+  const long n = static_cast<long>(in.n);
+  // Each particle's cell (index with direction 0 fastest), in parallel.
   cell_of_.resize(in.n);
-  cell_start_.assign(total + 1, 0);
-  for (std::size_t i = 0; i < in.n; ++i) {
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
     std::size_t c = 0;
-    for (int d = D - 1; d >= 0; --d) c = c * ncell[d] + cell_coord(i, d);
+    for (int d = D - 1; d >= 0; --d) {
+      const int cd = static_cast<int>(std::floor((in.x[d][i] - dom.lo[d]) * inv_size[d]));
+      c = c * ncell[d] + std::clamp(cd, 0, ncell[d] - 1);
+    }
     cell_of_[i] = static_cast<std::uint32_t>(c);
-    ++cell_start_[c + 1];
   }
+  // Counting sort by cell; stable, so every cell lists its particles in ascending order. Two passes
+  // of integer work, a small part of the build (sph-bench Search): left serial.
+  cell_start_.assign(total + 1, 0);
+  for (long i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
   cell_items_.resize(in.n);
-  {
-    std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t i = 0; i < in.n; ++i) cell_items_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
-  }
+  fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (long i = 0; i < n; ++i) cell_items_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 
+  // Rows cell by cell: the 3^D neighbour cells and their particles, merged into one ascending
+  // candidate list, are found once per cell and shared by all its particles, so each row comes out
+  // sorted. Each thread takes a contiguous run of cells holding about n / threads particles and
+  // writes rows into its own buffer; row lengths then give the offsets, and each thread copies its
+  // rows to their place. A row depends only on the particle, never on the split: the list is the
+  // same for any thread count.
   int combos = 1;
   for (int d = 0; d < D; ++d) combos *= 3;
-  out.clear(in.n);
-  // Rows in parallel: each thread fills a contiguous block of rows into its own buffer, and the
-  // buffers are joined in block order, so the list is the same for any thread count.
-  const long n = static_cast<long>(in.n);
-  std::vector<std::size_t> block_start;
+  out.offset.assign(in.n + 1, 0);
+  row_at_.resize(in.n);
+  std::vector<std::size_t> block_sum;
 #pragma omp parallel
   {
     const int threads = omp_get_num_threads(), t = omp_get_thread_num();
-    const long lo = n * t / threads, hi = n * (t + 1) / threads;
-    std::vector<std::uint32_t> local, row;
+#pragma omp single
+    {
+      local_.resize(static_cast<std::size_t>(threads));
+      block_sum.assign(static_cast<std::size_t>(threads) + 1, 0);
+    }
+    // The thread's rows, back to back in local[0, used); grown geometrically, never shrunk.
+    std::vector<std::uint32_t>& local = local_[t];
+    std::size_t used = 0;
+    const auto cell_at_or_after = [&](long particles) {
+      const auto end = cell_start_.begin() + static_cast<std::ptrdiff_t>(total);
+      return static_cast<std::size_t>(
+          std::lower_bound(cell_start_.begin(), end, static_cast<std::uint32_t>(particles)) - cell_start_.begin());
+    };
+    const std::size_t c_lo = cell_at_or_after(n * t / threads);
+    const std::size_t c_hi = t + 1 == threads ? total : cell_at_or_after(n * (t + 1) / threads);
+    const detail::PairDistance<D> pd(in);
     std::vector<std::size_t> cells;
-    for (long i = lo; i < hi; ++i) {
-      row.clear();
+    std::vector<std::uint32_t> cand;            // candidate neighbours of the cell, ascending
+    std::array<std::vector<double>, D> cand_x;  // their coordinates, contiguous
+    std::vector<std::uint8_t> cand_fluid;
+    for (std::size_t c = c_lo; c < c_hi; ++c) {
+      if (cell_start_[c] == cell_start_[c + 1]) continue;
+      std::array<int, D> cc;
+      std::size_t rest = c;
+      for (int d = 0; d < D; ++d) {
+        cc[d] = static_cast<int>(rest % static_cast<std::size_t>(ncell[d]));
+        rest /= static_cast<std::size_t>(ncell[d]);
+      }
       cells.clear();
       for (int k = 0; k < combos; ++k) {
-        std::size_t c = 0;
+        std::size_t nc = 0;
         bool ok = true;
-        for (int d = D - 1, kk = k; d >= 0; --d) {
-          int off = 0;
-          {  // digit d of k in base 3
-            int t3 = kk;
-            for (int e = 0; e < d; ++e) t3 /= 3;
-            off = t3 % 3 - 1;
-          }
-          int cd = cell_coord(static_cast<std::size_t>(i), d) + off;
+        // Offset in direction d: digit d of k in base 3, minus one.
+        int pow3 = combos;
+        for (int d = D - 1; d >= 0; --d) {
+          pow3 /= 3;
+          int cd = cc[d] + (k / pow3) % 3 - 1;
           if (cd < 0 || cd >= ncell[d]) {
-            if (!dom.periodic[d]) { ok = false; break; }
+            if (!dom.periodic[d]) {
+              ok = false;
+              break;
+            }
             cd = (cd + ncell[d]) % ncell[d];
           }
-          c = c * ncell[d] + cd;
+          nc = nc * ncell[d] + cd;
         }
-        if (ok) cells.push_back(c);
+        if (ok) cells.push_back(nc);
       }
       // With fewer than three cells in a periodic direction the same cell appears twice.
       std::sort(cells.begin(), cells.end());
       cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-      for (const std::size_t c : cells)
-        for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q)
-          if (detail::is_pair(in, static_cast<std::size_t>(i), cell_items_[q])) row.push_back(cell_items_[q]);
-      std::sort(row.begin(), row.end());
-      local.insert(local.end(), row.begin(), row.end());
-      out.offset[i + 1] = static_cast<std::uint32_t>(local.size());  // within the block, fixed below
+      cand.clear();
+      for (const std::size_t nc : cells)
+        cand.insert(cand.end(), cell_items_.begin() + cell_start_[nc], cell_items_.begin() + cell_start_[nc + 1]);
+      std::sort(cand.begin(), cand.end());
+      const std::size_t m = cand.size();
+      for (int d = 0; d < D; ++d) {
+        cand_x[d].resize(m);
+        for (std::size_t k = 0; k < m; ++k) cand_x[d][k] = in.x[d][cand[k]];
+      }
+      cand_fluid.resize(m);
+      for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid;
+      for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
+        const std::uint32_t i = cell_items_[q];
+        const bool fluid_i = in.kind[i] == Kind::Fluid;
+        std::array<double, D> xi;
+        for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
+        // A row holds at most m entries (room for them per row, not per cell: one crowded cell
+        // could otherwise ask for m^2).
+        if (local.size() < used + m) local.resize(std::max(2 * local.size(), used + m));
+        // detail::is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
+        std::uint32_t* const row = local.data() + used;
+        std::size_t len = 0;
+        for (std::size_t k = 0; k < m; ++k) {
+          std::array<double, D> dx;
+          for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
+          row[len] = cand[k];
+          len += static_cast<std::size_t>(pd.within(dx) & (cand[k] != i) & (fluid_i | (cand_fluid[k] != 0)));
+        }
+        row_at_[i] = static_cast<std::uint32_t>(used);
+        out.offset[i + 1] = static_cast<std::uint32_t>(len);  // length; offsets below
+        used += len;
+      }
     }
-#pragma omp single
-    block_start.assign(static_cast<std::size_t>(threads) + 1, 0);
-    block_start[t + 1] = local.size();
+    // Row lengths to offsets: a prefix sum over fixed blocks of rows, then the block sums.
+    const long lo = n * t / threads, hi = n * (t + 1) / threads;
+#pragma omp barrier
+    std::size_t sum = 0;
+    for (long i = lo; i < hi; ++i) sum += out.offset[i + 1];
+    block_sum[t + 1] = sum;
 #pragma omp barrier
 #pragma omp single
     {
-      for (int b = 0; b < threads; ++b) block_start[b + 1] += block_start[b];
-      out.j.resize(block_start[threads]);
+      for (int b = 0; b < threads; ++b) block_sum[b + 1] += block_sum[b];
+      out.j.resize(block_sum[threads]);
     }
-    const auto base = static_cast<std::uint32_t>(block_start[t]);
-    for (long i = lo; i < hi; ++i) out.offset[i + 1] += base;
-    std::copy(local.begin(), local.end(), out.j.begin() + static_cast<std::ptrdiff_t>(base));
+    auto running = static_cast<std::uint32_t>(block_sum[t]);
+    for (long i = lo; i < hi; ++i) out.offset[i + 1] = running += out.offset[i + 1];
+#pragma omp barrier
+    for (std::size_t c = c_lo; c < c_hi; ++c)
+      for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
+        const std::uint32_t i = cell_items_[q];
+        const auto from = local.begin() + row_at_[i];
+        std::copy(from, from + (out.offset[i + 1] - out.offset[i]), out.j.begin() + out.offset[i]);
+      }
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Cell linked list (seed 003 §2.2.5): particles binned into cells at least one search radius wide,
-// each particle tested against the 3^D cells around its own. O(N) for a bounded density; periodic
-// directions wrap the cell index. Particles outside the box in a non-periodic direction are put in
+// each particle tested against the 3^D cells around its own (found once per cell, shared by its
+// particles). O(N) for a bounded density; periodic directions wrap the cell index. Particles outside the box in a non-periodic direction are put in
 // the edge cell, so an escaping particle slows the search but is never lost.
 #include "sphmol/neighbors/neighbor_search.hpp"
 
@@ -14,7 +14,10 @@ class CellListSearch final : public NeighborSearch<D> {
   void build(const SearchInput<D>& in, PairList& out) override;
 
  private:
-  std::vector<std::uint32_t> cell_start_, cell_items_, cell_of_;
+  // Kept between builds so that a rebuild reuses their memory.
+  std::vector<std::uint32_t> cell_start_, cell_items_, cell_of_, fill_;
+  std::vector<std::uint32_t> row_at_;               // start of row i in its thread's buffer
+  std::vector<std::vector<std::uint32_t>> local_;  // per-thread row buffers
 };
 
 extern template class CellListSearch<1>;

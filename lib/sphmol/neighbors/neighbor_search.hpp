@@ -1,6 +1,7 @@
 #pragma once
 // One interface for every neighbour search (all-pairs reference, CGAL kd-tree, ...).
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -34,17 +35,40 @@ template <int D>
 std::unique_ptr<NeighborSearch<D>> make_neighbor_search(std::string_view name);
 
 namespace detail {
-// Shared pair predicate of every search, so all of them give identical pair sets.
+// Shared pair predicate of every search, so all of them give identical pair sets. The distance test
+// takes the box constants once (PairDistance), so a search may apply it to coordinates it has
+// copied; the arithmetic is Domain::min_image's.
+template <int D>
+struct PairDistance {
+  std::array<double, D> period{}, inv_period{};
+  double radius2 = 0.0;
+  explicit PairDistance(const SearchInput<D>& in) : radius2(in.radius * in.radius) {
+    for (int d = 0; d < D; ++d) {
+      period[d] = in.domain->period(d);
+      inv_period[d] = in.domain->inv_period(d);
+    }
+  }
+  // dx[d] = x_i - x_j per direction.
+  bool within(const std::array<double, D>& dx) const {
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double m = dx[d] - period[d] * std::nearbyint(dx[d] * inv_period[d]);
+      r2 += m * m;
+    }
+    return r2 < radius2;
+  }
+};
+
+// Pairs of two boundary particles are never listed.
+inline bool listable(Kind a, Kind b) { return a == Kind::Fluid || b == Kind::Fluid; }
+
 template <int D>
 inline bool is_pair(const SearchInput<D>& in, std::size_t i, std::size_t j) {
   if (i == j) return false;
-  if (in.kind[i] != Kind::Fluid && in.kind[j] != Kind::Fluid) return false;
-  double r2 = 0.0;
-  for (int d = 0; d < D; ++d) {
-    const double dx = in.domain->min_image(d, in.x[d][i] - in.x[d][j]);
-    r2 += dx * dx;
-  }
-  return r2 < in.radius * in.radius;
+  if (!listable(in.kind[i], in.kind[j])) return false;
+  std::array<double, D> dx;
+  for (int d = 0; d < D; ++d) dx[d] = in.x[d][i] - in.x[d][j];
+  return PairDistance<D>(in).within(dx);
 }
 }  // namespace detail
 

@@ -28,7 +28,11 @@ class VerletList {
       SearchInput<D> q = in;
       q.radius = support_ + skin_;
       search_->build(q, pairs_);
-      for (int d = 0; d < D; ++d) x_build_[d].assign(in.x[d], in.x[d] + in.n);
+      for (int d = 0; d < D; ++d) x_build_[d].resize(in.n);
+      const long n = static_cast<long>(in.n);
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i)
+        for (int d = 0; d < D; ++d) x_build_[d][i] = in.x[d][i];
       built_ = true;
       built_support_ = support_;
       ++rebuilds_;
@@ -57,15 +61,20 @@ class VerletList {
     const double room = skin_ - std::max(0.0, support_ - built_support_);
     if (room <= 0.0) return true;
     const double limit2 = 0.25 * room * room;
-    for (std::size_t i = 0; i < in.n; ++i) {
+    // Every evaluation tests every particle (the list is rarely stale, so an early exit seldom
+    // helps): split over threads; an OR of per-particle tests is the same for any thread count.
+    const long n = static_cast<long>(in.n);
+    bool far = false;
+#pragma omp parallel for schedule(static) reduction(|| : far)
+    for (long i = 0; i < n; ++i) {
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) {
         const double dx = in.domain->min_image(d, in.x[d][i] - x_build_[d][i]);
         r2 += dx * dx;
       }
-      if (r2 > limit2) return true;
+      far |= r2 > limit2;
     }
-    return false;
+    return far;
   }
 
   std::unique_ptr<NeighborSearch<D>> search_;

@@ -17,21 +17,38 @@ void Leapfrog::initialized() {
 void Leapfrog::step(double dt) {
   const std::size_t vb = sys_->velocities_begin(), ve = sys_->velocities_end(), n = sys_->size();
   const std::size_t nv = ve - vb;  // positions occupy [0, nv): one per velocity component
-  double* y = y_;
+  double* const y = y_;
+  double *const ym = ymid_.data(), *const fm = fmid_.data(), *const c = c_.data();
+  const double* const f = f_.data();
+  // Every update is element-wise, so the static split over threads leaves the result bit-identical
+  // for any thread count. A position and its velocity are updated in the same iteration: one pass
+  // over the state per half step instead of three.
   // Half drift with v_n plus the latest XSPH correction; predicted half-step velocity; midpoint
   // prediction for other fields.
-  for (std::size_t k = 0; k < nv; ++k) ymid_[k] = y[k] + 0.5 * dt * (y[vb + k] + c_[k]);
-  for (std::size_t k = vb; k < ve; ++k) ymid_[k] = y[k] + 0.5 * dt * f_[k];
-  for (std::size_t k = ve; k < n; ++k) ymid_[k] = y[k] + 0.5 * dt * f_[k];
-  sys_->rhs(t_ + 0.5 * dt, ymid_.data(), fmid_.data());
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < nv; ++k) {
+      ym[k] = y[k] + 0.5 * dt * (y[vb + k] + c[k]);
+      ym[vb + k] = y[vb + k] + 0.5 * dt * f[vb + k];
+    }
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = ve; k < n; ++k) ym[k] = y[k] + 0.5 * dt * f[k];
+  }
+  sys_->rhs(t_ + 0.5 * dt, ym, fm);
   evaluated();
   // Kick, second half drift with v_{n+1}, midpoint for the rest.
-  for (std::size_t k = vb; k < ve; ++k) y[k] += dt * fmid_[k];
-  for (std::size_t k = 0; k < nv; ++k) {
-    c_[k] = fmid_[k] - ymid_[vb + k];  // XSPH correction relative to the velocity it was evaluated with
-    y[k] = ymid_[k] + 0.5 * dt * (y[vb + k] + c_[k]);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < nv; ++k) {
+      y[vb + k] += dt * fm[vb + k];
+      c[k] = fm[k] - ym[vb + k];  // XSPH correction relative to the velocity it was evaluated with
+      y[k] = ym[k] + 0.5 * dt * (y[vb + k] + c[k]);
+    }
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = ve; k < n; ++k) y[k] += dt * fm[k];
   }
-  for (std::size_t k = ve; k < n; ++k) y[k] += dt * fmid_[k];
   f_.swap(fmid_);
 }
 
