@@ -8,26 +8,14 @@
 #include "sphmol/neighbors/cell_list_search.hpp"
 #include "sphmol/neighbors/kdtree_search.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
+#include "point_cloud.hpp"
 
 using namespace sphmol;
 
 namespace {
 
 template <int D>
-struct Cloud {
-  std::array<std::vector<double>, D> x;
-  std::vector<Kind> kind;
-  Domain<D> domain;
-  SearchInput<D> input(double radius) const {
-    SearchInput<D> in;
-    for (int d = 0; d < D; ++d) in.x[d] = x[d].data();
-    in.kind = kind.data();
-    in.n = kind.size();
-    in.domain = &domain;
-    in.radius = radius;
-    return in;
-  }
-};
+using Cloud = PointCloud<D>;
 
 template <int D>
 Cloud<D> random_cloud(std::size_t n, bool periodic, double wall_fraction, unsigned seed) {

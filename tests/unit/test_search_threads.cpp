@@ -13,26 +13,14 @@
 #include "sphmol/neighbors/all_pairs_search.hpp"
 #include "sphmol/neighbors/cell_list_search.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
+#include "point_cloud.hpp"
 
 using namespace sphmol;
 
 namespace {
 
 template <int D>
-struct Column {
-  std::array<std::vector<double>, D> x;
-  std::vector<Kind> kind;
-  Domain<D> domain;
-  SearchInput<D> input(double radius) const {
-    SearchInput<D> in;
-    for (int d = 0; d < D; ++d) in.x[d] = x[d].data();
-    in.kind = kind.data();
-    in.n = kind.size();
-    in.domain = &domain;
-    in.radius = radius;
-    return in;
-  }
-};
+using Column = PointCloud<D>;
 
 // Box [0, 1]^D: fluid on a jittered lattice of spacing dx filling [0, 0.4] in direction 0 and
 // [0, 0.6] in the others, one wall layer at x_{D-1} = dx/2 across the box, and 50 fluid particles

@@ -64,9 +64,13 @@ struct PairGeometry {
 // counts each row's pairs inside the support, a prefix sum places the rows, and the second pass fills
 // them, so the active list stays one contiguous CSR whatever the thread count and every row is
 // written by one thread.
-template <int D, class Derived>
+template <int D, SphKernel K, class Derived>
 class KernelPassRows : public KernelPass<D> {
  public:
+  std::string_view kernel_name() const override { return K::name; }
+  double support() const override { return K::support; }
+  double value_at_zero(double h) const override { return K::W(0.0, h); }
+
   void apply(const PairList& verlet, Workspace<D>& w) final {
     this->prepare(w);
     const long rows = static_cast<long>(verlet.rows());
@@ -187,11 +191,8 @@ class KernelPassRows : public KernelPass<D> {
 };
 
 template <int D, SphKernel K>
-class KernelPassFor final : public KernelPassRows<D, KernelPassFor<D, K>> {
+class KernelPassFor final : public KernelPassRows<D, K, KernelPassFor<D, K>> {
  public:
-  std::string_view kernel_name() const override { return K::name; }
-  double support() const override { return K::support; }
-  double value_at_zero(double h) const override { return K::W(0.0, h); }
   // Kernels follow W(r, h) = W(r/h, 1) / h^D (kernels/kernel.hpp), so the loop evaluates at h = 1,
   // where every division by h folds away, and scales once (checked for every kernel by a unit test).
   void prepare(const Workspace<D>& w) override {

@@ -8,11 +8,8 @@
 namespace sphmol {
 
 template <int D, SphKernel K>
-class KernelPassVariableH final : public KernelPassRows<D, KernelPassVariableH<D, K>> {
+class KernelPassVariableH final : public KernelPassRows<D, K, KernelPassVariableH<D, K>> {
  public:
-  std::string_view kernel_name() const override { return K::name; }
-  double support() const override { return K::support; }
-  double value_at_zero(double h) const override { return K::W(0.0, h); }
   void prepare(const Workspace<D>& w) override {
     this->geometry_ = PairGeometry<D>(w);
     hs_ = w.hs.data();
