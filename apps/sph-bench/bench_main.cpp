@@ -68,7 +68,8 @@ sphmol::Config taylor_green(long n, const std::string& search = "cell_list") {
 // The dam break (free surface, continuity + delta-SPH, artificial viscosity, dynamic walls) with the
 // spacing scaled so that the column holds about n fluid particles (20,000 at the shipped dp = 0.01 m).
 sphmol::Config dam_break(long n, const std::string& search) {
-  const double dp = 0.01 * std::sqrt(20'000.0 / static_cast<double>(n));
+  // The column (1 m x 2 m) and the tank (4 m x 3 m) must be whole numbers of spacings.
+  const double dp = 1.0 / std::round(100.0 * std::sqrt(static_cast<double>(n) / 20'000.0));
   return sphmol::load_config(verification("dam_break.yaml"),
                              {"discretization.spacing=" + num(dp), "discretization.neighbor_search=" + search});
 }

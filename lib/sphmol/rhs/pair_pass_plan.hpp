@@ -24,6 +24,22 @@ bool fusable(const std::vector<std::unique_ptr<Term<D>>>& terms) {
   return true;
 }
 
+// The number of fused passes fuse_pair_terms would make (each evaluates the kernel once per pair).
+template <int D>
+std::size_t fused_pass_count(const std::vector<std::unique_ptr<Term<D>>>& terms) {
+  std::size_t passes = 0;
+  bool open = false;
+  for (const auto& t : terms) {
+    if (const auto* p = dynamic_cast<const PairTerm<D>*>(t.get())) {
+      passes += open ? 0 : 1;
+      open = !p->feeds_neighbours();
+    } else {
+      open = false;
+    }
+  }
+  return passes;
+}
+
 template <int D>
 std::vector<std::unique_ptr<Term<D>>> fuse_pair_terms(std::vector<std::unique_ptr<Term<D>>> terms, KernelPass<D>* kernel) {
   if (!fusable(terms)) throw std::logic_error("fuse_pair_terms: a term needs the stored pair list");

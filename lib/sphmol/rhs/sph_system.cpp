@@ -109,6 +109,11 @@ std::vector<std::string> SphSystem<D>::terms_needing_stored_pairs() const {
 }
 
 template <int D>
+std::size_t SphSystem<D>::fused_pass_count() const {
+  return sphmol::fused_pass_count(terms_);
+}
+
+template <int D>
 void SphSystem<D>::fuse_pair_passes() {
   if (rhs_evals_ > 0) throw std::logic_error("SphSystem::fuse_pair_passes: must be set before the first evaluation");
   if (!stored_pairs_) return;

@@ -58,6 +58,8 @@ class SphSystem final : public OdeSystem {
   // instead of over a stored active-pair list; results are bit-identical, memory and time lower.
   // Requires terms_needing_stored_pairs() to be empty. Set before the first rhs().
   std::vector<std::string> terms_needing_stored_pairs() const;
+  // How many fused passes the terms would make (each evaluates the kernel once per pair).
+  std::size_t fused_pass_count() const;
   void fuse_pair_passes();
   // The term names of each fused pass, in order; empty with the stored list.
   std::vector<std::vector<std::string>> pair_passes() const;
