@@ -4,5 +4,7 @@
 set -e
 BUILD=${1:-build/release}
 for n in 10000 100000 1000000; do
-  "$BUILD/sph-bench" --benchmark_filter="^Memory/$n/" | grep '^Memory'
+  for fused in 0 1; do
+    "$BUILD/sph-bench" --benchmark_filter="^Memory/n:$n/fused:$fused/" | grep '^Memory'
+  done
 done

@@ -4,7 +4,7 @@
 // ratios of medians (--benchmark_repetitions=5), since a shared machine is noisy.
 //   sph-bench --benchmark_filter=Rhs/            RHS, Poiseuille (laminar), shock tube (compressible) and
 //                                                dam break (free surface), 1e4..1e6 particles, 1 and 2 threads
-//   sph-bench --benchmark_filter=RhsPasses       fused pair passes vs the stored pair list (1e5, 1 thread)
+//   sph-bench --benchmark_filter=RhsPasses       fused pair passes vs the stored pair list (1 thread)
 //   sph-bench --benchmark_filter=RhsScaling      Taylor-Green RHS from 1e3 to 1e6 particles
 //   sph-bench --benchmark_filter=RhsReorder      RHS with the workspace in lattice / shuffled order,
 //                                                locality reordering off / on (1e5 particles)
@@ -129,24 +129,34 @@ BENCHMARK_CAPTURE(Rhs, taylor_green, taylor_green)
     ->UseRealTime();
 
 // Fused pair passes (rhs/fused_pair_pass.hpp) against the stored active-pair list, and the dam break's
-// combined weakly compressible row against its four terms apart; 1e5 particles, 1 thread. Args: fused
-// (0/1), combined (0/1).
+// combined weakly compressible row against its four terms apart; 1 thread. Args: fused (0/1),
+// combined (0/1), particles.
 void RhsPasses(benchmark::State& state, sphmol::Config (*config)(long, const std::string&)) {
   omp_set_num_threads(1);
-  auto c = config(100'000, "cell_list");
+  auto c = config(state.range(2), "cell_list");
   c.discretization.pair_passes = state.range(0) != 0 ? "fused" : "stored";
   c.discretization.combine_terms = state.range(1) != 0;
   auto sys = build(c);
   time_rhs(state, *sys);
 }
 BENCHMARK_CAPTURE(RhsPasses, dam_break, dam_break)
-    ->ArgsProduct({{0, 1}, {0, 1}})
-    ->ArgNames({"fused", "combined"})
+    ->ArgsProduct({{0, 1}, {0, 1}, {100'000}})
+    ->ArgNames({"fused", "combined", "n"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(RhsPasses, shock_tube, shock_tube)
+    ->ArgsProduct({{0, 1}, {1}, {100'000}})
+    ->ArgNames({"fused", "combined", "n"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(RhsPasses, poiseuille, poiseuille)
+    ->ArgsProduct({{0, 1}, {1}, {100'000}})
+    ->ArgNames({"fused", "combined", "n"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK_CAPTURE(RhsPasses, taylor_green, taylor_green)
-    ->ArgsProduct({{0, 1}, {1}})
-    ->ArgNames({"fused", "combined"})
+    ->ArgsProduct({{0, 1}, {1}, {10'000, 100'000, 1'000'000}})
+    ->ArgNames({"fused", "combined", "n"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -232,12 +242,13 @@ void Rebuilds(benchmark::State& state) {
 }
 BENCHMARK(Rebuilds)->Arg(3)->Arg(0)->ArgName("skin_x10")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
-// Peak resident memory per particle of a Taylor-Green run (system, pair lists, ARKODE DP 5(4) with its
-// stage vectors) after 3 steps. getrusage's peak covers the whole process, so run one size per
+// Peak resident memory per particle of a Taylor-Green run (system, pair lists, the case's leapfrog)
+// after 3 steps, with the stored pair list (fused 0) or fused pair passes (fused 1). getrusage's peak covers the whole process, so run one size per
 // process (scripts/bench_memory.sh); the value is an upper bound that includes the program itself.
 void Memory(benchmark::State& state) {
   omp_set_num_threads(1);
-  const auto c = taylor_green(state.range(0));
+  auto c = taylor_green(state.range(0));
+  c.discretization.pair_passes = state.range(1) != 0 ? "fused" : "stored";
   double particles = 0.0;
   for (auto _ : state) {
     auto sys = build(c);
@@ -252,7 +263,12 @@ void Memory(benchmark::State& state) {
   state.counters["maxrss_MiB"] = static_cast<double>(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
   state.counters["bytes/particle"] = static_cast<double>(u.ru_maxrss) * 1024.0 / particles;
 }
-BENCHMARK(Memory)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(Memory)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {0, 1}})
+    ->ArgNames({"n", "fused"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace
 

@@ -182,12 +182,12 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.pair_passes: 'fused' is not available with " + names +
                                 " (they need the stored pair list); use 'auto' or 'stored'");
   }
-  // auto: fused when one pass holds every pair term (one kernel evaluation per pair either way, no
-  // stored list: measured 1.15-1.23x faster on the dam break), or when the stored list would be large
-  // (>= 5e5 particles: 44 B per pair, over 1 KiB per particle at h = 2 dx). A scene that needs several
-  // passes evaluates the kernel once per pass, and at small sizes the stored list is faster (Taylor-Green,
-  // three passes, 1e5 particles: 1.18x); README, Performance.
-  const bool fuse_auto = unfusable.empty() && (sys->fused_pass_count() <= 1 || sys->particles().size() >= 500'000);
+  // auto: fused when one pass holds every pair term (one kernel evaluation per pair either way, and no
+  // stored list: 1.2-1.5x faster on the dam break, equal on the shock tube). A scene that needs several
+  // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green, three
+  // passes: 1.4-1.7x; Poiseuille, two: 1.5x) at about three times the memory (README, Performance);
+  // `fused` is then the choice for memory.
+  const bool fuse_auto = unfusable.empty() && sys->fused_pass_count() <= 1;
   if (disc.pair_passes == "fused" || (disc.pair_passes == "auto" && fuse_auto)) sys->fuse_pair_passes();
   return sys;
 }
