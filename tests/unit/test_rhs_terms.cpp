@@ -89,6 +89,19 @@ struct Fixture {
   }
 };
 
+// Pair forces cancel: total momentum rate sum_i m_i dv_i/dt vanishes relative to sum_i m_i |dv_i/dt|.
+void check_momentum_conserved(const Fixture& f) {
+  double px = 0, py = 0, scale = 0;
+  for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+    px += f.P.mass[i] * f.dvdt[0][i];
+    py += f.P.mass[i] * f.dvdt[1][i];
+    scale += f.P.mass[i] * std::hypot(f.dvdt[0][i], f.dvdt[1][i]);
+  }
+  REQUIRE(scale > 0);
+  CHECK(std::abs(px) < 1e-12 * scale);
+  CHECK(std::abs(py) < 1e-12 * scale);
+}
+
 }  // namespace
 
 TEST_CASE("kernel pass keeps exactly the pairs inside the support", "[rhs]") {
@@ -186,15 +199,7 @@ TEST_CASE("pressure and viscous pair forces conserve momentum on a disordered pe
   PressureGradient117<2>().apply(f.w);
   MorrisViscosity<2>(0.01).apply(f.w);
   StrainRateViscosity117<2>(0.01).apply(f.w);
-  double px = 0, py = 0, scale = 0;
-  for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
-    px += f.P.mass[i] * f.dvdt[0][i];
-    py += f.P.mass[i] * f.dvdt[1][i];
-    scale += f.P.mass[i] * std::hypot(f.dvdt[0][i], f.dvdt[1][i]);
-  }
-  REQUIRE(scale > 0);
-  CHECK(std::abs(px) < 1e-12 * scale);
-  CHECK(std::abs(py) < 1e-12 * scale);
+  check_momentum_conserved(f);
 }
 
 TEST_CASE("XSPH leaves a uniform flow alone and body force adds g", "[rhs]") {
@@ -263,14 +268,6 @@ TEST_CASE("transport velocity: nothing on a lattice, pushes displaced particles 
     f.pairs();
     SummationDensity<2>().apply(f.w);
     transport_velocity(f.w, pb, tau, true);
-    double px = 0, py = 0, scale = 0;
-    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
-      px += f.P.mass[i] * f.dvdt[0][i];
-      py += f.P.mass[i] * f.dvdt[1][i];
-      scale += f.P.mass[i] * std::hypot(f.dvdt[0][i], f.dvdt[1][i]);
-    }
-    REQUIRE(scale > 0);
-    CHECK(std::abs(px) < 1e-12 * scale);
-    CHECK(std::abs(py) < 1e-12 * scale);
+    check_momentum_conserved(f);
   }
 }

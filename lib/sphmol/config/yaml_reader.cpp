@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sphmol/core/join.hpp"
+
 namespace sphmol {
 
 namespace {
@@ -46,12 +48,6 @@ std::optional<double> parse_real(const YAML::Node& node) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size() || s.empty()) return std::nullopt;
   return v;
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
+#include "sphmol/core/join.hpp"
 #include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
@@ -94,7 +95,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
   const auto& av = disc.artificial_viscosity;
   // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
-  // formulation), bit-identical to the four separate terms.
+  // formulation), equal to the four separate terms to round-off.
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
                       av.enabled && !disc.energy;
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
@@ -173,15 +174,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (ghosts) sys->set_generator(std::move(ghosts));
   sys->set_reorder(disc.reorder);
   const auto unfusable = sys->terms_needing_stored_pairs();
-  if (disc.pair_passes == "fused" && !unfusable.empty()) {
-    std::string names;
-    for (const auto& n : unfusable) {
-      if (!names.empty()) names += ", ";
-      names += n;
-    }
-    throw std::invalid_argument("discretization.pair_passes: 'fused' is not available with " + names +
+  if (disc.pair_passes == "fused" && !unfusable.empty())
+    throw std::invalid_argument("discretization.pair_passes: 'fused' is not available with " + join(unfusable) +
                                 " (they need the stored pair list); use 'auto' or 'stored'");
-  }
   // auto: fused when one pass holds every pair term (one kernel evaluation per pair either way, and no
   // stored list: 1.2-1.5x faster on the dam break, equal on the shock tube). A scene that needs several
   // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green, three

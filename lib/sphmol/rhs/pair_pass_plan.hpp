@@ -3,6 +3,7 @@
 // share one pass; a per-particle term (an EOS, a body force) or a term whose output later terms read
 // at neighbours (summation density) ends it. The term order is the assembly's: terms whose inputs do
 // not depend on each other are placed next to each other there (rhs/assemble.cpp).
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -24,39 +25,48 @@ bool fusable(const std::vector<std::unique_ptr<Term<D>>>& terms) {
   return true;
 }
 
-// The number of fused passes fuse_pair_terms would make (each evaluates the kernel once per pair).
+// The fused pass of each term, in order: consecutive pair terms share a pass, which ends after a term
+// that feeds neighbours and at any other term; -1 for a term that is not a pair term.
 template <int D>
-std::size_t fused_pass_count(const std::vector<std::unique_ptr<Term<D>>>& terms) {
-  std::size_t passes = 0;
+std::vector<int> fused_pass_of(const std::vector<std::unique_ptr<Term<D>>>& terms) {
+  std::vector<int> pass(terms.size(), -1);
+  int passes = 0;
   bool open = false;
-  for (const auto& t : terms) {
-    if (const auto* p = dynamic_cast<const PairTerm<D>*>(t.get())) {
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    if (const auto* p = dynamic_cast<const PairTerm<D>*>(terms[k].get())) {
       passes += open ? 0 : 1;
+      pass[k] = passes - 1;
       open = !p->feeds_neighbours();
     } else {
       open = false;
     }
   }
-  return passes;
+  return pass;
+}
+
+// The number of fused passes fuse_pair_terms would make (each evaluates the kernel once per pair).
+template <int D>
+std::size_t fused_pass_count(const std::vector<std::unique_ptr<Term<D>>>& terms) {
+  const auto pass = fused_pass_of(terms);
+  return pass.empty() ? 0 : static_cast<std::size_t>(*std::max_element(pass.begin(), pass.end()) + 1);
 }
 
 template <int D>
 std::vector<std::unique_ptr<Term<D>>> fuse_pair_terms(std::vector<std::unique_ptr<Term<D>>> terms, KernelPass<D>* kernel) {
   if (!fusable(terms)) throw std::logic_error("fuse_pair_terms: a term needs the stored pair list");
+  const auto pass = fused_pass_of(terms);
   std::vector<std::unique_ptr<Term<D>>> out;
   std::vector<std::unique_ptr<PairTerm<D>>> group;
   auto close = [&] {
     if (!group.empty()) out.push_back(std::make_unique<FusedPairPass<D>>(kernel, std::move(group)));
     group.clear();
   };
-  for (auto& t : terms) {
-    if (auto* p = dynamic_cast<PairTerm<D>*>(t.get())) {
-      t.release();
-      group.emplace_back(p);
-      if (p->feeds_neighbours()) close();
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    if (k > 0 && pass[k] != pass[k - 1]) close();
+    if (pass[k] < 0) {
+      out.push_back(std::move(terms[k]));
     } else {
-      close();
-      out.push_back(std::move(t));
+      group.emplace_back(static_cast<PairTerm<D>*>(terms[k].release()));
     }
   }
   close();
