@@ -11,6 +11,8 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <string>
 
@@ -42,5 +44,79 @@ void DamBreakStep(benchmark::State& state) {
   omp_set_num_threads(1);
 }
 BENCHMARK(DamBreakStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+// The run of dam_break.yaml from t = 0 to t_end_ms / 1000 s (1000: the whole run) once, in blocks
+// of `block` steps that alternate between 1 and 2 threads. Results do not depend on the thread count (tests/integration/
+// test_determinism.cpp), so this is the shipped run; and since both thread counts sample every phase
+// of it within a few hundred milliseconds of each other, the 2-vs-1 ratio is free of the slow drift
+// in machine speed that made separate 1- and 2-thread runs on this VM scatter by 30 %.
+// Counters: us/particle-step on each thread count and their ratio, over the whole run and over
+// t < t_end / 2 and t >= t_end / 2 apart; the ratio for the search, the rest of the RHS and the rest
+// of the step; and how the fused pair rows split between the two threads.
+void DamBreakRun(benchmark::State& state) {
+  const long block = state.range(0);
+  const double t_end = 1e-3 * static_cast<double>(state.range(1));
+  const auto config = sphmol::load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                                          {"time.t_end=" + std::to_string(t_end)});
+  std::array<std::array<double, 2>, 2> wall{};   // [half][threads - 1]
+  std::array<std::array<long, 2>, 2> steps{};
+  std::array<double, 2> rhs{}, search{};  // [threads - 1]: the parts of the wall time in the RHS, in the search
+  double rows_1 = 0.0;                    // 1 thread: seconds on fused pair rows
+  std::array<double, 2> rows_2{};         // 2 threads: each thread's seconds on them
+  double particles = 0.0;
+  for (auto _ : state) {
+    auto c = sphmol::case_registry().at(config.case_name).d2();
+    auto sys = c->build(config);
+    std::vector<double> y = sys->initial_state();
+    auto integrator = sphmol::make_integrator(config.time);
+    integrator->initialize(*sys, 0.0, y.data());
+    particles = static_cast<double>(sys->particles().size());
+    double t = 0.0;
+    for (long k = 0; t < t_end; ++k) {
+      const int threads = 1 + static_cast<int>(k % 2);
+      const int half = t < 0.5 * t_end ? 0 : 1;
+      omp_set_num_threads(threads);
+      const double start = omp_get_wtime(), rhs0 = sys->rhs_seconds(), search0 = sys->search_seconds();
+      const std::vector<double> rows0 = sys->pair_thread_seconds();
+      long n = 0;
+      for (; n < block && t < t_end; ++n) t = integrator->step_toward(t_end);
+      const std::vector<double>& rows = sys->pair_thread_seconds();
+      for (std::size_t q = 0; q < rows.size() && q < 2; ++q) {
+        const double spent = rows[q] - (q < rows0.size() ? rows0[q] : 0.0);
+        if (threads == 1) rows_1 += spent;
+        else rows_2[q] += spent;
+      }
+      wall[half][threads - 1] += omp_get_wtime() - start;
+      rhs[threads - 1] += sys->rhs_seconds() - rhs0;
+      search[threads - 1] += sys->search_seconds() - search0;
+      steps[half][threads - 1] += n;
+    }
+    benchmark::DoNotOptimize(y.data());
+  }
+  omp_set_num_threads(1);
+  const auto us = [&](double w, long s) { return s > 0 ? 1e6 * w / (static_cast<double>(s) * particles) : 0.0; };
+  const auto both = [&](int th) { return us(wall[0][th] + wall[1][th], steps[0][th] + steps[1][th]); };
+  state.counters["us_1thread"] = both(0);
+  state.counters["us_2threads"] = both(1);
+  state.counters["2vs1"] = both(0) / both(1);
+  for (int half = 0; half < 2; ++half) {
+    const std::string tag = half == 0 ? "_early" : "_late";
+    state.counters["2vs1" + tag] = us(wall[half][0], steps[half][0]) / us(wall[half][1], steps[half][1]);
+  }
+  // The same ratio for the neighbour search, the rest of the RHS, and the rest of the step.
+  const double w1 = wall[0][0] + wall[1][0], w2 = wall[0][1] + wall[1][1];
+  state.counters["2vs1_search"] = search[0] / search[1];
+  state.counters["2vs1_rhs_without_search"] = (rhs[0] - search[0]) / (rhs[1] - search[1]);
+  state.counters["2vs1_outside_rhs"] = (w1 - rhs[0]) / (w2 - rhs[1]);
+  state.counters["share_outside_rhs_2threads"] = (w2 - rhs[1]) / w2;
+  state.counters["share_search_2threads"] = search[1] / w2;
+  // Fused pair rows on 2 threads: imbalance = the busier thread over the mean; slowdown = the two
+  // threads' summed row time over the 1-thread row time (1 when a thread runs as fast beside the other
+  // as alone). 2vs1 of the rows = 2 / (imbalance x slowdown).
+  state.counters["rows_imbalance"] = std::max(rows_2[0], rows_2[1]) / (0.5 * (rows_2[0] + rows_2[1]));
+  state.counters["rows_slowdown"] = (rows_2[0] + rows_2[1]) / rows_1;
+  state.counters["particles"] = particles;
+}
+BENCHMARK(DamBreakRun)->Args({20, 1000})->Args({20, 100})->ArgNames({"block", "t_end_ms"})->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 }  // namespace

@@ -10,6 +10,9 @@
 //                                                locality reordering off / on (1e5 particles)
 //   sph-bench --benchmark_filter=Search          neighbour-list build + query, cell list (1, 2 threads) vs kd-tree
 //   sph-bench --benchmark_filter=Rebuilds        Verlet rebuilds per 100 ARKODE steps, skin 0.3 h vs 0
+//   sph-bench --benchmark_filter=DamBreakStep    end to end: dam-break leapfrog steps, 1 and 2 threads
+//   sph-bench --benchmark_filter=DamBreakRun     the whole dam-break run, alternating 1 and 2 threads every
+//                                                20 steps: the 2-vs-1 ratio (bench_dam_break.cpp)
 //   scripts/bench_memory.sh                      peak memory per particle (one process per size)
 #include <benchmark/benchmark.h>
 #include <omp.h>

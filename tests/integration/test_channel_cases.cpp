@@ -101,6 +101,20 @@ TEST_CASE("sph-mol writes summary.json with the contract keys and a profile per 
                           "state_fields", "errors", "final_errors"})
     CHECK(s.contains(key));
   CHECK(s["t_end"] == 0.045);
+  // Where the wall time went: three non-negative parts that add up to it; no per-thread pair-row
+  // times, since Couette's terms run over the stored pair list.
+  const auto& b = s["wall_seconds_breakdown"];
+  double parts = 0.0;
+  for (const char* key : {"neighbour_search", "rhs_without_search", "setup_integrator_output"}) {
+    INFO(key);
+    REQUIRE(b.contains(key));
+    CHECK(b[key].get<double>() >= 0.0);
+    parts += b[key].get<double>();
+  }
+  CHECK(parts == Approx(s["wall_seconds"].get<double>()).epsilon(1e-9));
+  CHECK(b["rhs_without_search"].get<double>() > 0.0);
+  CHECK_FALSE(b.contains("pair_rows_per_thread"));
+  CHECK(slurp(dir + ".log").find("   wall = ") != std::string::npos);  // per-output log lines
   CHECK(s["errors"].size() == 2);  // 0.0225, 0.045; later output times dropped with a notice
   CHECK(slurp(dir + ".log").find("dropped") != std::string::npos);
   CHECK(fs::exists(dir + "/profile_t0.0225.csv"));

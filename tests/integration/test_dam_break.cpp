@@ -30,6 +30,13 @@ TEST_CASE("dam_break: mass exact, no wall penetration, front between Martin & Mo
   // a front stalled by the walls, or gravity too weak, falls behind them.
   CHECK(f["front_mean_martin_moyce"].get<double>() > 0.0);
   CHECK(f["front_rms_martin_moyce"].get<double>() < 0.4);
+  // One fused pass: each thread's time on its pair rows is reported, and it is part of the RHS time.
+  const auto& rows = s["wall_seconds_breakdown"]["pair_rows_per_thread"];
+  REQUIRE(rows.size() >= 1);
+  double row_seconds = 0.0;
+  for (const auto& r : rows) row_seconds += r.get<double>();
+  CHECK(rows[0].get<double>() > 0.0);
+  CHECK(row_seconds <= static_cast<double>(rows.size()) * s["wall_seconds_breakdown"]["rhs_without_search"].get<double>());
   for (const auto& e : s["errors"]) {
     INFO("t = " << e["t"]);
     CHECK(e["x_front"].get<double>() < e["x_ritter"].get<double>());

@@ -40,8 +40,12 @@ TEST_CASE("restart: interrupted + restarted run = uninterrupted run", "[restart]
       const auto summary = json_file(dir / "second" / "summary.json");
       CHECK(summary["status"] == "completed");
       CHECK(summary["restarted_from"]["t"] == 0.05);
-      // The measurements before the restart are carried over.
+      // The measurements before the restart are carried over, and so is the split of the wall time.
       CHECK(summary["errors"].size() == 2);
+      const auto first = checkpoint_at(dir / "first", "0.05");
+      CHECK(first["rhs_seconds"].get<double>() > 0.0);
+      CHECK(summary["wall_seconds_breakdown"]["rhs_without_search"].get<double>() + summary["wall_seconds_breakdown"]["neighbour_search"].get<double>() >
+            first["rhs_seconds"].get<double>());
       if (integrator != "arkode_erk") {
         CHECK(a["state"] == b["state"]);
         CHECK(a["integrator_state"] == b["integrator_state"]);
@@ -76,5 +80,10 @@ TEST_CASE("restart: bad checkpoint paths are input errors (exit 2, nothing writt
   r = sph_mol("--restart '" + (dir / "fake").string() + "' --output '" + (dir / "out").string() + "'", dir / "e");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Matchers::Contains("unknown format"));
+  // A checkpoint of the previous format (without the RHS and search seconds) names both formats.
+  std::ofstream(dir / "fake" / "checkpoint.json") << "{\"format\": \"sph-mol checkpoint 1\"}";
+  r = sph_mol("--restart '" + (dir / "fake").string() + "' --output '" + (dir / "out").string() + "'", dir / "e");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("'sph-mol checkpoint 1' (this build reads 'sph-mol checkpoint 2')"));
   CHECK_FALSE(fs::exists(dir / "out"));
 }

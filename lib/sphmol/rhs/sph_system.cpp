@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <omp.h>
 #include <stdexcept>
 
 #include "sphmol/neighbors/particle_reorder.hpp"
@@ -142,6 +143,7 @@ std::size_t SphSystem<D>::active_pairs() const {
 template <int D>
 void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
+  const double t_start = omp_get_wtime();
   ws_.t = t;
   const std::size_t nf = layout_.n, nb = n_base_;
   const std::uint32_t* ord = perm_.empty() ? nullptr : perm_.data();  // workspace -> state index
@@ -191,12 +193,14 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   in.kind = P.kind.data();
   in.n = n;
   in.domain = &domain_;
+  const double t_search = omp_get_wtime();
   if (reorder_ && pairs_->stale(in)) {
     reorder_workspace();  // permutes in place: `in` stays valid
     ord = perm_.data();
     pairs_->invalidate();
   }
   pairs_->update(in);
+  search_seconds_ += omp_get_wtime() - t_search;
   ws_.verlet = &pairs_->pairs();
   if (stored_pairs_) kernel_->apply(pairs_->pairs(), ws_);
 
@@ -255,6 +259,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));
   if (cfl_.kinematic_viscosity > 0.0) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
   stable_step_ = dt;
+  rhs_seconds_ += omp_get_wtime() - t_start;
 }
 
 template <int D>

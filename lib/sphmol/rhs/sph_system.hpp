@@ -40,6 +40,12 @@ class SphSystem final : public OdeSystem {
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
   long rhs_evaluations() const override { return rhs_evals_; }
+  // Wall time spent inside rhs() since construction, and the part of it that went to the neighbour
+  // list (staleness test, rebuilds, reordering): the run summary splits its cost with these.
+  double rhs_seconds() const { return rhs_seconds_; }
+  double search_seconds() const { return search_seconds_; }
+  // Per OpenMP thread: seconds on rows of fused pair passes since construction (Workspace).
+  const std::vector<double>& pair_thread_seconds() const { return ws_.pair_thread_seconds; }
 
   // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
   void set_generator(std::unique_ptr<ParticleGenerator<D>> g);
@@ -106,6 +112,7 @@ class SphSystem final : public OdeSystem {
   double support_ = 0.0;                 // kernel support in units of h
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
+  double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
   // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
   // and walls within [n_fluid, n_base); empty when off. wp_ is particles_ in workspace order, out_ the
   // derivatives in workspace order before the scatter into ydot.

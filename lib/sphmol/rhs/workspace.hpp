@@ -24,6 +24,10 @@ struct Workspace {
   // per-particle data needs it.
   const std::uint32_t* order = nullptr;
   const PairList* verlet = nullptr;  // the Verlet list (with skin) of this evaluation
+  // Seconds each OpenMP thread has spent on rows of fused pair passes, summed over evaluations (index:
+  // thread number): equal entries mean balanced threads, and their sum against the 1-thread time shows
+  // how much slower a thread runs beside the other (rhs/fused_pair_pass.hpp).
+  std::vector<double> pair_thread_seconds;
   PairList pairs;  // active pairs (r < support), same row structure as the Verlet list
   double h = 0.0;
   double W0 = 0.0;  // W(0, h): the self-contribution to summation density

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kFormat = "sph-mol checkpoint 1";
+constexpr const char* kFormat = "sph-mol checkpoint 2";
 constexpr const char* kPrefix = "checkpoint-";
 
 void fsync_directory(const std::string& dir) {
@@ -66,6 +66,8 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
   j["observers"] = cp.observers;
   j["rhs_evals"] = cp.rhs_evals;
   j["wall_seconds"] = cp.wall_seconds;
+  j["rhs_seconds"] = cp.rhs_seconds;
+  j["search_seconds"] = cp.search_seconds;
 
   const std::string name = checkpoint_name(cp.t);
   const fs::path final_dir = fs::path(directory) / name;
@@ -90,7 +92,7 @@ Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
   try {
     j = nlohmann::json::parse(in);
     if (j.at("format").get<std::string>() != kFormat)
-      throw CheckpointError(file.string() + ": unknown format '" + j["format"].get<std::string>() + "'");
+      throw CheckpointError(file.string() + ": unknown format '" + j["format"].get<std::string>() + "' (this build reads '" + kFormat + "')");
     Checkpoint cp;
     cp.case_name = j.at("case").get<std::string>();
     cp.dimension = j.at("dimension").get<int>();
@@ -105,6 +107,8 @@ Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
     cp.observers = j.at("observers");
     cp.rhs_evals = j.at("rhs_evals").get<long>();
     cp.wall_seconds = j.at("wall_seconds").get<double>();
+    cp.rhs_seconds = j.at("rhs_seconds").get<double>();
+    cp.search_seconds = j.at("search_seconds").get<double>();
     return cp;
   } catch (const CheckpointError&) {
     throw;

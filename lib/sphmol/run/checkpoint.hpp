@@ -27,6 +27,7 @@ struct Checkpoint {
   nlohmann::json observers = nlohmann::json::array();  // OutputObserver::save_state(), in order
   long rhs_evals = 0;
   double wall_seconds = 0.0;
+  double rhs_seconds = 0.0, search_seconds = 0.0;  // the parts of wall_seconds in the RHS, in the search
 };
 
 // "checkpoint-<t>" (t with 10 significant digits).

@@ -25,11 +25,11 @@
 namespace sphmol {
 namespace {
 
-void log_line(std::ostream& log, const nlohmann::json& m, long steps) {
+void log_line(std::ostream& log, const nlohmann::json& m, long steps, double wall) {
   log << "t = " << std::setw(10) << m["t"].get<double>() << " s";
   for (const auto& [key, value] : m.items())
     if (key != "t" && value.is_number()) log << "   " << key << " = " << std::scientific << std::setprecision(3) << value.get<double>() << std::defaultfloat;
-  log << "   steps = " << steps << '\n';
+  log << "   steps = " << steps << "   wall = " << std::fixed << std::setprecision(2) << wall << " s" << std::defaultfloat << '\n';
 }
 
 template <int D>
@@ -44,7 +44,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   double t = 0.0;
   nlohmann::json errors = nlohmann::json::array();
   long rhs_before = 0;
-  double wall_before = 0.0;
+  double wall_before = 0.0, rhs_before_s = 0.0, search_before_s = 0.0;
   std::optional<Checkpoint> restart;
   if (!opt.restart_from.empty()) {
     restart = read_checkpoint(opt.restart_from);
@@ -59,6 +59,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     errors = restart->errors;
     rhs_before = restart->rhs_evals;
     wall_before = restart->wall_seconds;
+    rhs_before_s = restart->rhs_seconds;
+    search_before_s = restart->search_seconds;
   }
   integrator->initialize(*sys, t, y.data());
   // Blow-up detection after every accepted step (run/health_check.hpp), and conservation diagnostics.
@@ -95,6 +97,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     for (const auto& o : observers) cp.observers.push_back(o->save_state());
     cp.rhs_evals = rhs_before + sys->rhs_evaluations();
     cp.wall_seconds = wall_now();
+    cp.rhs_seconds = rhs_before_s + sys->rhs_seconds();
+    cp.search_seconds = search_before_s + sys->search_seconds();
     write_checkpoint(out.directory, cp, to_yaml(config));
   };
 
@@ -130,7 +134,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       }
       for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
       progress.clear();
-      if (opt.log) log_line(*opt.log, m, integrator->stats().steps);
+      if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
       errors.push_back(std::move(m));
       conservation.record(*sys, y.data(), t);
       ++next_out;
@@ -177,6 +181,16 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["rhs_evals"] = rhs_before + sys->rhs_evaluations();
   j["neighbor_rebuilds"] = sys->pair_list().rebuilds();
   j["wall_seconds"] = wall;
+  {
+    // Where the wall time went: the neighbour list (staleness test, rebuilds), the rest of the RHS
+    // (particle sums, EOS, CFL limit), and everything else (set-up, integrator updates, output).
+    const double rhs_s = rhs_before_s + sys->rhs_seconds(), search_s = search_before_s + sys->search_seconds();
+    j["wall_seconds_breakdown"] = {{"neighbour_search", search_s}, {"rhs_without_search", rhs_s - search_s},
+                                   {"setup_integrator_output", wall - rhs_s}};
+    // Fused pair passes only: each thread's time on pair rows in this process (not carried over a
+    // restart, whose thread count may differ).
+    if (!sys->pair_thread_seconds().empty()) j["wall_seconds_breakdown"]["pair_rows_per_thread"] = sys->pair_thread_seconds();
+  }
   j["threads"] = omp_get_max_threads();
   j["active_terms"] = sys->active_terms();
   j["state_fields"] = sys->layout().field_names();

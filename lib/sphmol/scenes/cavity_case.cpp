@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -148,11 +149,8 @@ std::vector<PlotScript> CavityCase::plots(const OutputSink& out) const {
     return "(strcol(1) eq '" + line + "' ? " + x + " : 1/0):" + y;
   };
   std::ostringstream s;
-  s << "# Cavity centre lines vs Ghia, Ghia & Shin (1982) (sph-mol CavityCase)\n"
-    << "set terminal pngcairo size 1200,560 font ',11'\n"
-    << "set output 'centrelines.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#l'\n"  // skips the comment and the 'line,coord,sph,ghia' header
+  s << gnuplot_csv_preamble("Cavity centre lines vs Ghia, Ghia & Shin (1982) (sph-mol CavityCase)", 1200, 560, 11,
+                            "centrelines.png", 'l')  // header 'line,coord,sph,ghia'
     << "set multiplot layout 1,2 title \"Lid-driven cavity, Re = " << Re_ << ", t = " << last_t_
     << " s: lines SPH, points Ghia et al. (1982)\" noenhanced\n"
     << "set grid\nset key bottom right\n"

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -59,11 +60,8 @@ std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
   const auto files = timed_output_files(out, "profile_t");
   if (files.empty()) return {};
   std::ostringstream s;
-  s << "# SPH velocity profiles vs " << ref_.name << " (sph-mol " << "ChannelCase)\n"
-    << "set terminal pngcairo size 900,640 font ',11'\n"
-    << "set output 'profiles.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#y'\n"  // skips the comment and the 'y,u_sph,u_exact' header
+  s << gnuplot_csv_preamble("SPH velocity profiles vs " + ref_.name + " (sph-mol ChannelCase)", 900, 640, 11, "profiles.png",
+                            'y')  // header 'y,u_sph,u_exact'
     << "set title \"" << ref_.name << ": u(y) at the output times; points SPH, lines exact\" noenhanced\n"
     << "set xlabel 'u [m/s]'\nset ylabel 'y [m]'\nset key outside right top\nset grid\n"
     << "plot \\\n";

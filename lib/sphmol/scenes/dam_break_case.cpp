@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -137,11 +138,7 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
   for (const auto& p : koshizuka_oka_1996()) ref << "ko," << p.T * tscale << ',' << p.Z * a_ << '\n';
   write_file_atomically(out.path("front_reference.csv"), ref.str());
   std::ostringstream s;
-  s << "# Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)\n"
-    << "set terminal pngcairo size 900,640 font ',11'\n"
-    << "set output 'front.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#t'\n"
+  s << gnuplot_csv_preamble("Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)", 900, 640, 11, "front.png", 't')
     << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"
     << "set xlabel 't [s]'\nset ylabel 'x_{front} [m]'\nset key left top\nset grid\n"
     << "set key right bottom box opaque\n"

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/analysis/drift_monitor.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
@@ -92,11 +93,9 @@ std::vector<PlotScript> HydrostaticCase::plots(const OutputSink& out) const {
   if (files.empty()) return {};
   const auto& [t_last, file] = files.back();
   std::ostringstream s;
-  s << std::setprecision(10) << "# hydrostatic column: p vs depth (sph-mol HydrostaticCase)\n"
-    << "set terminal pngcairo size 800,640 font ',11'\n"
-    << "set output 'pressure_depth.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#y'\n"  // skips the comment and the 'y,p_sph,p_exact' header
+  s << std::setprecision(10)
+    << gnuplot_csv_preamble("hydrostatic column: p vs depth (sph-mol HydrostaticCase)", 800, 640, 11, "pressure_depth.png",
+                            'y')  // header 'y,p_sph,p_exact'
     << "set title \"hydrostatic pressure at t = " << t_last << " s\"\n"
     << "set xlabel 'depth H - y [m]'\nset ylabel 'p [Pa]'\nset key top left\nset grid\n"
     << "H = " << depth_ << "\nrho0g = " << rho0_ * g_ << "\nset xrange [0:H]\n"

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -196,11 +197,8 @@ std::vector<PlotScript> ShockTubeCase<D>::plots(const OutputSink& out) const {
   if (files.empty()) return {};
   const auto& [t_last, file] = files.back();
   std::ostringstream s;
-  s << "# shock tube: mid-line particles vs the exact Riemann solution (sph-mol ShockTubeCase)\n"
-    << "set terminal pngcairo size 1100,800 font ',10'\n"
-    << "set output 'shock_tube.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#x'\n"  // skips the comment and the 'x,rho,...' header
+  s << gnuplot_csv_preamble("shock tube: mid-line particles vs the exact Riemann solution (sph-mol ShockTubeCase)", 1100,
+                            800, 10, "shock_tube.png", 'x')  // header 'x,rho,...'
     << "set grid\nset key center right\nset xlabel 'x'\n"
     << "set multiplot layout 2,2 title \"shock tube, t = " << t_last << ": points SPH (mid-line), lines exact\"\n";
   const char* names[] = {"density rho", "velocity u", "pressure p", "internal energy e"};

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/box_scene.hpp"
@@ -94,11 +95,9 @@ std::vector<PlotScript> TaylorGreenCase::plots(const OutputSink& out) const {
   if (t_.empty()) return {};
   const double b = ref_.decay_rate() / L_;
   std::ostringstream s;
-  s << std::setprecision(12) << "# Taylor-Green decay: SPH max|v| vs the exact U e^{bt} (sph-mol TaylorGreenCase)\n"
-    << "set terminal pngcairo size 900,640 font ',11'\n"
-    << "set output 'decay.png'\n"
-    << "set datafile separator ','\n"
-    << "set datafile commentschars '#t'\n"  // skips the comment and the 't,maxv_sph,maxv_exact' header
+  s << std::setprecision(12)
+    << gnuplot_csv_preamble("Taylor-Green decay: SPH max|v| vs the exact U e^{bt} (sph-mol TaylorGreenCase)", 900, 640, 11,
+                            "decay.png", 't')  // header 't,maxv_sph,maxv_exact'
     << "set title \"Taylor-Green, Re = " << ref_.Re << ": max|v| (points SPH, line exact U e^{bt}, b = " << b
     << " 1/s)\" noenhanced\n"
     << "set xlabel 't [s]'\nset ylabel 'max |v| [m/s]'\nset logscale y\nset grid\nset key top right\n"
