@@ -149,6 +149,29 @@ TEST_CASE("Tait EOS sets the local sound speed c0 (rho/rho0)^((gamma-1)/2)", "[p
   }
 }
 
+TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow; other exponents use pow", "[physics][dam_break]") {
+  for (unsigned n : {1u, 2u, 3u, 7u, 8u, 15u, 64u})
+    for (double x : {0.5, 0.97, 1.0, 1.0123, 1.3, 2.0}) {
+      INFO("x = " << x << ", n = " << n);
+      CHECK(TaitEos<2>::power(x, n) == Approx(std::pow(x, static_cast<double>(n))).epsilon(1e-14));
+    }
+  // gamma = 7 (squaring) and gamma = 7.5 (pow) against p = B((rho/rho0)^gamma - 1) from TaitLaw.
+  for (double gamma : {7.0, 7.5}) {
+    Workspace<2> w;
+    w.n = 4;
+    w.rho = {1000.0, 1010.0, 990.0, 1234.5};
+    w.p.assign(4, 0.0);
+    w.c.assign(4, 0.0);
+    TaitEos<2>(88.6, 1000.0, gamma).apply(w);
+    const TaitLaw law(88.6, 1000.0, gamma);
+    for (std::size_t i = 0; i < 4; ++i) {
+      INFO("gamma = " << gamma << ", rho = " << w.rho[i]);
+      CHECK(w.p[i] == Approx(law.pressure(w.rho[i])).epsilon(1e-13).margin(1e-9));
+      CHECK(w.c[i] == Approx(88.6 * std::pow(w.rho[i] / 1000.0, 0.5 * (gamma - 1.0))).epsilon(1e-13));
+    }
+  }
+}
+
 TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the anchor's counts", "[dam_break]") {
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                {"discretization.spacing=0.05"});
