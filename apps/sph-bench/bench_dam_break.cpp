@@ -104,17 +104,19 @@ void DamBreakRun(benchmark::State& state) {
     state.counters["2vs1" + tag] = us(wall[half][0], steps[half][0]) / us(wall[half][1], steps[half][1]);
   }
   // The same ratio for the neighbour search, the rest of the RHS, and the rest of the step.
+  // Per step: the last block may be short, so the two thread counts need not have run equally many.
   const double w1 = wall[0][0] + wall[1][0], w2 = wall[0][1] + wall[1][1];
-  state.counters["2vs1_search"] = search[0] / search[1];
-  state.counters["2vs1_rhs_without_search"] = (rhs[0] - search[0]) / (rhs[1] - search[1]);
-  state.counters["2vs1_outside_rhs"] = (w1 - rhs[0]) / (w2 - rhs[1]);
+  const double per = static_cast<double>(steps[0][1] + steps[1][1]) / static_cast<double>(steps[0][0] + steps[1][0]);
+  state.counters["2vs1_search"] = per * search[0] / search[1];
+  state.counters["2vs1_rhs_without_search"] = per * (rhs[0] - search[0]) / (rhs[1] - search[1]);
+  state.counters["2vs1_outside_rhs"] = per * (w1 - rhs[0]) / (w2 - rhs[1]);
   state.counters["share_outside_rhs_2threads"] = (w2 - rhs[1]) / w2;
   state.counters["share_search_2threads"] = search[1] / w2;
   // Fused pair rows on 2 threads: imbalance = the busier thread over the mean; slowdown = the two
   // threads' summed row time over the 1-thread row time (1 when a thread runs as fast beside the other
   // as alone). 2vs1 of the rows = 2 / (imbalance x slowdown).
   state.counters["rows_imbalance"] = std::max(rows_2[0], rows_2[1]) / (0.5 * (rows_2[0] + rows_2[1]));
-  state.counters["rows_slowdown"] = (rows_2[0] + rows_2[1]) / rows_1;
+  state.counters["rows_slowdown"] = (rows_2[0] + rows_2[1]) / rows_1 / per;
   state.counters["particles"] = particles;
 }
 BENCHMARK(DamBreakRun)->Args({20, 1000})->Args({20, 100})->ArgNames({"block", "t_end_ms"})->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);

@@ -10,12 +10,12 @@
 #include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/kernels/wendland_c2.hpp"
-#include "sphmol/neighbors/all_pairs_search.hpp"
 #include "sphmol/physics/density_diffusion.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
-#include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/run/case_registry.hpp"
+
+#include "workspace_pairs.hpp"
 
 using namespace sphmol;
 
@@ -68,16 +68,7 @@ struct Patch {
     w.drhodt = drho.data();
     w.drhodt_wall = drho_wall.data();
   }
-  void pairs() {
-    SearchInput<2> in;
-    for (int d = 0; d < 2; ++d) in.x[d] = w.x[d].data();
-    in.kind = P.kind.data();
-    in.n = w.n;
-    in.domain = &dom;
-    in.radius = 2.0 * h;
-    AllPairsSearch<2>().build(in, verlet);
-    KernelPassFor<2, WendlandC2Kernel<2>>().apply(verlet, w);
-  }
+  void pairs() { build_workspace_pairs<2, WendlandC2Kernel<2>>(w, P, dom, 2.0 * h, verlet); }
 };
 }  // namespace
 

@@ -7,7 +7,6 @@
 
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/kernels/cubic_spline.hpp"
-#include "sphmol/neighbors/all_pairs_search.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/eos_linear.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
@@ -17,8 +16,9 @@
 #include "sphmol/physics/summation_density.hpp"
 #include "sphmol/physics/transport_velocity.hpp"
 #include "sphmol/physics/xsph.hpp"
-#include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
+
+#include "workspace_pairs.hpp"
 
 using namespace sphmol;
 
@@ -69,14 +69,8 @@ struct Fixture {
     for (auto& s : w.strain) s.assign(w.n, 0.0);
   }
   void pairs() {
-    SearchInput<2> in;
-    for (int d = 0; d < 2; ++d) in.x[d] = w.x[d].data();
-    in.kind = P.kind.data();
-    in.n = w.n;
-    in.domain = &dom;
-    in.radius = 2.0 * h * 1.2;  // with a skin: the kernel pass must drop the extra pairs
-    AllPairsSearch<2>().build(in, verlet);
-    KernelPassFor<2, CubicSpline<2>>().apply(verlet, w);
+    // With a skin: the kernel pass must drop the extra pairs.
+    build_workspace_pairs<2, CubicSpline<2>>(w, P, dom, 2.0 * h * 1.2, verlet);
   }
   std::size_t centre() const {  // fluid particle nearest the middle of the lattice
     std::size_t best = 0;
