@@ -127,7 +127,7 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         // A row holds at most m entries (room for them per row, not per cell: one crowded cell
         // could otherwise ask for m^2).
         if (local.size() < used + m) local.resize(std::max(local.size() + local.size() / 4, used + m));
-        // detail::is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
+        // pd.is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
         std::uint32_t* const row = local.data() + used;
         std::size_t len = 0;
         for (std::size_t k = 0; k < m; ++k) {

@@ -73,12 +73,13 @@ void KdTreeSearch<D>::build(const SearchInput<D>& in, PairList& out) {
   // The tree query is slightly inflated; the shared predicate then decides, so that every search
   // gives exactly the same pair set.
   const double query_radius = in.radius * (1.0 + 1e-9);
+  const detail::PairDistance<D> pd(in);
   for (std::size_t i = 0; i < in.n; ++i) {
     found.clear();
     row.clear();
     tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits<D>>(pts[i], query_radius, 0.0));
     for (const auto& p : found)
-      if (detail::is_pair(in, i, p.index)) row.push_back(p.index);
+      if (pd.is_pair(in, i, p.index)) row.push_back(p.index);
     std::sort(row.begin(), row.end());
     row.erase(std::unique(row.begin(), row.end()), row.end());
     out.j.insert(out.j.end(), row.begin(), row.end());

@@ -35,8 +35,11 @@ template <int D>
 std::unique_ptr<NeighborSearch<D>> make_neighbor_search(std::string_view name);
 
 namespace detail {
-// Shared pair predicate of every search, so all of them give identical pair sets. The distance test
-// takes the box constants once (PairDistance), so a search may apply it to coordinates it has
+// Pairs of two boundary particles are never listed.
+inline bool listable(Kind a, Kind b) { return a == Kind::Fluid || b == Kind::Fluid; }
+
+// Shared pair predicate of every search, so all of them give identical pair sets. It takes the box
+// constants once per build, and the distance test (within) also applies to coordinates a search has
 // copied; the arithmetic is Domain::min_image's.
 template <int D>
 struct PairDistance {
@@ -57,19 +60,14 @@ struct PairDistance {
     }
     return r2 < radius2;
   }
+  // Particles i and j of `in` (the input this predicate was made from) form a listed pair.
+  bool is_pair(const SearchInput<D>& in, std::size_t i, std::size_t j) const {
+    if (i == j || !listable(in.kind[i], in.kind[j])) return false;
+    std::array<double, D> dx;
+    for (int d = 0; d < D; ++d) dx[d] = in.x[d][i] - in.x[d][j];
+    return within(dx);
+  }
 };
-
-// Pairs of two boundary particles are never listed.
-inline bool listable(Kind a, Kind b) { return a == Kind::Fluid || b == Kind::Fluid; }
-
-template <int D>
-inline bool is_pair(const SearchInput<D>& in, std::size_t i, std::size_t j) {
-  if (i == j) return false;
-  if (!listable(in.kind[i], in.kind[j])) return false;
-  std::array<double, D> dx;
-  for (int d = 0; d < D; ++d) dx[d] = in.x[d][i] - in.x[d][j];
-  return PairDistance<D>(in).within(dx);
-}
 }  // namespace detail
 
 }  // namespace sphmol

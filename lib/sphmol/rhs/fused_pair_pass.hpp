@@ -39,11 +39,11 @@ class FusedPairPass final : public Term<D> {
     std::size_t wall_hi = nf;  // wall rows run up to the furthest any term needs
     for (const auto* t : walls_) wall_hi = std::max(wall_hi, row_range(t->rows(), w).second);
     buffers_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+    if (w.pair_thread_seconds.size() < buffers_.size()) w.pair_thread_seconds.resize(buffers_.size(), 0.0);
     // Rows are handed out in chunks as threads free up: rows differ in cost (a particle deep in the
     // fluid or by a wall has more neighbours than one at the free surface, and the lattice order puts
     // them in one block), and a static split left one thread 20 % more pair work in the dam break.
     // Each row is still written by one thread, so results do not depend on the schedule.
-    if (w.pair_thread_seconds.size() < buffers_.size()) w.pair_thread_seconds.resize(buffers_.size(), 0.0);
 #pragma omp parallel
     {
       const int thread = omp_get_thread_num();
