@@ -1,43 +1,55 @@
 // sph-bench, end to end: the dam break of issue 6 (verification/dam_break.yaml: 20,000 fluid + 1,002
 // wall particles, Wendland C2, h = 1.414 dp, continuity + delta-SPH, artificial viscosity, dynamic
-// walls), leapfrog with one RHS evaluation per step. One benchmark iteration is one time step;
-// "us/particle-step" = wall time / (steps x all particles), the number the issue holds against
-// DualSPHysics (0.67 us on 1 thread, 0.37 on 2).
-//   sph-bench --benchmark_filter=DamBreak
+// walls), leapfrog with one RHS evaluation per step. "us/particle-step" = wall time / (steps x all
+// particles), the number the issue holds against DualSPHysics (0.67 us on 1 thread, 0.37 on 2).
+//   sph-bench --benchmark_filter=DamBreakStep   single steps on 1 and 2 threads
+//   sph-bench --benchmark_filter=DamBreakRun    whole runs, 1 and 2 threads alternating
 // On a shared machine set OMP_WAIT_POLICY=passive: spinning at barriers while the partner thread is
 // descheduled made 2 threads 4x slower than 1 at load ~10 on 2 cores (1.37x faster with passive).
-// Argument: threads. The column first collapses for 200 steps (leaving the state at rest would
-// understate the neighbour-list rebuilds).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/run/case_registry.hpp"
 #include "sphmol/time/integrator.hpp"
 
 namespace {
 
+// The dam break of `config`, built and started at t = 0 with its integrator.
+struct DamBreak {
+  std::unique_ptr<sphmol::SphSystem<2>> sys;
+  std::vector<double> y;  // the state the integrator advances in place (declared first: outlives it)
+  std::unique_ptr<sphmol::Integrator> integrator;
+  explicit DamBreak(const sphmol::Config& config)
+      : sys(sphmol::case_registry().at(config.case_name).d2()->build(config)),
+        y(sys->initial_state()),
+        integrator(sphmol::make_integrator(config.time)) {
+    integrator->initialize(*sys, 0.0, y.data());
+  }
+};
+
+std::string dam_break_yaml() { return std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml"; }
+
+// One benchmark iteration is one time step. Argument: threads. The column first collapses for 200
+// steps (leaving the state at rest would understate the neighbour-list rebuilds).
 void DamBreakStep(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   omp_set_num_threads(threads);
-  const auto config = sphmol::load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml");
-  auto c = sphmol::case_registry().at(config.case_name).d2();
-  auto sys = c->build(config);
-  std::vector<double> y = sys->initial_state();
-  auto integrator = sphmol::make_integrator(config.time);
-  integrator->initialize(*sys, 0.0, y.data());
+  DamBreak run(sphmol::load_config(dam_break_yaml()));
   const double never = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 200; ++k) integrator->step_toward(never);
+  for (int k = 0; k < 200; ++k) run.integrator->step_toward(never);
   for (auto _ : state) {
-    integrator->step_toward(never);
-    benchmark::DoNotOptimize(y.data());
+    run.integrator->step_toward(never);
+    benchmark::DoNotOptimize(run.y.data());
   }
-  const double particles = static_cast<double>(sys->particles().size());
+  const double particles = static_cast<double>(run.sys->particles().size());
   state.counters["us/particle-step"] = benchmark::Counter(
       particles * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["particles"] = particles;
@@ -46,18 +58,18 @@ void DamBreakStep(benchmark::State& state) {
 BENCHMARK(DamBreakStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 
 // The run of dam_break.yaml from t = 0 to t_end_ms / 1000 s (1000: the whole run) once, in blocks
-// of `block` steps that alternate between 1 and 2 threads. Results do not depend on the thread count (tests/integration/
-// test_determinism.cpp), so this is the shipped run; and since both thread counts sample every phase
-// of it within a few hundred milliseconds of each other, the 2-vs-1 ratio is free of the slow drift
-// in machine speed that made separate 1- and 2-thread runs on this VM scatter by 30 %.
+// of `block` steps that alternate between 1 and 2 threads. Results do not depend on the thread count
+// (tests/integration/test_determinism.cpp), so this is the shipped run; and since both thread counts
+// sample every phase of it within a few hundred milliseconds of each other, the 2-vs-1 ratio is free
+// of the slow drift in machine speed that made separate 1- and 2-thread runs on this VM scatter by
+// 30 %.
 // Counters: us/particle-step on each thread count and their ratio, over the whole run and over
 // t < t_end / 2 and t >= t_end / 2 apart; the ratio for the search, the rest of the RHS and the rest
 // of the step; and how the fused pair rows split between the two threads.
 void DamBreakRun(benchmark::State& state) {
   const long block = state.range(0);
   const double t_end = 1e-3 * static_cast<double>(state.range(1));
-  const auto config = sphmol::load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
-                                          {"time.t_end=" + std::to_string(t_end)});
+  const auto config = sphmol::load_config(dam_break_yaml(), {"time.t_end=" + std::to_string(t_end)});
   std::array<std::array<double, 2>, 2> wall{};   // [half][threads - 1]
   std::array<std::array<long, 2>, 2> steps{};
   std::array<double, 2> rhs{}, search{};  // [threads - 1]: the parts of the wall time in the RHS, in the search
@@ -65,11 +77,9 @@ void DamBreakRun(benchmark::State& state) {
   std::array<double, 2> rows_2{};         // 2 threads: each thread's seconds on them
   double particles = 0.0;
   for (auto _ : state) {
-    auto c = sphmol::case_registry().at(config.case_name).d2();
-    auto sys = c->build(config);
-    std::vector<double> y = sys->initial_state();
-    auto integrator = sphmol::make_integrator(config.time);
-    integrator->initialize(*sys, 0.0, y.data());
+    DamBreak run(config);
+    auto& sys = run.sys;
+    auto& integrator = run.integrator;
     particles = static_cast<double>(sys->particles().size());
     double t = 0.0;
     for (long k = 0; t < t_end; ++k) {
@@ -91,7 +101,7 @@ void DamBreakRun(benchmark::State& state) {
       search[threads - 1] += sys->search_seconds() - search0;
       steps[half][threads - 1] += n;
     }
-    benchmark::DoNotOptimize(y.data());
+    benchmark::DoNotOptimize(run.y.data());
   }
   omp_set_num_threads(1);
   const auto us = [&](double w, long s) { return s > 0 ? 1e6 * w / (static_cast<double>(s) * particles) : 0.0; };
