@@ -98,12 +98,16 @@ TEST_CASE("fused pair passes: the dam break runs as one pass, and 'fused' is ref
         std::vector<std::string>{"continuity_density+density_diffusion_molteni_colagrossi+pressure_gradient_117+"
                                  "artificial_viscosity",
                                  "dynamic_wall_density"});
+  // Both terms add nothing for a skin pair (W = F = 0): the rows keep them and skip the compaction.
+  // The derivatives equal the stored (compacted) list's bit for bit (first test case).
+  CHECK(dam->pair_passes_keep_skin_pairs() == std::vector<bool>{true});
   // Without combining, the four terms run one after the other in the same pass.
   auto apart = build(load_config(dir + "dam_break.yaml", {"discretization.spacing=0.04", "discretization.combine_terms=false"}));
   REQUIRE(apart->pair_passes().size() == 1);
   CHECK(apart->pair_passes()[0] == std::vector<std::string>{"continuity_density", "dynamic_wall_density",
                                                             "density_diffusion_molteni_colagrossi",
                                                             "pressure_gradient_117", "artificial_viscosity"});
+  CHECK(apart->pair_passes_keep_skin_pairs() == std::vector<bool>{false});
   // The hydrostatic tank's extrapolated wall pressure sums over the stored list: auto falls back to it,
   // and asking for fused passes is an error that names the term.
   auto tank = build(load_config(dir + "hydrostatic.yaml", {}));

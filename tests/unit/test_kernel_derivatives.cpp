@@ -55,6 +55,26 @@ TEMPLATE_LIST_TEST_CASE("compact support: W = dW/dr = 0 at and beyond support*h"
   }
 }
 
+TEMPLATE_LIST_TEST_CASE("the kernel pass's W(q) and (dW/dr)/r are exactly 0 at and beyond the support",
+                        "[kernel]", AllKernels) {
+  // A fused pass whose terms take the skin pairs of the Verlet list (PairTerm::zero_beyond_support)
+  // relies on this to leave every sum unchanged bit for bit (rhs/kernel_pass.hpp).
+  using K = TestType;
+  if constexpr (K::available) {
+    INFO(K::name << " in " << K::dimension << "D");
+    for (double f : {1.0, 1.0 + 1e-12, 1.01, 1.15, 1.5, 2.0}) {
+      double w = -1.0, F = -1.0;
+      sphmol::kernel_unit_over_r<K>(f * K::support, w, F);
+      INFO("q = " << f * K::support);
+      CHECK(w == 0.0);
+      CHECK(F == 0.0);
+    }
+    double w = 0.0, F = 0.0;
+    sphmol::kernel_unit_over_r<K>(0.5 * K::support, w, F);
+    CHECK(w != 0.0);
+  }
+}
+
 TEMPLATE_LIST_TEST_CASE("W >= 0 wherever the source says so", "[kernel]", AllKernels) {
   using K = TestType;
   if constexpr (K::available) {

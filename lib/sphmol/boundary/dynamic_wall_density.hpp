@@ -21,6 +21,7 @@ class DynamicWallDensity final : public PairTermFor<D, DynamicWallDensity<D>> {
   explicit DynamicWallDensity(double floor) : floor_(floor) {}
   std::string_view name() const override { return "dynamic_wall_density"; }
   PairRows rows() const override { return PairRows::dynamic_walls; }
+  bool zero_beyond_support() const override { return true; }  // m_j v_aj . x_aj F_aj
   void row_impl(Workspace<D>& w, std::size_t a, const PairRow<D>& r) const {
     const double s = continuity_rate(w, a, r);
     // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.

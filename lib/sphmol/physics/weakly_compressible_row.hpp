@@ -27,6 +27,8 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     return WithDiffusion ? "continuity_density+density_diffusion_molteni_colagrossi+pressure_gradient_117+artificial_viscosity"
                          : "continuity_density+pressure_gradient_117+artificial_viscosity";
   }
+  // Every contribution carries a factor F (Pi_ij's denominator is positive), so skin pairs add zeros.
+  bool zero_beyond_support() const override { return true; }
   void prepare(Workspace<D>& w) const override {
     q_.resize(w.n);
     if constexpr (WithDiffusion) vol_.resize(w.n);

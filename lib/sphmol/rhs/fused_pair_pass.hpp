@@ -5,7 +5,9 @@
 // the active-pair list (about 44 bytes per pair in 2D) is never stored: memory and memory traffic
 // drop, and the kernel is still evaluated once per pair per pass. Terms whose output a later term
 // reads at neighbouring particles end a pass (rhs/pair_pass_plan.hpp). Results equal those of the
-// stored list bit for bit: the same pairs, in the same order, with the same arithmetic.
+// stored list bit for bit: the same pairs, in the same order, with the same arithmetic. Where every
+// term of the pass adds nothing for a pair beyond the support, the rows also keep the Verlet list's
+// skin pairs (W = F = 0) and the kernel pass skips compacting them away; the sums are unchanged.
 #include <memory>
 #include <omp.h>
 #include <string>
@@ -26,8 +28,14 @@ class FusedPairPass final : public Term<D> {
       if (t->rows() != PairRows::fluid) walls_.push_back(t.get());
       if (!name_.empty()) name_ += '+';
       name_ += t->name();
+      compact_fluid_ = compact_fluid_ || (t->rows() != PairRows::dynamic_walls && !t->zero_beyond_support());
+      compact_walls_ = compact_walls_ || (t->rows() != PairRows::fluid && !t->zero_beyond_support());
     }
   }
+  // Whether fluid rows / wall rows are compacted to the active pairs (false: every term of those rows
+  // takes the skin pairs, PairTerm::zero_beyond_support).
+  bool compacts_fluid_rows() const { return compact_fluid_; }
+  bool compacts_wall_rows() const { return compact_walls_; }
   std::string_view name() const override { return name_; }
   const std::vector<std::unique_ptr<PairTerm<D>>>& terms() const { return terms_; }
 
@@ -52,13 +60,13 @@ class FusedPairPass final : public Term<D> {
       // No barrier between fluid and wall rows: a row's terms read no other row's output (one pass).
 #pragma omp for schedule(dynamic, 64) nowait
       for (std::size_t i = 0; i < nf; ++i) {
-        const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf));
+        const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_fluid_));
         for (const auto* t : fluid_) t->row(w, i, row);
       }
       if (wall_hi > nf) {
 #pragma omp for schedule(dynamic, 64) nowait
         for (std::size_t i = nf; i < wall_hi; ++i) {
-          const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf));
+          const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_walls_));
           for (const auto* t : walls_)
             if (i < row_range(t->rows(), w).second) t->row(w, i, row);
         }
@@ -72,6 +80,7 @@ class FusedPairPass final : public Term<D> {
   std::vector<std::unique_ptr<PairTerm<D>>> terms_;
   std::vector<const PairTerm<D>*> fluid_, walls_;  // the terms with fluid rows, with wall rows
   std::string name_;
+  bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
 };
 

@@ -3,6 +3,7 @@
 // F_ij = (dW/dr)/r for each, once per RHS evaluation: for the whole list at once (stored pairs) or one
 // row at a time (fused passes, rhs/fused_pair_pass.hpp). The only place a kernel is evaluated in the
 // RHS, instantiated per kernel type.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string_view>
@@ -24,8 +25,11 @@ class KernelPass {
   virtual void prepare(const Workspace<D>& w) = 0;
   // The whole active list into w.pairs (and dx, W, F, vfac): prepares itself.
   virtual void apply(const PairList& verlet, Workspace<D>& w) = 0;
-  // Row i only, into a per-thread buffer; returns the number of active pairs. Thread-safe after prepare.
-  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out) const = 0;
+  // Row i only, into a per-thread buffer; returns the number of pairs in it. Thread-safe after prepare.
+  // With compact = false the row keeps every Verlet pair, skin pairs with W = F = 0 included (for
+  // terms that add nothing for them, PairTerm::zero_beyond_support; every kernel is exactly zero
+  // beyond its support, tested), and the compaction stage is skipped.
+  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact = true) const = 0;
   // Number of active pairs in the Verlet list at the workspace's positions (prepares itself).
   virtual std::size_t count_active(const PairList& verlet, const Workspace<D>& w) = 0;
 };
@@ -101,11 +105,11 @@ class KernelPassRows : public KernelPass<D> {
     return total;
   }
 
-  std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out) const final {
+  std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact = true) const final {
     const std::uint32_t q0 = verlet.offset[i], n = verlet.offset[i + 1] - q0;
     out.reserve(n);
-    return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out)
-                              : staged<false>(verlet.j.data() + q0, n, i, out);
+    return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, compact)
+                              : staged<false>(verlet.j.data() + q0, n, i, out, compact);
   }
 
  protected:
@@ -115,9 +119,10 @@ class KernelPassRows : public KernelPass<D> {
   // One row in three stages: (A) the separations of all its Verlet pairs (gathers of x_j), (B) the
   // kernel for all of them over contiguous arrays, with no branch and no gather, which the compiler
   // vectorises for a branch-free kernel (a pair beyond the support costs an evaluation, not a
-  // misprediction), (C) the active pairs moved to the front in place (slot k <= q).
+  // misprediction), (C) the active pairs moved to the front in place (slot k <= q), unless the row's
+  // terms take the skin pairs with their zero W and F (compact = false: about a third of the pass).
   template <bool Periodic>
-  std::uint32_t staged(const std::uint32_t* vj, std::uint32_t n, std::size_t i, RowBuffer<D>& b) const {
+  std::uint32_t staged(const std::uint32_t* vj, std::uint32_t n, std::size_t i, RowBuffer<D>& b, bool compact) const {
     const auto* self = static_cast<const Derived*>(this);
     std::uint32_t* __restrict pj = b.j.data();
     double* __restrict pr2 = b.r2.data();
@@ -134,6 +139,10 @@ class KernelPassRows : public KernelPass<D> {
       for (int d = 0; d < D; ++d) pdx[d][q] = dx[d];
     }
     for (std::uint32_t q = 0; q < n; ++q) self->eval(i, pj[q], pr2[q], pW[q], pF[q]);
+    if (!compact) {
+      std::fill(pv, pv + n, 1.0);
+      return n;
+    }
     std::uint32_t k = 0;
     for (std::uint32_t q = 0; q < n; ++q) {
       const bool on = self->active(i, pj[q], pr2[q]);

@@ -33,6 +33,11 @@ class PairTerm : public Term<D> {
   // True when a later term reads this term's output at neighbouring particles (summation density's
   // rho_j, the transport-velocity shift du_j): a fused pass must end after this term.
   virtual bool feeds_neighbours() const { return false; }
+  // True when every per-pair contribution of the term is exactly zero for W = F = 0, as for a pair
+  // beyond the kernel support: a fused pass whose terms all say so hands them every Verlet pair of the
+  // row, skin pairs included, and skips compacting the row to the active pairs (rhs/kernel_pass.hpp).
+  // Sums are unchanged bit for bit: adding a zero to a sum that starts at +0 changes nothing.
+  virtual bool zero_beyond_support() const { return false; }
   // Once per evaluation, before any row (sizing per-particle scratch).
   virtual void prepare(Workspace<D>&) const {}
   virtual void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const = 0;

@@ -124,6 +124,15 @@ void SphSystem<D>::fuse_pair_passes() {
 }
 
 template <int D>
+std::vector<bool> SphSystem<D>::pair_passes_keep_skin_pairs() const {
+  std::vector<bool> keep;
+  for (const auto& t : terms_)
+    if (const auto* f = dynamic_cast<const FusedPairPass<D>*>(t.get()))
+      keep.push_back(!f->compacts_fluid_rows() && !f->compacts_wall_rows());
+  return keep;
+}
+
+template <int D>
 std::vector<std::vector<std::string>> SphSystem<D>::pair_passes() const {
   std::vector<std::vector<std::string>> passes;
   for (const auto& t : terms_)

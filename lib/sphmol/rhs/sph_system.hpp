@@ -69,6 +69,9 @@ class SphSystem final : public OdeSystem {
   void fuse_pair_passes();
   // The term names of each fused pass, in order; empty with the stored list.
   std::vector<std::vector<std::string>> pair_passes() const;
+  // Per fused pass: true when its rows keep the skin pairs instead of being compacted to the active
+  // pairs (every term of the pass adds nothing for W = F = 0, PairTerm::zero_beyond_support).
+  std::vector<bool> pair_passes_keep_skin_pairs() const;
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
   // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.
   std::size_t base_particles() const { return n_base_; }
