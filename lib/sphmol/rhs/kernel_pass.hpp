@@ -29,7 +29,7 @@ class KernelPass {
   // With compact = false the row keeps every Verlet pair, skin pairs with W = F = 0 included (for
   // terms that add nothing for them, PairTerm::zero_beyond_support; every kernel is exactly zero
   // beyond its support, tested), and the compaction stage is skipped.
-  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact = true) const = 0;
+  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact) const = 0;
   // Number of active pairs in the Verlet list at the workspace's positions (prepares itself).
   virtual std::size_t count_active(const PairList& verlet, const Workspace<D>& w) = 0;
 };
@@ -105,7 +105,7 @@ class KernelPassRows : public KernelPass<D> {
     return total;
   }
 
-  std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact = true) const final {
+  std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact) const final {
     const std::uint32_t q0 = verlet.offset[i], n = verlet.offset[i + 1] - q0;
     out.reserve(n);
     return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, compact)
