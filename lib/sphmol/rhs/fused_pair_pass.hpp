@@ -8,6 +8,7 @@
 // stored list bit for bit: the same pairs, in the same order, with the same arithmetic. Where every
 // term of the pass adds nothing for a pair beyond the support, the rows also keep the Verlet list's
 // skin pairs (W = F = 0) and the kernel pass skips compacting them away; the sums are unchanged.
+#include <algorithm>
 #include <memory>
 #include <omp.h>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/pair_term.hpp"
+#include "sphmol/rhs/row_schedule.hpp"
 
 namespace sphmol {
 
@@ -46,31 +48,35 @@ class FusedPairPass final : public Term<D> {
     const std::size_t nf = w.n_fluid;
     std::size_t wall_hi = nf;  // wall rows run up to the furthest any term needs
     for (const auto* t : walls_) wall_hi = std::max(wall_hi, row_range(t->rows(), w).second);
-    buffers_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-    if (w.pair_thread_seconds.size() < buffers_.size()) w.pair_thread_seconds.resize(buffers_.size(), 0.0);
-    // Rows are handed out in chunks as threads free up: rows differ in cost (a particle deep in the
-    // fluid or by a wall has more neighbours than one at the free surface, and the lattice order puts
-    // them in one block), and a static split left one thread 20 % more pair work in the dam break.
-    // Each row is still written by one thread, so results do not depend on the schedule.
+    const int threads = omp_get_max_threads();
+    const auto T = static_cast<std::size_t>(threads);
+    buffers_.resize(T);
+    if (w.pair_thread_seconds.size() < T) w.pair_thread_seconds.resize(T, 0.0);
+    // Rows shared by cost in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
+    schedule_.reset(threads, 2);
+    schedule_.place(0, verlet.offset.data(), 0, nf);
+    schedule_.place(1, verlet.offset.data(), nf, wall_hi);
 #pragma omp parallel
     {
       const int thread = omp_get_thread_num();
       const double start = omp_get_wtime();
       RowBuffer<D>& buf = buffers_[static_cast<std::size_t>(thread)];
-      // No barrier between fluid and wall rows: a row's terms read no other row's output (one pass).
-#pragma omp for schedule(dynamic, 64) nowait
-      for (std::size_t i = 0; i < nf; ++i) {
-        const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_fluid_));
-        for (const auto* t : fluid_) t->row(w, i, row);
-      }
-      if (wall_hi > nf) {
-#pragma omp for schedule(dynamic, 64) nowait
-        for (std::size_t i = nf; i < wall_hi; ++i) {
-          const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_walls_));
-          for (const auto* t : walls_)
-            if (i < row_range(t->rows(), w).second) t->row(w, i, row);
+      // No barrier between fluid rows (set 0) and wall rows (set 1): a row's terms read no other
+      // row's output (one pass).
+      schedule_.run(thread, [&](int set, std::size_t i0, std::size_t i1) {
+        if (set == 0) {
+          for (std::size_t i = i0; i < i1; ++i) {
+            const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_fluid_));
+            for (const auto* t : fluid_) t->row(w, i, row);
+          }
+        } else {
+          for (std::size_t i = i0; i < i1; ++i) {
+            const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_walls_));
+            for (const auto* t : walls_)
+              if (i < row_range(t->rows(), w).second) t->row(w, i, row);
+          }
         }
-      }
+      });
       w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
     }
   }
@@ -82,6 +88,7 @@ class FusedPairPass final : public Term<D> {
   std::string name_;
   bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
+  mutable RowSchedule schedule_;
 };
 
 }  // namespace sphmol

@@ -4,9 +4,11 @@
 // for a row and hands the row to every term of the pass in turn (rhs/fused_pair_pass.hpp).
 // Derived classes implement row_impl(w, i, row) and inherit both entry points through PairTermFor
 // (CRTP), so the stored loop calls row_impl directly, with no virtual call per row.
+#include <omp.h>
 #include <utility>
 
 #include "sphmol/rhs/pair_row.hpp"
+#include "sphmol/rhs/row_schedule.hpp"
 #include "sphmol/rhs/term.hpp"
 
 namespace sphmol {
@@ -54,10 +56,17 @@ class PairTermFor : public PairTerm<D> {
     const auto range = row_range(this->rows(), w);
     const std::size_t lo = range.first, hi = range.second;
     const auto* self = static_cast<const Derived*>(this);
-    // Chunks handed out as threads free up: rows differ in cost (rhs/fused_pair_pass.hpp).
-#pragma omp parallel for schedule(dynamic, 64)
-    for (std::size_t i = lo; i < hi; ++i) self->row_impl(w, i, stored_row(w, i));
+    // Rows shared by their active pairs in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
+    schedule_.reset(omp_get_max_threads(), 1);
+    schedule_.place(0, w.pairs.offset.data(), lo, hi);
+#pragma omp parallel
+    schedule_.run(omp_get_thread_num(), [&](int, std::size_t i0, std::size_t i1) {
+      for (std::size_t i = i0; i < i1; ++i) self->row_impl(w, i, stored_row(w, i));
+    });
   }
+
+ private:
+  mutable RowSchedule schedule_;
 };
 
 }  // namespace sphmol

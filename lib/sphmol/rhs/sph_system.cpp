@@ -239,13 +239,23 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (const auto& term : terms_) term->apply(ws_);
   if (ord && nf > 0) {
-    // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves).
+    // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves). The
+    // loop runs over the state index, so each thread writes its own contiguous part of ydot, the
+    // part the integrator's loops give it (time/particle_split.hpp); over the workspace index, the
+    // two threads' writes interleaved within cache lines once the flow had mixed the particles.
     const std::size_t nw = layout_.n_wall_density, blocks = (layout_.size() - nw) / nf;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i)
-      for (std::size_t b = 0; b < blocks; ++b) ydot[b * nf + ord[i]] = out_[b * nf + i];
+    const std::uint32_t* at = inv_.data();  // state -> workspace index
+#pragma omp parallel
+    {
+      for (std::size_t b = 0; b < blocks; ++b) {
+        double* const to = ydot + b * nf;
+        const double* const from = out_.data() + b * nf;
+#pragma omp for schedule(static) nowait
+        for (std::size_t k = 0; k < nf; ++k) to[k] = from[at[k]];
+      }
+    }
     const std::size_t wb = layout_.wall_density();
-    for (std::size_t k = 0; k < nw; ++k) ydot[wb + ord[nf + k] - nf] = out_[wb + k];
+    for (std::size_t k = 0; k < nw; ++k) ydot[wb + k] = out_[wb + at[nf + k] - nf];
   }
 
   // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does
@@ -283,12 +293,14 @@ void SphSystem<D>::set_reorder(bool on) {
   if (on && generator_) throw std::logic_error("SphSystem: reordering does not support generated particles");
   reorder_ = on;
   perm_.clear();
+  inv_.clear();
   ws_.particles = &particles_;
   ws_.order = nullptr;
   if (!on) return;
   wp_ = particles_;
   perm_.resize(n_base_);
   std::iota(perm_.begin(), perm_.end(), 0u);
+  inv_ = perm_;
   ws_.particles = &wp_;
   ws_.order = perm_.data();
 }
@@ -327,6 +339,7 @@ void SphSystem<D>::reorder_workspace() {
   both(wp_.stationary, tb);
   both(wp_.kind, tk);
   both(perm_, tu);
+  for (std::size_t i = 0; i < nb; ++i) inv_[perm_[i]] = static_cast<std::uint32_t>(i);
 }
 
 template <int D>

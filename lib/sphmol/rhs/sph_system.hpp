@@ -39,6 +39,7 @@ class SphSystem final : public OdeSystem {
   double stable_step() const override { return stable_step_; }
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
+  std::size_t block_length() const override { return layout_.n; }
   long rhs_evaluations() const override { return rhs_evals_; }
   // Wall time spent inside rhs() since construction, and the part of it that went to the neighbour
   // list (staleness test, rebuilds, reordering): the run summary splits its cost with these.
@@ -95,6 +96,9 @@ class SphSystem final : public OdeSystem {
   const std::vector<double>& sound_speed() const { return state_order(ws_.c, c_out_); }
   const std::vector<double>& energy() const { return state_order(ws_.e, e_out_); }
   const std::vector<double>& smoothing_lengths() const { return state_order(ws_.hs, hs_out_); }
+  // The density of the most recent evaluation in workspace order (fluid first, then walls and
+  // generated particles): for tests that do not depend on the order, without density()'s permutation.
+  const std::vector<double>& workspace_density() const { return ws_.rho; }
 
  private:
   void reorder_workspace();
@@ -121,7 +125,7 @@ class SphSystem final : public OdeSystem {
   // derivatives in workspace order before the scatter into ydot.
   bool reorder_ = false;
   bool stored_pairs_ = true;  // the kernel pass fills ws_.pairs each evaluation (false: fused passes)
-  std::vector<std::uint32_t> perm_;
+  std::vector<std::uint32_t> perm_, inv_;  // inv_: state index -> workspace index
   Particles<D> wp_;
   std::vector<double> out_;
   mutable std::vector<double> rho_out_, p_out_, c_out_, e_out_, hs_out_;

@@ -10,6 +10,7 @@
 
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/particle_split.hpp"
 
 namespace sphmol {
 
@@ -27,10 +28,11 @@ class HealthCheck {
     if (std::isfinite(initial_cfl_) && !(cfl >= kCollapse * initial_cfl_))
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial_cfl_) + " s to " +
                               std::to_string(cfl) + " s");
-    const long size = static_cast<long>(sys_.layout().size());
-    last_good_.resize(static_cast<std::size_t>(size));
-#pragma omp parallel for schedule(static)
-    for (long k = 0; k < size; ++k) last_good_[k] = y[k];
+    const std::size_t size = sys_.layout().size();
+    last_good_.resize(size);
+    double* const keep = last_good_.data();
+#pragma omp parallel
+    for_each_by_particle(0, size, sys_.layout().n, [&](std::size_t k) { keep[k] = y[k]; });
     last_good_t_ = t;
   }
 
@@ -44,7 +46,9 @@ class HealthCheck {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
     const long n = static_cast<long>(L.n), size = static_cast<long>(L.size()), ve = static_cast<long>(L.velocities_end());
-    const auto& rho = sys_.density();
+    // The density in workspace order: the test is the same for every particle, and density() would
+    // permute it serially after every step. Fluid entries come first in either order.
+    const auto& rho = sys_.workspace_density();
     const long nrho = std::min(n, static_cast<long>(rho.size()));
     bool bad = false;
 #pragma omp parallel reduction(|| : bad)
@@ -57,8 +61,8 @@ class HealthCheck {
         for (long i = 0; i < n; ++i)
           bad |= !std::isfinite(x[i]) || !std::isfinite(v[i]) || (bounded && (x[i] < dom.lo[d] || x[i] > dom.hi[d]));
       }
-#pragma omp for schedule(static) nowait
-      for (long k = ve; k < size; ++k) bad |= !std::isfinite(y[k]);
+      for_each_by_particle(static_cast<std::size_t>(ve), static_cast<std::size_t>(size), L.n,
+                           [&](std::size_t k) { bad |= !std::isfinite(y[k]); });
 #pragma omp for schedule(static) nowait
       for (long i = 0; i < nrho; ++i) bad |= !(rho[i] > 0.0);
     }

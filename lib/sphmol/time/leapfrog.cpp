@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/double_codec.hpp"
+#include "sphmol/time/particle_split.hpp"
 
 namespace sphmol {
 
@@ -20,34 +21,31 @@ void Leapfrog::step(double dt) {
   double* const y = y_;
   double *const ym = ymid_.data(), *const fm = fmid_.data(), *const c = c_.data();
   const double* const f = f_.data();
-  // Every update is element-wise, so the static split over threads leaves the result bit-identical
-  // for any thread count. A position and its velocity are updated in the same iteration: one pass
-  // over the state per half step instead of three.
+  const std::size_t L = sys_->block_length();
+  // Every update is element-wise, so the split over threads (by particle, time/particle_split.hpp)
+  // leaves the result bit-identical for any thread count. A position and its velocity are updated in
+  // the same iteration: one pass over the state per half step instead of three.
   // Half drift with v_n plus the latest XSPH correction; predicted half-step velocity; midpoint
   // prediction for other fields.
 #pragma omp parallel
   {
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = 0; k < nv; ++k) {
+    for_each_by_particle(0, nv, L, [&](std::size_t k) {
       ym[k] = y[k] + 0.5 * dt * (y[vb + k] + c[k]);
       ym[vb + k] = y[vb + k] + 0.5 * dt * f[vb + k];
-    }
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = ve; k < n; ++k) ym[k] = y[k] + 0.5 * dt * f[k];
+    });
+    for_each_by_particle(ve, n, L, [&](std::size_t k) { ym[k] = y[k] + 0.5 * dt * f[k]; });
   }
   sys_->rhs(t_ + 0.5 * dt, ym, fm);
   evaluated();
   // Kick, second half drift with v_{n+1}, midpoint for the rest.
 #pragma omp parallel
   {
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = 0; k < nv; ++k) {
+    for_each_by_particle(0, nv, L, [&](std::size_t k) {
       y[vb + k] += dt * fm[vb + k];
       c[k] = fm[k] - ym[vb + k];  // XSPH correction relative to the velocity it was evaluated with
       y[k] = ym[k] + 0.5 * dt * (y[vb + k] + c[k]);
-    }
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = ve; k < n; ++k) y[k] += dt * fm[k];
+    });
+    for_each_by_particle(ve, n, L, [&](std::size_t k) { y[k] += dt * fm[k]; });
   }
   f_.swap(fmid_);
 }

@@ -1,5 +1,7 @@
 #include "sphmol/time/leapfrog_kdk.hpp"
 
+#include "sphmol/time/particle_split.hpp"
+
 namespace sphmol {
 
 void LeapfrogKdk::initialized() {
@@ -13,32 +15,30 @@ void LeapfrogKdk::step(double dt) {
   double* const y = y_;
   double *const yp = ypred_.data(), *const fn = fnew_.data();
   const double* const f = f_.data();
-  // Element-wise updates split statically over threads: bit-identical for any thread count. A
-  // position and its velocity are updated in the same iteration (one pass over the state).
+  const std::size_t L = sys_->block_length();
+  // Element-wise updates split over threads by particle (time/particle_split.hpp): bit-identical for
+  // any thread count. A position and its velocity are updated in the same iteration (one pass over
+  // the state).
 #pragma omp parallel
   {
     // Drift with v_{n+1/2} plus the XSPH correction c_n = f_pos - v_n of the latest evaluation;
     // half kick; the prediction for the evaluation at t_{n+1} is one more half kick with a_n.
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = 0; k < nv; ++k) {
+    for_each_by_particle(0, nv, L, [&](std::size_t k) {
       const double c = f[k] - y[vb + k];
       const double vhalf = y[vb + k] + 0.5 * dt * f[vb + k];
       y[k] += dt * (vhalf + c);
       yp[k] = y[k];
       y[vb + k] += 0.5 * dt * f[vb + k];
       yp[vb + k] = y[vb + k] + 0.5 * dt * f[vb + k];
-    }
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = ve; k < n; ++k) yp[k] = y[k] + dt * f[k];
+    });
+    for_each_by_particle(ve, n, L, [&](std::size_t k) { yp[k] = y[k] + dt * f[k]; });
   }
   sys_->rhs(t_ + dt, yp, fn);
   evaluated();
 #pragma omp parallel
   {
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = vb; k < ve; ++k) y[k] += 0.5 * dt * fn[k];
-#pragma omp for schedule(static) nowait
-    for (std::size_t k = ve; k < n; ++k) y[k] += 0.5 * dt * (f[k] + fn[k]);
+    for_each_by_particle(vb, ve, L, [&](std::size_t k) { y[k] += 0.5 * dt * fn[k]; });
+    for_each_by_particle(ve, n, L, [&](std::size_t k) { y[k] += 0.5 * dt * (f[k] + fn[k]); });
   }
   f_.swap(fnew_);
 }

@@ -15,6 +15,11 @@ class OdeSystem {
   virtual std::size_t velocities_begin() const = 0;
   virtual std::size_t velocities_end() const = 0;
   virtual long rhs_evaluations() const = 0;
+  // Entries per particle block of y (the fluid particle count for an SPH state): element-wise loops
+  // that split each block over threads the same way as the RHS splits particles keep a particle's
+  // cache lines on one core (time/particle_split.hpp). The default, the whole position range, means
+  // no block structure.
+  virtual std::size_t block_length() const { return velocities_begin(); }
 };
 
 }  // namespace sphmol
