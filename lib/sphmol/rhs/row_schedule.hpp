@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <ranges>
 
 namespace sphmol {
 
@@ -44,14 +45,9 @@ class RowSchedule {
     for (int t = 0; t < threads_; ++t) {
       std::size_t to = hi;
       if (t + 1 < threads_) {
+        // The first row whose prefix cost reaches the target (the prefix cost rises with i).
         const double target = cost(lo) + (cost(hi) - cost(lo)) * (t + 1) / threads_;
-        std::size_t a = from, b = hi;  // the first row whose prefix cost reaches the target
-        while (a < b) {
-          const std::size_t m = a + (b - a) / 2;
-          if (cost(m) < target) a = m + 1;
-          else b = m;
-        }
-        to = a;
+        to = *std::ranges::partition_point(std::views::iota(from, hi), [&](std::size_t i) { return cost(i) < target; });
       }
       c[t].next.store(from, std::memory_order_relaxed);
       c[t].end = to;
