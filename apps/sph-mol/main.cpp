@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -69,6 +70,9 @@ int run(const std::string& config_path, const std::string& output, const std::ve
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past `ulimit -f` a write fails with EFBIG and the writer reports it; the default action would kill
+  // the run with no message and no summary.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"sph-mol: smoothed particle hydrodynamics as a method of lines"};
   app.set_version_flag("--version", sphmol::version());
   app.require_subcommand(0, 1);

@@ -1,6 +1,7 @@
 #include "sphmol/run/checkpoint.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/io/double_codec.hpp"
@@ -21,13 +23,6 @@ namespace {
 
 constexpr const char* kFormat = "sph-mol checkpoint 2";
 constexpr const char* kPrefix = "checkpoint-";
-
-void fsync_directory(const std::string& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // best effort: the rename itself is atomic
-  ::fsync(fd);
-  ::close(fd);
-}
 
 // Keeps the two checkpoints with the latest times.
 void prune(const std::string& directory) {
@@ -71,9 +66,11 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
 
   const std::string name = checkpoint_name(cp.t);
   const fs::path final_dir = fs::path(directory) / name;
-  const fs::path tmp_dir = fs::path(directory) / ("." + name + ".tmp");
-  fs::remove_all(tmp_dir);
-  fs::create_directories(tmp_dir);
+  // A fresh, uniquely named directory (mkdtemp: never an existing one or a planted link).
+  std::string templ = (fs::path(directory) / ("." + name + ".XXXXXX")).string();
+  if (!::mkdtemp(templ.data())) throw std::runtime_error("cannot create a checkpoint directory in " + directory);
+  ::chmod(templ.c_str(), 0755);
+  const fs::path tmp_dir = templ;
   write_file_atomically((tmp_dir / "config.yaml").string(), config_yaml);
   write_file_atomically((tmp_dir / "checkpoint.json").string(), j.dump() + "\n");
   fsync_directory(tmp_dir.string());
