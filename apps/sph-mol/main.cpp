@@ -13,6 +13,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/version.hpp"
 #include "sphmol/run/checkpoint.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "subcommand.hpp"
 
@@ -21,7 +22,7 @@ namespace {
 // Exit codes: 0 done, 1 run failed, 2 bad input (config, command line, checkpoint; nothing is
 // written), 3 blown up (last good state written), 128 + signal when interrupted (130 SIGINT, 143 SIGTERM; checkpoint + summary written).
 int run(const std::string& config_path, const std::string& output, const std::vector<std::string>& overrides,
-        const std::string& restart = {}, bool quiet = false) {
+        const std::string& restart = {}, bool quiet = false, bool overwrite = false) {
   sphmol::Config config;
   try {
     config = sphmol::load_config(config_path, overrides);
@@ -37,15 +38,16 @@ int run(const std::string& config_path, const std::string& output, const std::ve
     if (!quiet && ::isatty(STDERR_FILENO)) opt.progress = &std::cerr;
     opt.restart_from = restart;
     opt.handle_signals = true;
+    opt.overwrite = overwrite;
     const auto s = sphmol::run_case(config, opt);
     if (s.contains("warnings"))
       for (const auto& w : s["warnings"]) std::cerr << "sph-mol: warning: " << w.get<std::string>() << '\n';
+    const std::string dir = s.value("output_directory", output.empty() ? config.output.directory : output);
     if (const int code = sphmol::interrupted_exit_code(s)) {
       std::cerr << "sph-mol: interrupted at t = " << s["t_reached"].get<double>() << " s; summary and checkpoint in "
-                << (output.empty() ? config.output.directory : output) << "\n";
+                << dir << "\n";
       return code;
     }
-    const std::string dir = output.empty() ? config.output.directory : output;
     if (s["status"] == "blown_up") {
       std::cerr << "sph-mol: run " << s["blow_up"]["message"].get<std::string>() << "; last good state (t = "
                 << s["blow_up"]["last_good_t"].get<double>() << " s) in " << dir << "/last_good_state.csv\n";
@@ -59,6 +61,9 @@ int run(const std::string& config_path, const std::string& output, const std::ve
               << "\n  results in " << dir << "/summary.json\n";
   } catch (const sphmol::CheckpointError& e) {
     std::cerr << "sph-mol: restart error: " << e.what() << '\n';
+    return 2;
+  } catch (const sphmol::OutputFolderError& e) {
+    std::cerr << "sph-mol: " << e.what() << '\n';
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "sph-mol: run failed: " << e.what() << '\n';
@@ -80,7 +85,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides;
   int threads = 1;
   std::string restart;
-  bool quiet = false;
+  bool quiet = false, overwrite = false;
+  app.add_flag("--overwrite", overwrite,
+               "the output directory may hold another run's results: delete the files that run listed first");
   app.add_option("--restart", restart,
                  "continue from a checkpoint directory DIR/checkpoint-<t> (its config.yaml; --set still applies)");
   app.add_flag("--quiet,-q", quiet, "no progress line and no per-output log lines on stderr");
@@ -114,11 +121,11 @@ int main(int argc, char** argv) {
                 << "directory written by output.checkpoint_every or an interrupted run)\n";
       return 2;
     }
-    return run(cfg, output, overrides, restart, quiet);
+    return run(cfg, output, overrides, restart, quiet, overwrite);
   }
   if (config_path.empty()) {
     std::cerr << app.help() << "\nsph-mol: --config FILE is required to run a case\n";
     return 2;
   }
-  return run(config_path, output, overrides, {}, quiet);
+  return run(config_path, output, overrides, {}, quiet, overwrite);
 }

@@ -2,6 +2,7 @@
 // Runs a program with an argument vector (fork/exec, no shell), so tests can pass arguments that
 // hold quotes, spaces, `$(...)`, `;`, backticks, `|`, `<` or newlines exactly as a user would.
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,10 +21,10 @@ struct ProcessResult {
 
 // Runs `program args...` in `cwd` (empty: the current directory) with standard output discarded and
 // standard error captured through `err_file`. `env` entries ("NAME=value") are added to the
-// environment of the child.
+// environment of the child; `file_size_limit` (bytes) is its `ulimit -f`.
 inline ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
                                  const std::string& err_file, const std::string& cwd = {},
-                                 const std::vector<std::string>& env = {}) {
+                                 const std::vector<std::string>& env = {}, rlim_t file_size_limit = RLIM_INFINITY) {
   const pid_t pid = ::fork();
   if (pid < 0) return {};
   if (pid == 0) {
@@ -35,6 +36,10 @@ inline ProcessResult run_process(const std::string& program, const std::vector<s
     ::dup2(devnull, STDOUT_FILENO);
     ::dup2(err, STDERR_FILENO);
     for (const auto& e : env) ::putenv(const_cast<char*>(e.c_str()));
+    if (file_size_limit != RLIM_INFINITY) {
+      const rlimit lim{file_size_limit, file_size_limit};
+      ::setrlimit(RLIMIT_FSIZE, &lim);
+    }
     std::vector<char*> argv;
     argv.push_back(const_cast<char*>(program.c_str()));
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));

@@ -41,6 +41,19 @@ class SphSystem final : public OdeSystem {
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
   std::size_t block_length() const override { return layout_.n; }
   long rhs_evaluations() const override { return rhs_evals_; }
+  // The per-particle fields (density, pressure, ...) of the state (t, y), for measurements and output.
+  // The integrator's view stays as its own last evaluation left it: the evaluation count and the CFL
+  // limit are restored, so output times change neither the step sizes nor the cost reported.
+  void refresh_fields(double t, const double* y, std::vector<double>& scratch) {
+    const long evals = rhs_evals_;
+    const double step = stable_step_, seconds = rhs_seconds_, search = search_seconds_;
+    scratch.resize(size());
+    rhs(t, y, scratch.data());
+    rhs_evals_ = evals;
+    stable_step_ = step;
+    rhs_seconds_ = seconds;
+    search_seconds_ = search;
+  }
   // Wall time spent inside rhs() since construction, and the part of it that went to the neighbour
   // list (staleness test, rebuilds, reordering): the run summary splits its cost with these.
   double rhs_seconds() const { return rhs_seconds_; }

@@ -3,6 +3,7 @@
 // its reference at output times. Cases register by name (run/case_registry.hpp); the generic run
 // loop (run/run_case.cpp) integrates and calls the case and every output observer at output times.
 #include <memory>
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -12,11 +13,21 @@
 
 namespace sphmol {
 
-// Where a run writes its files; `enabled` is false for in-memory runs (tests, studies).
+// Where a run writes its files; `enabled` is false for in-memory runs (tests, studies). Every file
+// the run writes goes through write() (or is recorded with record()), so the run knows its own files:
+// the summary lists them, plots read only them, and --overwrite deletes exactly them. Copies of a sink
+// share one list.
 struct OutputSink {
   std::string directory;
   bool enabled = true;
+  std::shared_ptr<std::vector<std::string>> files = std::make_shared<std::vector<std::string>>();
   std::string path(const std::string& file) const { return directory + "/" + file; }
+  // Writes DIRECTORY/file atomically (io/atomic_file.hpp) and records it.
+  void write(const std::string& file, const std::string& content) const;
+  // Records a file or directory (a name inside DIRECTORY) written some other way.
+  void record(const std::string& file) const;
+  // Names recorded so far, in the order first written, each once.
+  const std::vector<std::string>& written() const { return *files; }
 };
 
 // One plot: `png` is the file name in the output directory; `script` is gnuplot input that reads
@@ -60,9 +71,6 @@ class OutputObserver {
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
-  // True if at_output reads the system's per-particle fields (density, pressure): the run loop then
-  // evaluates the RHS at (t, y) first, so the fields belong to the state being written.
-  virtual bool needs_fields() const { return false; }
   // Carried through checkpoints, so a restarted run continues the observer (e.g. the .pvd list).
   virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
   virtual void restore_state(const nlohmann::json& state, const OutputSink& out) {}

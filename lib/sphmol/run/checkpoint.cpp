@@ -63,6 +63,7 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
   j["wall_seconds"] = cp.wall_seconds;
   j["rhs_seconds"] = cp.rhs_seconds;
   j["search_seconds"] = cp.search_seconds;
+  j["files"] = cp.files;
 
   const std::string name = checkpoint_name(cp.t);
   const fs::path final_dir = fs::path(directory) / name;
@@ -71,8 +72,15 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
   if (!::mkdtemp(templ.data())) throw std::runtime_error("cannot create a checkpoint directory in " + directory);
   ::chmod(templ.c_str(), 0755);
   const fs::path tmp_dir = templ;
-  write_file_atomically((tmp_dir / "config.yaml").string(), config_yaml);
-  write_file_atomically((tmp_dir / "checkpoint.json").string(), j.dump() + "\n");
+  try {
+    write_file_atomically((tmp_dir / "config.yaml").string(), config_yaml);
+    write_file_atomically((tmp_dir / "checkpoint.json").string(), j.dump() + "\n");
+  } catch (...) {
+    // A full disk or a file size limit: no half-written checkpoint is left, and the earlier ones stay.
+    std::error_code ec;
+    fs::remove_all(tmp_dir, ec);
+    throw;
+  }
   fsync_directory(tmp_dir.string());
   fs::remove_all(final_dir);  // same time written again (a rerun into the same directory)
   fs::rename(tmp_dir, final_dir);
@@ -106,6 +114,7 @@ Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
     cp.wall_seconds = j.at("wall_seconds").get<double>();
     cp.rhs_seconds = j.at("rhs_seconds").get<double>();
     cp.search_seconds = j.at("search_seconds").get<double>();
+    if (j.contains("files")) cp.files = j["files"].get<std::vector<std::string>>();
     return cp;
   } catch (const CheckpointError&) {
     throw;

@@ -28,6 +28,7 @@ struct Checkpoint {
   long rhs_evals = 0;
   double wall_seconds = 0.0;
   double rhs_seconds = 0.0, search_seconds = 0.0;  // the parts of wall_seconds in the RHS, in the search
+  std::vector<std::string> files;  // the files the run had written to its output folder (OutputSink)
 };
 
 // "checkpoint-<t>" (t with 10 significant digits).

@@ -17,6 +17,7 @@
 #include "sphmol/run/case_registry.hpp"
 #include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/observers.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/plots.hpp"
 #include "sphmol/run/progress.hpp"
 #include "sphmol/run/signals.hpp"
@@ -33,7 +34,8 @@ void log_line(std::ostream& log, const nlohmann::json& m, long steps, double wal
 }
 
 template <int D>
-nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt, const OutputSink& out) {
+nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt, const OutputSink& out,
+                        std::optional<OutputFolder>& folder) {
   const auto start = std::chrono::steady_clock::now();
   auto sys = c.build(config);
   std::vector<double> y = sys->initial_state();
@@ -74,11 +76,14 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       observers[k]->restore_state(restart->observers[k], out);
   }
   // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
-  // now does the output directory appear.
-  if (out.enabled) std::filesystem::create_directories(out.directory);
+  // now does the output directory appear, locked for this run (run/output_folder.hpp).
+  if (out.enabled) {
+    folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
+    // A restart into its own folder carries on the list of files the run has written.
+    if (restart && opt.continuing)
+      for (const auto& f : restart->files) out.record(f);
+  }
   const double t_first = t;
-  bool needs_fields = false;
-  for (const auto& o : observers) needs_fields = needs_fields || o->needs_fields();
   std::vector<double> scratch;
 
   const auto wall_now = [&] {
@@ -99,6 +104,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     cp.wall_seconds = wall_now();
     cp.rhs_seconds = rhs_before_s + sys->rhs_seconds();
     cp.search_seconds = search_before_s + sys->search_seconds();
+    out.record(checkpoint_name(t));
+    cp.files = out.written();
     write_checkpoint(out.directory, cp, to_yaml(config));
   };
 
@@ -127,11 +134,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
     // so the interrupt checkpoint never misses a measurement at its own time.
     if (t >= times[next_out]) {
+      // The per-particle fields (density, pressure) of this very state, not of the integrator's last
+      // stage: both the case's measurement and the observers read them.
+      sys->refresh_fields(t, y.data(), scratch);
       nlohmann::json m = c.measure(*sys, y.data(), t, out);
-      if (needs_fields) {
-        scratch.resize(sys->size());
-        sys->rhs(t, y.data(), scratch.data());  // density and pressure of this very state
-      }
       for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
       progress.clear();
       if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
@@ -151,8 +157,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()}, {"last_good_t", health.last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
     if (out.enabled) {
-      std::filesystem::create_directories(out.directory);
+      if (!folder) folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
       write_last_good_state<D>(*sys, health.last_good_state().data(), out.path("last_good_state.csv"));
+      out.record("last_good_state.csv");
       blow_up["state_file"] = "last_good_state.csv";
     }
     if (opt.log) *opt.log << "sph-mol: " << b.what() << '\n';
@@ -216,6 +223,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
     const PlotResult plots = make_plots(c.plots(out), out);
+    for (const auto& png : plots.written) {
+      out.record(png);
+      out.record("plot_" + std::filesystem::path(png).stem().string() + ".gp");
+    }
     j["plots"] = plots.written;
     for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   }
@@ -224,11 +235,23 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
 
 template <int D>
 nlohmann::json run_dimension(const std::function<std::unique_ptr<Case<D>>()>& factory, const std::string& note,
-                             const Config& config, const RunOptions& opt, const OutputSink& out) {
+                             const Config& config, const RunOptions& opt, const OutputSink& out,
+                             std::optional<OutputFolder>& folder) {
   if (!factory)
     throw std::invalid_argument("dimension: case '" + config.case_name + "' is " + note + ", not " + std::to_string(D) + "D");
   auto c = factory();
-  return run_with<D>(*c, config, opt, out);
+  return run_with<D>(*c, config, opt, out, folder);
+}
+
+// The run's output folder: --output, else (restart) the folder the checkpoint lives in, else
+// output.directory.
+std::string output_directory(const Config& config, const RunOptions& options) {
+  if (!options.output_dir.empty()) return options.output_dir;
+  if (!options.restart_from.empty()) {
+    const std::string parent = std::filesystem::path(options.restart_from).lexically_normal().parent_path().string();
+    return parent.empty() ? "." : parent;
+  }
+  return config.output.directory;
 }
 
 }  // namespace
@@ -237,18 +260,34 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   const auto& registry = case_registry();
   const auto it = registry.find(config.case_name);
   if (it == registry.end()) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
-  OutputSink out{options.output_dir.empty() ? config.output.directory : options.output_dir, options.write_files};
+  OutputSink out{output_directory(config, options), options.write_files};
+  // The resolved config records the folder the run really writes to, as an absolute path, so a
+  // restart from one of its checkpoints continues there whatever the current folder.
+  Config resolved = config;
+  if (out.enabled) resolved.output.directory = std::filesystem::absolute(out.directory).lexically_normal().string();
+  RunOptions opt = options;
+  // A restart into the folder its checkpoint lives in continues that run (its summary is its own).
+  if (!options.restart_from.empty() && out.enabled) {
+    const auto here = std::filesystem::weakly_canonical(out.directory);
+    const auto home = std::filesystem::weakly_canonical(std::filesystem::path(options.restart_from).lexically_normal().parent_path());
+    opt.continuing = here == home;
+  }
+  std::optional<OutputFolder> folder;  // locked from the first file written until the summary is
   const CaseFactory& f = it->second;
   nlohmann::json summary;
   switch (config.dimension) {
-    case 1: summary = run_dimension<1>(f.d1, f.dimensions_note, config, options, out); break;
-    case 2: summary = run_dimension<2>(f.d2, f.dimensions_note, config, options, out); break;
-    case 3: summary = run_dimension<3>(f.d3, f.dimensions_note, config, options, out); break;
+    case 1: summary = run_dimension<1>(f.d1, f.dimensions_note, resolved, opt, out, folder); break;
+    case 2: summary = run_dimension<2>(f.d2, f.dimensions_note, resolved, opt, out, folder); break;
+    case 3: summary = run_dimension<3>(f.d3, f.dimensions_note, resolved, opt, out, folder); break;
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;
   if (out.enabled) {
-    write_file_atomically(out.path("config.yaml"), to_yaml(config));
+    if (!folder) folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
+    out.write("config.yaml", to_yaml(resolved));
+    out.record("summary.json");
+    summary["output_directory"] = out.directory;
+    summary["files"] = out.written();
     write_file_atomically(out.path("summary.json"), summary.dump(2) + "\n");
   }
   return summary;

@@ -19,6 +19,10 @@ struct RunOptions {
   std::ostream* progress = nullptr;  // live progress line (a terminal's stderr); null = none
   std::string restart_from;     // a checkpoint-<t> directory to continue from (run/checkpoint.hpp)
   bool handle_signals = false;  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted"
+  // The output folder may hold another run's summary: delete that run's files first (--overwrite).
+  bool overwrite = false;
+  // Set by run_case: a restart into the folder of its checkpoint continues that run's file list.
+  bool continuing = false;
 };
 
 // 128 + the signal that interrupted the run (summary "signal"), or 0 if it completed.

@@ -1,5 +1,5 @@
 #pragma once
-// The per-output-time files a run wrote, `<prefix><t>.csv` in the output directory (profile_t0.5.csv,
+// The per-output-time files this run wrote (OutputSink::written), `<prefix><t>.csv` (profile_t0.5.csv,
 // midline_t0.2.csv, ...), sorted by t. Cases' plots() read them to draw the output times.
 #include <string>
 #include <string_view>

@@ -123,10 +123,10 @@ void VtkObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double 
   if (!out.enabled) return;
   char name[32];
   std::snprintf(name, sizeof name, "particles_%04zu.vtp", written_.size());
-  write_file_atomically(out.path(name), vtp_text(sys, y, t, walls_, ghosts_));
+  out.write(name, vtp_text(sys, y, t, walls_, ghosts_));
   written_.emplace_back(t, name);
   // Rewritten every time, so an interrupted run still leaves a complete collection.
-  write_file_atomically(out.path("particles.pvd"), pvd_text(written_));
+  out.write("particles.pvd", pvd_text(written_));
 }
 
 template <int D>

@@ -21,7 +21,6 @@ class VtkObserver final : public OutputObserver<D> {
  public:
   explicit VtkObserver(bool walls, bool ghosts = false) : walls_(walls), ghosts_(ghosts) {}
   void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
-  bool needs_fields() const override { return true; }
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
 

@@ -100,7 +100,7 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
   if (out.enabled) {
     std::ostringstream name;
     name << "centrelines_t" << std::setprecision(6) << t << ".csv";
-    write_file_atomically(out.path(name.str()), csv.str());
+    out.write(name.str(), csv.str());
     last_csv_ = name.str();
     last_t_ = t;
   }

@@ -39,7 +39,7 @@ nlohmann::json ChannelCase::measure(const SphSystem<2>& sys, const double* y, do
     s << "# SPH velocity profile vs " << ref_.name << " at t = " << t << " s\ny,u_sph,u_exact\n" << std::setprecision(12);
     for (const auto& p : e.profile) s << p.y << ',' << p.u_sph << ',' << p.u_exact << '\n';
     name << "profile_t" << std::setprecision(6) << t << ".csv";
-    write_file_atomically(out.path(name.str()), s.str());
+    out.write(name.str(), s.str());
   }
   // Signed mean profile error / v0: its sign changes over time reveal the oscillation about the
   // reference (seed 000 §9, seed 002 §5) that the stability study classifies.

@@ -62,7 +62,7 @@ nlohmann::json DamBreakCase::measure(const SphSystem<2>& sys, const double* y, d
   if (ko) row << *ko * a_;
   row << '\n';
   csv_ += row.str();
-  if (out.enabled) write_file_atomically(out.path("front.csv"), csv_);
+  if (out.enabled) out.write("front.csv", csv_);
   return j;
 }
 
@@ -136,7 +136,7 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
   for (const auto& p : martin_moyce_1952_n2_2()) ref << "mm," << p.T * tscale << ',' << p.Z * a_ << '\n';
   ref << "\n\n";
   for (const auto& p : koshizuka_oka_1996()) ref << "ko," << p.T * tscale << ',' << p.Z * a_ << '\n';
-  write_file_atomically(out.path("front_reference.csv"), ref.str());
+  out.write("front_reference.csv", ref.str());
   std::ostringstream s;
   s << gnuplot_csv_preamble("Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)", 900, 640, 11, "front.png", 't')
     << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"

@@ -135,7 +135,7 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
         << ',' << q.e << '\n';
     }
     name << "profile_t" << std::setprecision(6) << t << ".csv";
-    write_file_atomically(out.path(name.str()), s.str());
+    out.write(name.str(), s.str());
   }
   if (out.enabled && profiles_) {
     std::sort(mid.begin(), mid.end());
@@ -146,7 +146,7 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
     for (const auto& r : mid)
       for (int k = 0; k < 9; ++k) s << r[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
     name << "midline_t" << std::setprecision(6) << t << ".csv";
-    write_file_atomically(out.path(name.str()), s.str());
+    out.write(name.str(), s.str());
   }
   const double inv_mid = n_mid > 0 ? 1.0 / static_cast<double>(n_mid) : 0.0;
   auto pos = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };

@@ -1,0 +1,89 @@
+#include "sphmol/run/output_folder.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+namespace sphmol {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A name a summary may list for deletion: one plain entry of this folder, never a path out of it.
+bool plain_name(const std::string& name) {
+  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos &&
+         name.find('\0') == std::string::npos && name != kOutputLockFile;
+}
+
+// The files of the run whose summary.json is in `dir` (the summary lists them under "files"; it and
+// the resolved config.yaml are always that run's).
+std::set<std::string> files_of_previous_run(const fs::path& summary) {
+  std::set<std::string> names{"summary.json", "config.yaml"};
+  std::ifstream in(summary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  if (j.is_object() && j.contains("files") && j["files"].is_array())
+    for (const auto& f : j["files"])
+      if (f.is_string() && plain_name(f.get<std::string>())) names.insert(f.get<std::string>());
+  return names;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::string& directory, Options options) : directory_(directory) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec || !fs::is_directory(directory))
+    throw OutputFolderError("output directory " + directory + ": cannot create it" + (ec ? ": " + ec.message() : std::string()));
+  const std::string lock = (fs::path(directory) / kOutputLockFile).string();
+  // O_NOFOLLOW: a link planted under the lock file's name is refused, never opened.
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0)
+    throw OutputFolderError("output directory " + directory + ": cannot open its lock file " + kOutputLockFile + ": " +
+                            std::strerror(errno));
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw OutputFolderError(err == EWOULDBLOCK ? "output directory " + directory +
+                                                     ": another sph-mol run is writing there (choose another --output)"
+                                               : "output directory " + directory + ": cannot lock it: " + std::strerror(err));
+  }
+  const fs::path summary = fs::path(directory) / "summary.json";
+  if (options.continuing || !fs::exists(fs::symlink_status(summary))) return;
+  if (!options.overwrite) {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw OutputFolderError("output directory " + directory +
+                            " holds the results of another run (summary.json); choose another --output, or give "
+                            "--overwrite to delete that run's files first");
+  }
+  for (const std::string& name : files_of_previous_run(summary)) {
+    const fs::path p = fs::path(directory) / name;
+    // remove_all deletes a link itself, never what it points to.
+    fs::remove_all(p, ec);
+    if (ec) {
+      ::close(lock_fd_);
+      lock_fd_ = -1;
+      throw OutputFolderError("output directory " + directory + ": --overwrite cannot delete " + name + ": " + ec.message());
+    }
+  }
+}
+
+OutputFolder::~OutputFolder() {
+  // The lock file stays: deleting it would let a run that opened it meanwhile lock a dead file.
+  if (lock_fd_ >= 0) ::close(lock_fd_);
+}
+
+}  // namespace sphmol

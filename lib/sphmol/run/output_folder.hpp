@@ -1,0 +1,39 @@
+#pragma once
+// A run's claim on its output folder, held for the run's lifetime:
+// - an exclusive lock (flock on DIR/.sph-mol.lock), so a second run into the same folder stops with a
+//   clear error instead of overwriting the first one's files;
+// - a folder that holds another run's summary.json is refused unless `overwrite`, which first deletes
+//   exactly the files that run listed in its summary (nothing else in the folder is touched);
+// - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left.
+#include <stdexcept>
+#include <string>
+
+namespace sphmol {
+
+struct OutputFolderError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class OutputFolder {
+ public:
+  struct Options {
+    bool overwrite = false;
+    bool continuing = false;
+  };
+  // Creates the folder if needed (and its parents), locks it and checks it. Throws OutputFolderError.
+  OutputFolder(const std::string& directory, Options options);
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+
+  const std::string& directory() const { return directory_; }
+
+ private:
+  std::string directory_;
+  int lock_fd_ = -1;
+};
+
+// The name of the lock file inside an output folder.
+inline constexpr const char* kOutputLockFile = ".sph-mol.lock";
+
+}  // namespace sphmol
