@@ -1,0 +1,200 @@
+// The geometry kit: signed distances of the shapes (exact values at chosen points), boolean
+// combinations, lattice fills (counts and areas/volumes), the CGAL polygon and triangle-mesh shapes,
+// and wall layers — including the box container against the wall particles of the box scene.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <tuple>
+#include <unistd.h>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/cylinder_shape.hpp"
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/polygon_shape.hpp"
+#include "sphmol/geometry/shape_algebra.hpp"
+#include "sphmol/geometry/sphere_shape.hpp"
+#include "sphmol/geometry/triangle_mesh_shape.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
+#include "sphmol/scenes/box_scene.hpp"
+
+using namespace sphmol::geometry;
+
+TEST_CASE("geometry: box signed distance is exact inside, outside and at corners", "[geometry]") {
+  const BoxShape<2> b({0.0, 0.0}, {2.0, 1.0});
+  CHECK(b.signed_distance({1.0, 0.5}) == Approx(-0.5));
+  CHECK(b.signed_distance({0.1, 0.5}) == Approx(-0.1));
+  CHECK(b.signed_distance({3.0, 0.5}) == Approx(1.0));
+  CHECK(b.signed_distance({3.0, 2.0}) == Approx(std::sqrt(2.0)));  // beyond the corner
+  CHECK(b.signed_distance({2.0, 0.5}) == Approx(0.0).margin(1e-15));
+  CHECK_THROWS_AS(BoxShape<2>({0.0, 0.0}, {0.0, 1.0}), std::invalid_argument);
+  const BoxShape<3> c({0, 0, 0}, {1, 1, 1});
+  CHECK(c.signed_distance({0.5, 0.5, 0.9}) == Approx(-0.1));
+  CHECK(c.signed_distance({2, 2, 2}) == Approx(std::sqrt(3.0)));
+}
+
+TEST_CASE("geometry: sphere, cylinder and their outward normals", "[geometry]") {
+  const SphereShape<3> s({1, 1, 1}, 0.5);
+  CHECK(s.signed_distance({1, 1, 1}) == Approx(-0.5));
+  CHECK(s.signed_distance({1, 1, 2}) == Approx(0.5));
+  const auto n = s.outward_normal({1.0, 1.3, 1.0}, 1e-7);
+  CHECK(n[1] == Approx(1.0));
+  CHECK(n[0] == Approx(0.0).margin(1e-6));
+  const CylinderShape cyl({0, 0, 0}, {0, 0, 2}, 1.0);
+  CHECK(cyl.signed_distance({0, 0, 1}) == Approx(-1.0));      // on the axis, mid-height: the side is nearest
+  CHECK(cyl.signed_distance({0, 0, 0.25}) == Approx(-0.25));  // near the bottom cap
+  CHECK(cyl.signed_distance({2, 0, 1}) == Approx(1.0));
+  CHECK(cyl.signed_distance({2, 0, 3}) == Approx(std::sqrt(2.0)));  // beyond the rim
+  const auto nc = cyl.outward_normal({0.0, 0.9, 1.0}, 1e-7);
+  CHECK(nc[1] == Approx(1.0));
+}
+
+TEST_CASE("geometry: union, intersection and difference keep the exact inside test", "[geometry]") {
+  const ShapePtr<2> a = std::make_shared<BoxShape<2>>(Vec<2>{0, 0}, Vec<2>{2, 2});
+  const ShapePtr<2> hole = std::make_shared<SphereShape<2>>(Vec<2>{1, 1}, 0.5);
+  const auto ring = subtract<2>(a, hole);
+  CHECK(ring->contains({0.2, 0.2}));
+  CHECK_FALSE(ring->contains({1.0, 1.0}));
+  CHECK(ring->signed_distance({1.0, 1.0}) == Approx(0.5));  // distance out of the hole's surface
+  const auto both = unite<2>({a, std::make_shared<BoxShape<2>>(Vec<2>{3, 0}, Vec<2>{4, 1})});
+  CHECK(both->contains({3.5, 0.5}));
+  CHECK_FALSE(both->contains({2.5, 0.5}));
+  CHECK(both->bounds().hi[0] == 4.0);
+  const auto lens = intersect<2>(a, std::make_shared<SphereShape<2>>(Vec<2>{2, 2}, 1.0));
+  CHECK(lens->contains({1.8, 1.8}));
+  CHECK_FALSE(lens->contains({2.5, 2.5}));
+}
+
+TEST_CASE("geometry: lattice fill of a box holds exactly L/dx points per axis at cell centres", "[geometry]") {
+  Lattice<2> lat;
+  lat.spacing = 0.1;
+  const auto pts = fill<2>(BoxShape<2>({0, 0}, {1.0, 0.5}), lat);
+  REQUIRE(pts.size() == 50u);
+  CHECK(pts.front()[0] == Approx(0.05));
+  CHECK(pts.front()[1] == Approx(0.05));
+  CHECK(pts[1][0] == Approx(0.15));  // x fastest, as the particle arrays of the box scenes
+  Lattice<3> lat3;
+  lat3.spacing = 0.25;
+  CHECK(fill<3>(BoxShape<3>({0, 0, 0}, {1, 0.5, 0.75}), lat3).size() == 4u * 2u * 3u);
+}
+
+TEST_CASE("geometry: filled area and volume converge to the shape's", "[geometry]") {
+  for (const double dx : {0.02, 0.01}) {
+    Lattice<2> lat;
+    lat.spacing = dx;
+    const double area = fill<2>(SphereShape<2>({0.5, 0.5}, 0.3), lat).size() * lat.cell_volume();
+    CHECK(area == Approx(M_PI * 0.09).epsilon(2.0 * dx));
+    lat.type = LatticeType::hexagonal;
+    const double hex = fill<2>(SphereShape<2>({0.5, 0.5}, 0.3), lat).size() * lat.cell_volume();
+    CHECK(hex == Approx(M_PI * 0.09).epsilon(2.0 * dx));
+  }
+  Lattice<3> lat3;
+  lat3.spacing = 0.02;
+  const double vol = fill<3>(CylinderShape({0, 0, 0}, {0, 0, 1}, 0.25), lat3).size() * lat3.cell_volume();
+  CHECK(vol == Approx(M_PI * 0.0625).epsilon(0.03));
+  Lattice<3> hex3;
+  hex3.spacing = 0.1;
+  hex3.type = LatticeType::hexagonal;
+  CHECK_THROWS_AS(fill<3>(BoxShape<3>({0, 0, 0}, {1, 1, 1}), hex3), std::invalid_argument);
+}
+
+TEST_CASE("geometry: polygon (CGAL) inside test and distance, in either orientation", "[geometry][cgal]") {
+  const std::vector<Vec<2>> l_shape{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for (const bool reverse : {false, true}) {
+    auto v = l_shape;
+    if (reverse) std::reverse(v.begin(), v.end());
+    const PolygonShape p(v);
+    CHECK(p.signed_distance({0.5, 0.5}) == Approx(-0.5));
+    CHECK(p.signed_distance({1.5, 1.5}) == Approx(0.5));  // in the notch, half way to both inner edges
+    CHECK(p.signed_distance({3.0, 3.0}) == Approx(std::sqrt(5.0)));  // as far from the vertices (1, 2) and (2, 1)
+    CHECK(p.signed_distance({1.5, 0.9}) == Approx(-0.1));
+  }
+  Lattice<2> lat;
+  lat.spacing = 0.1;
+  CHECK(fill<2>(PolygonShape(l_shape), lat).size() == 300u);  // area 3 / 0.01, no point on an edge
+  CHECK_THROWS_AS(PolygonShape({{0, 0}, {1, 1}, {1, 0}, {0, 1}}), std::invalid_argument);  // a bow tie
+  CHECK_THROWS_AS(PolygonShape({{0, 0}, {1, 1}}), std::invalid_argument);
+}
+
+namespace {
+// A cube [0, 1]^3 as an OFF file with quad faces (CGAL triangulates them).
+std::string write_cube_off(const std::string& name, bool open) {
+  const auto path = std::filesystem::temp_directory_path() / ("sphmol-geom-" + std::to_string(::getpid()) + "-" + name);
+  std::ofstream f(path);
+  f << "OFF\n8 " << (open ? 5 : 6) << " 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    << "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n";
+  if (!open) f << "4 0 4 7 3\n";
+  return path.string();
+}
+}  // namespace
+
+TEST_CASE("geometry: triangle mesh (CGAL) read from OFF agrees with the box", "[geometry][cgal]") {
+  const std::string off = write_cube_off("cube.off", false);
+  const TriangleMeshShape mesh(off);
+  CHECK(mesh.triangles() == 12u);
+  const BoxShape<3> box({0, 0, 0}, {1, 1, 1});
+  for (const Vec<3> p : {Vec<3>{0.5, 0.5, 0.5}, Vec<3>{0.1, 0.5, 0.7}, Vec<3>{1.5, 0.5, 0.5}, Vec<3>{-0.2, 1.3, 0.5},
+                         Vec<3>{0.95, 0.05, 0.5}})
+    CHECK(mesh.signed_distance(p) == Approx(box.signed_distance(p)).margin(1e-12));
+  Lattice<3> lat;
+  lat.spacing = 0.1;
+  CHECK(fill<3>(mesh, lat).size() == 1000u);
+  CHECK_THROWS_WITH(TriangleMeshShape(write_cube_off("open.off", true)), Catch::Contains("not closed"));
+  CHECK_THROWS_WITH(TriangleMeshShape("/nonexistent/x.stl"), Catch::Contains("no such file"));
+  std::filesystem::remove(off);
+}
+
+TEST_CASE("geometry: wall layers of a solid lie within the thickness, normals out of the solid", "[geometry]") {
+  Lattice<2> lat;
+  lat.spacing = 0.05;
+  const SphereShape<2> cyl({0.5, 0.5}, 0.2);
+  const auto w = wall_layer<2>(cyl, lat, 3 * lat.spacing);
+  REQUIRE(!w.empty());
+  for (const auto& p : w) {
+    CHECK(p.depth > 0.0);
+    CHECK(p.depth <= 3 * lat.spacing + 1e-12);
+    const Vec<2> r{p.x[0] - 0.5, p.x[1] - 0.5};
+    if (norm<2>(r) > 1e-9) CHECK(dot<2>(p.normal, r) / norm<2>(r) == Approx(1.0).epsilon(1e-6));  // radial
+  }
+  // A ring of width 3 dx: its area over the cell area, within the lattice's granularity.
+  const double ring = M_PI * (0.04 - std::pow(0.2 - 0.15, 2));
+  CHECK(w.size() * lat.cell_volume() == Approx(ring).epsilon(0.15));
+}
+
+TEST_CASE("geometry: box container walls equal the box scene's wall particles", "[geometry]") {
+  // The driven cavity's walls (all four faces, the lid taking the corners) and the open-topped tank.
+  for (const bool lid : {true, false}) {
+    sphmol::Config c = sphmol::load_config_string(R"(
+case: cavity
+fluid: {density: 1, kinematic_viscosity: 0.01, eos: {type: linear_relative, sound_speed: 10}}
+geometry: {box: [1, 1], wall_velocity: 1}
+discretization: {particles_across: 10, kernel: wendland_c2, smoothing_ratio: 1.3}
+time: {t_end: 0.1, integrator: leapfrog}
+)");
+    sphmol::BoxWalls<2> walls{};
+    walls[0][0].present = walls[0][1].present = walls[1][0].present = true;
+    walls[1][1].present = lid;
+    const double Ly = lid ? 1.0 : 1.2;
+    const auto scene = sphmol::build_box_scene(c, 1.0, Ly, 1.0, walls, false);
+    const double dx = scene.spacing;
+    Lattice<2> lat;
+    lat.spacing = dx;
+    const auto w = box_container_walls<2>({0, 0}, {1.0, Ly}, {false, false, false, !lid}, lat, scene.wall_layers * dx, 3);
+    const auto& P = scene.particles;
+    REQUIRE(w.size() == P.n_wall());
+    // Same points with the same normals and depths (both lists in lattice order).
+    std::map<std::tuple<long, long>, std::size_t> at;
+    for (std::size_t k = 0; k < w.size(); ++k) at[{std::lround(w[k].x[0] / dx * 2), std::lround(w[k].x[1] / dx * 2)}] = k;
+    for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+      const auto it = at.find({std::lround(P.x[0][i] / dx * 2), std::lround(P.x[1][i] / dx * 2)});
+      REQUIRE(it != at.end());
+      const auto& q = w[it->second];
+      CHECK(q.depth == Approx(P.wall_depth[i]));
+      CHECK(q.normal[0] == P.wall_normal[0][i]);
+      CHECK(q.normal[1] == P.wall_normal[1][i]);
+    }
+  }
+}
