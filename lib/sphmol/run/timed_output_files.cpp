@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 
 namespace sphmol {
 
@@ -11,7 +12,14 @@ std::vector<std::pair<double, std::string>> timed_output_files(const OutputSink&
   for (const auto& e : std::filesystem::directory_iterator(out.directory)) {
     const std::string name = e.path().filename().string();
     if (name.rfind(prefix, 0) != 0 || e.path().extension() != ".csv") continue;
-    files.emplace_back(std::strtod(name.c_str() + prefix.size(), nullptr), name);
+    // Only the names the run writes, <prefix><number>.csv: plot scripts quote these names, so a
+    // planted file with a quote or a '|' in its name must never be picked up.
+    char* end = nullptr;
+    const char* number = name.c_str() + prefix.size();
+    const double t = std::strtod(number, &end);
+    if (end == number || std::string_view(end) != ".csv" || e.is_symlink() || !e.is_regular_file()) continue;
+    if (std::string_view(number, end).find_first_not_of("0123456789.eE+-") != std::string_view::npos) continue;
+    files.emplace_back(t, name);
   }
   std::sort(files.begin(), files.end());
   return files;

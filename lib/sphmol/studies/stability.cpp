@@ -132,7 +132,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   chart.logy = spans_decade(&ChartSeries::y);
   for (const char* k : {"stable", "oscillating", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
-  const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");
+  const std::string problem = draw_chart(chart, opt.output_dir, "stability");
   nlohmann::json j{{"case", base.case_name}, {"step_mode", fixed ? "fixed dt" : "cfl factor"}, {"osc_threshold", opt.osc_threshold},
                    {"samples", opt.samples}, {"runs", runs}};
   if (!problem.empty()) j["chart_problem"] = problem;
