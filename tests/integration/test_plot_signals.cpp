@@ -28,7 +28,7 @@ TEST_CASE("signals: a signal during the plots ends the run as interrupted", "[si
       const fs::path out = dir / "run";
       const std::string path_env = "PATH=" + bin.string() + ":/usr/bin:/bin";
       const std::vector<std::string> args = {"--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "-q",
-                                             "--set", "discretization.particles_across=10", "--set", "time.t_end=0.002",
+                                             "--set", "discretization.particles_across=10", "--set", "geometry.channel_length=1.0e-3", "--set", "time.t_end=0.002",
                                              "--set", "output.times=[0.002]", "--set", "output.plots=true",
                                              "--output", out.string()};
       const pid_t pid = ::fork();

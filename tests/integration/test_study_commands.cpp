@@ -128,8 +128,8 @@ struct TinyCase {
 };
 const std::map<std::string, TinyCase>& tiny_cases() {
   static const std::map<std::string, TinyCase> cases = {
-      {"couette", {"couette.yaml", {"discretization.particles_across=10", "time.t_end=0.01", "output.times=[0.01]"}}},
-      {"poiseuille", {"poiseuille.yaml", {"discretization.particles_across=10", "time.t_end=0.01", "output.times=[0.01]"}}},
+      {"couette", {"couette.yaml", {"discretization.particles_across=10", "geometry.channel_length=1.0e-3", "time.t_end=0.01", "output.times=[0.01]"}}},
+      {"poiseuille", {"poiseuille.yaml", {"discretization.particles_across=10", "geometry.channel_length=1.0e-3", "time.t_end=0.01", "output.times=[0.01]"}}},
       {"taylor_green", {"taylor_green.yaml", {"discretization.particles_across=10", "time.t_end=0.05", "output.times=[0.05]"}}},
       {"hydrostatic",
        {"hydrostatic.yaml",
@@ -270,7 +270,7 @@ TEST_CASE("bad study command lines are exit 2 and name the option", "[integratio
            {{"stability", "--config", cfg, "--step-factors", "1,-2"}, "--step-factors"},
            {{"stability", "--config", cfg, "--osc-threshold", "-1"}, "--osc-threshold"},
        }) {
-    DYNAMIC_SECTION(args[0] << " " << option) {
+    DYNAMIC_SECTION(args[0] << " " << option << " " << args.back()) {
       const std::string log = "reports/bad_study_option.log";
       CHECK(run(args, log) == 2);
       CHECK(slurp(log).find(option) != std::string::npos);

@@ -45,7 +45,7 @@ const std::vector<std::string> kHostileNames = {
     "$(touch pwned)",       "`touch pwned`",    "semi;touch pwned;x",                "dq\"x\"",
     "nl\n!touch pwned\n",   "nl2\nset output '|touch pwned'\nplot 1\n",               "sub/|touch pwned"};
 
-const std::vector<std::string> kTiny = {"--set", "discretization.particles_across=10", "--set", "time.t_end=0.002",
+const std::vector<std::string> kTiny = {"--set", "discretization.particles_across=10", "--set", "geometry.channel_length=1.0e-3", "--set", "time.t_end=0.002",
                                         "--set", "output.times=[0.002]"};
 
 struct Command {

@@ -113,7 +113,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       if (opt.log)
         *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
                  << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
-                 << (cause.empty() ? "" : ", " + cause) << ")\n";
+                 << (cause.empty() ? "" : ", " + cause) << ")" << (r.note.empty() ? "" : "; " + r.note) << '\n';
     }
   write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
