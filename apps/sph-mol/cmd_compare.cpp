@@ -17,11 +17,21 @@ struct {
 } opt;
 
 int run() {
+  if (!sphmol::app::output_option_ok("compare", opt.output)) return 2;
   auto config = sphmol::app::load_study_config(opt.config, opt.overrides, "compare");
   if (!config) return 2;
+  const auto integrators = sphmol::app::parse_integrators_option("compare", opt.integrators, config->time.table);
+  if (!integrators) return 2;
+  // A sweep that no listed integrator uses would be silently ignored.
+  bool any_adaptive = false, any_fixed = false;
+  for (const auto& s : *integrators) (s.adaptive() ? any_adaptive : any_fixed) = true;
+  if (!opt.rtols.empty() && !any_adaptive)
+    return sphmol::app::bad_option("compare", "--rtols", "no integrator in --integrators has a tolerance (arkode_erk, cvode_adams do)");
+  if (!opt.step_factors.empty() && !any_fixed)
+    return sphmol::app::bad_option("compare", "--step-factors", "no integrator in --integrators takes a fixed or CFL step (leapfrog, leapfrog_kdk do)");
   try {
     sphmol::CompareOptions o;
-    o.integrators = sphmol::parse_integrator_list(opt.integrators, config->time.table);
+    o.integrators = *integrators;
     o.output_dir = opt.output;
     o.log = &std::cerr;
     if (opt.reference_dt > 0.0) o.reference_dt = opt.reference_dt;

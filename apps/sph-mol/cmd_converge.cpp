@@ -17,13 +17,22 @@ struct {
 } opt;
 
 int run() {
+  if (!sphmol::app::output_option_ok("converge", opt.output)) return 2;
+  if (opt.dt0 > 0.0 && opt.refine != "time") return sphmol::app::bad_option("converge", "--dt0", "only with --refine time");
   auto config = sphmol::app::load_study_config(opt.config, opt.overrides, "converge");
   if (!config) return 2;
   try {
     sphmol::ConvergeOptions o;
     o.refine = opt.refine;
     o.levels = opt.levels;
-    if (!opt.integrators.empty()) o.integrators = sphmol::parse_integrator_list(opt.integrators, config->time.table);
+    if (!opt.integrators.empty()) {
+      const auto integrators = sphmol::app::parse_integrators_option("converge", opt.integrators, config->time.table);
+      if (!integrators) return 2;
+      o.integrators = *integrators;
+      for (const auto& s : o.integrators)
+        if (opt.refine == "time" && s.integrator == "cvode_adams")
+          return sphmol::app::bad_option("converge", "--integrators", "cvode_adams has no fixed step (--refine time needs one)");
+    }
     if (opt.dt0 > 0) o.dt0 = opt.dt0;
     o.output_dir = opt.output;
     o.log = &std::cerr;
@@ -49,7 +58,9 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--levels", opt.levels, "number of levels (default 4)")->check(CLI::Range(2, 8));
       sub.add_option("--integrators", opt.integrators,
                      "comma-separated (default for time: leapfrog, leapfrog_kdk and ERK tables of orders 2, 3, 4)");
-      sub.add_option("--dt0", opt.dt0, "coarsest fixed step for --refine time (default: time.dt of the config)");
+      sub.add_option("--dt0", opt.dt0,
+                     "coarsest fixed step for --refine time (default: time.dt of the config, else the case's CFL step at t = 0)")
+          ->check(CLI::PositiveNumber);
       sub.add_option("--output", opt.output, "output directory (default out/converge)");
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },

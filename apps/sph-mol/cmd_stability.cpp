@@ -17,6 +17,7 @@ struct {
 } opt;
 
 int run() {
+  if (!sphmol::app::output_option_ok("stability", opt.output)) return 2;
   auto config = sphmol::app::load_study_config(opt.config, opt.overrides, "stability");
   if (!config) return 2;
   try {
@@ -41,12 +42,15 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
     [](CLI::App& sub) {
       sub.add_option("--config", opt.config, "case configuration (YAML)")->required()->check(CLI::ExistingFile);
       sub.add_option("--output", opt.output, "output directory (default out/stability)");
-      sub.add_option("--sound-speed-factors", opt.c_factors, "factors on fluid.eos.sound_speed (default 0.25 0.5 1 2)")
-          ->delimiter(',');
+      sub.add_option("--sound-speed-factors", opt.c_factors, "factors on fluid.eos.sound_speed (default 0.25,0.5,1,2)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
       sub.add_option("--step-factors", opt.step_factors,
-                     "factors on time.dt (fixed step) or on the time.cfl coefficients (default 0.5 1 2 4)")
-          ->delimiter(',');
-      sub.add_option("--osc-threshold", opt.threshold, "|e_signed - late mean| above which a swing counts, in units of v0 (default 0.002)");
+                     "factors on time.dt (fixed step) or on the time.cfl coefficients (default 0.5,1,2,4)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--osc-threshold", opt.threshold, "|e_signed - late mean| above which a swing counts, in units of v0 (default 0.002)")
+          ->check(CLI::NonNegativeNumber);
       sub.add_option("--samples", opt.samples, "equally spaced sample times (default 20)")->check(CLI::Range(3, 1000));
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },

@@ -1,12 +1,14 @@
 #pragma once
 // Shared by the study subcommands (compare, converge, stability): load the config with --set
-// overrides, reporting config errors like the main command (exit code 2).
+// overrides, reporting config errors like the main command (exit code 2), and command-line values
+// that only the study itself can judge (exit code 2, naming the option).
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/studies/integrator_spec.hpp"
 
 namespace sphmol::app {
 
@@ -20,6 +22,30 @@ inline std::optional<Config> load_study_config(const std::string& path, const st
     std::cerr << "sph-mol " << who << ": config error: " << e.what() << '\n';
     return std::nullopt;
   }
+}
+
+// Prints "sph-mol WHO: OPTION: MESSAGE" and returns the bad-input exit code.
+inline int bad_option(const char* who, const std::string& option, const std::string& message) {
+  std::cerr << "sph-mol " << who << ": " << option << ": " << message << '\n';
+  return 2;
+}
+
+// --integrators LIST, or nullopt after reporting the bad entry.
+inline std::optional<std::vector<IntegratorSpec>> parse_integrators_option(const char* who, const std::string& list,
+                                                                          const std::string& default_table) {
+  try {
+    return parse_integrator_list(list, default_table);
+  } catch (const std::invalid_argument& e) {
+    bad_option(who, "--integrators", e.what());
+    return std::nullopt;
+  }
+}
+
+// An output folder must be named (an empty name would write into the current directory's root files).
+inline bool output_option_ok(const char* who, const std::string& output) {
+  if (!output.empty()) return true;
+  bad_option(who, "--output", "empty folder name");
+  return false;
 }
 
 }  // namespace sphmol::app

@@ -1,23 +1,42 @@
 // The study subcommands end to end through the binary: files written, classes found.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <vector>
 
+#include "sphmol/run/case_registry.hpp"
+#include "support/process.hpp"
+
 namespace {
-int run(const std::string& args, const std::string& log) {
+// Runs sph-mol with `args` (an argument vector, no shell); stderr goes to `log`.
+int run(const std::vector<std::string>& args, const std::string& log) {
   std::filesystem::create_directories("reports");
-  const int rc = std::system((std::string(SPHMOL_BINARY) + " " + args + " >" + log + " 2>&1").c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  return test_support::run_process(SPHMOL_BINARY, args, log).code;
+}
+// The same with a space-separated argument string (no argument here holds a space).
+int run(const std::string& args, const std::string& log) {
+  std::vector<std::string> v;
+  std::istringstream in(args);
+  for (std::string a; in >> a;) v.push_back(a);
+  return run(v, log);
+}
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
 }
 nlohmann::json read_json(const std::string& path) {
   std::ifstream f(path);
   REQUIRE(f.good());
   return nlohmann::json::parse(f);
 }
+bool finite_number(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
 }  // namespace
 
 TEST_CASE("sph-mol stability separates stable and blown-up runs on a coarse Poiseuille channel", "[integration][stability]") {
@@ -98,4 +117,171 @@ TEST_CASE("sph-mol stability finds the slow symmetric oscillation of a long Pois
   CHECK(r["late_amplitude"].get<double>() > 0.002);
   CHECK(r["late_amplitude"].get<double>() < 0.02);
   CHECK(r["max_abs_e_signed"].get<double>() < 0.05);
+}
+
+namespace {
+// A tiny run of each registered case (config file and --set overrides): a few hundred particles or
+// fewer, one output time at t_end where the case measures its primary error.
+struct TinyCase {
+  std::string config;
+  std::vector<std::string> sets;
+};
+const std::map<std::string, TinyCase>& tiny_cases() {
+  static const std::map<std::string, TinyCase> cases = {
+      {"couette", {"couette.yaml", {"discretization.particles_across=10", "geometry.channel_length=1.0e-3", "time.t_end=0.01", "output.times=[0.01]"}}},
+      {"poiseuille", {"poiseuille.yaml", {"discretization.particles_across=10", "geometry.channel_length=1.0e-3", "time.t_end=0.01", "output.times=[0.01]"}}},
+      {"taylor_green", {"taylor_green.yaml", {"discretization.particles_across=10", "time.t_end=0.05", "output.times=[0.05]"}}},
+      {"hydrostatic",
+       {"hydrostatic.yaml",
+        {"discretization.particles_across=10", "fluid.body_force_ramp=0.05", "time.dt=5e-4", "time.t_end=0.15", "output.times=[0.15]"}}},
+      {"cavity", {"cavity.yaml", {"discretization.particles_across=10", "time.t_end=0.05", "output.times=[0.05]"}}},
+      {"dam_break", {"dam_break.yaml", {"discretization.spacing=0.1", "time.t_end=0.25", "output.times=[0.25]"}}},
+      {"shock_tube", {"shock_tube_1d.yaml", {"discretization.spacing=0.02", "time.t_end=0.05", "output.times=[0.05]"}}},
+  };
+  return cases;
+}
+std::vector<std::string> study_args(const std::string& study, const std::string& name, const std::string& out,
+                                    std::vector<std::string> extra) {
+  const TinyCase& c = tiny_cases().at(name);
+  std::vector<std::string> a = {study, "--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/" + c.config, "--output", out};
+  for (const auto& s : c.sets) {
+    a.push_back("--set");
+    a.push_back(s);
+  }
+  a.push_back("--set");
+  a.push_back("output.plots=false");
+  a.insert(a.end(), extra.begin(), extra.end());  // last: a --set here wins over the tiny sizes
+  return a;
+}
+}  // namespace
+
+TEST_CASE("every study runs on every registered case with finite errors", "[integration][studies][all_cases]") {
+  for (const auto& [name, factory] : sphmol::case_registry()) {
+    DYNAMIC_SECTION("case " << name) {
+      REQUIRE(tiny_cases().count(name) == 1);  // a new case needs its tiny configuration here
+      const std::string out = "reports/all_cases_" + name;
+      {
+        INFO("compare: " << slurp(out + "_compare.log"));
+        REQUIRE(run(study_args("compare", name, out + "/compare", {"--integrators", "leapfrog", "--step-factors", "1,0.5"}),
+                    out + "_compare.log") == 0);
+        const auto j = read_json(out + "/compare/comparison.json");
+        REQUIRE(j["runs"].size() == 2);
+        for (const auto& r : j["runs"]) {
+          CHECK(r["status"] == "completed");
+          CHECK(finite_number(r["error"]));
+        }
+      }
+      {
+        // No --dt0: time.dt of the config, else the case's CFL step at t = 0.
+        INFO("converge time: " << slurp(out + "_converge_time.log"));
+        REQUIRE(run(study_args("converge", name, out + "/time", {"--refine", "time", "--levels", "2", "--integrators", "leapfrog"}),
+                    out + "_converge_time.log") == 0);
+        const auto j = read_json(out + "/time/convergence.json");
+        REQUIRE(j["series"].size() == 1);
+        for (const auto& e : j["series"][0]["errors"]) CHECK(finite_number(e));
+        CHECK(finite_number(j["levels"][0]["dt"]));
+      }
+      {
+        INFO("converge space: " << slurp(out + "_converge_space.log"));
+        REQUIRE(run(study_args("converge", name, out + "/space", {"--refine", "space", "--levels", "2"}), out + "_converge_space.log") == 0);
+        const auto j = read_json(out + "/space/convergence.json");
+        REQUIRE(j["series"].size() == 1);
+        for (const auto& e : j["series"][0]["errors"]) CHECK(finite_number(e));
+        const auto& dx = j["series"][0]["steps"];
+        CHECK(dx[1].get<double>() == Approx(dx[0].get<double>() / 2));
+      }
+      {
+        INFO("stability: " << slurp(out + "_stability.log"));
+        REQUIRE(run(study_args("stability", name, out + "/stability",
+                               {"--sound-speed-factors", "1", "--step-factors", "1", "--samples", "3"}),
+                    out + "_stability.log") == 0);
+        const auto j = read_json(out + "/stability/stability.json");
+        REQUIRE(j["runs"].size() == 1);
+        CHECK(j["runs"][0]["class"] != "blown_up");
+        CHECK(finite_number(j["runs"][0]["error"]));
+      }
+    }
+  }
+}
+
+TEST_CASE("compare names each case's own primary error and finds it finite", "[integration][compare]") {
+  for (const auto& [name, key] : std::vector<std::pair<std::string, std::string>>{
+           {"taylor_green", "L1_velocity"}, {"hydrostatic", "p_rms"}, {"cavity", "u_rms"}}) {
+    DYNAMIC_SECTION(name) {
+      const std::string out = "reports/compare_primary_" + name;
+      REQUIRE(run(study_args("compare", name, out, {"--integrators", "leapfrog", "--step-factors", "1"}), out + ".log") == 0);
+      const auto j = read_json(out + "/comparison.json");
+      CHECK(j["error"] == key);
+      REQUIRE(j["runs"].size() == 1);
+      CHECK(finite_number(j["runs"][0]["error"]));
+    }
+  }
+}
+
+TEST_CASE("stability on the dam break: runs without a Martin-Moyce error are reported, not fatal", "[integration][stability]") {
+  // t_end = 0.15 s is before the first Martin & Moyce point (T = 0.832, t = 0.188 s for a = 1 m): the
+  // case leaves final_errors.front_rms_martin_moyce null, which the study used to read as a number.
+  const std::string out = "reports/stability_dam_break";
+  const auto args = study_args("stability", "dam_break", out, {"--sound-speed-factors", "0.5,1", "--step-factors", "1", "--samples", "3",
+                                                               "--set", "time.t_end=0.15", "--set", "output.times=[0.15]"});
+  const int code = run(args, out + ".log");
+  INFO(slurp(out + ".log"));
+  REQUIRE(code == 0);
+  const auto j = read_json(out + "/stability.json");
+  REQUIRE(j["runs"].size() == 2);
+  for (const auto& r : j["runs"]) {
+    CHECK(r["class"] == "stable");
+    CHECK(r["error"].is_null());
+  }
+  CHECK(slurp(out + ".log").find("front_rms_martin_moyce was not measured") != std::string::npos);
+}
+
+TEST_CASE("converge --refine time without --dt0 starts from the case's CFL step", "[integration][converge]") {
+  // Couette with CFL steps (no time.dt): dt0 is the leapfrog's stable step at t = 0.
+  const std::string out = "reports/converge_cfl_dt0";
+  INFO(slurp(out + ".log"));
+  REQUIRE(run(study_args("converge", "couette", out, {"--refine", "time", "--levels", "3", "--integrators", "leapfrog"}), out + ".log") ==
+          0);
+  const auto j = read_json(out + "/convergence.json");
+  const double dt0 = j["levels"][0]["dt"].get<double>();
+  CHECK(dt0 > 0.0);
+  CHECK(dt0 < 0.01);
+  CHECK(j["levels"][2]["dt"].get<double>() == Approx(dt0 / 4));
+  CHECK(j["series"][0]["observed_order"].get<double>() > 1.5);  // the leapfrog is second order
+  CHECK(slurp(out + ".log").find("CFL step at t = 0") != std::string::npos);
+}
+
+TEST_CASE("converge --refine space keeps the configured integrator and refines a spacing", "[integration][converge]") {
+  // The dam break gives discretization.spacing and uses the leapfrog.
+  const std::string out = "reports/converge_space_spacing";
+  INFO(slurp(out + ".log"));
+  REQUIRE(run(study_args("converge", "dam_break", out, {"--refine", "space", "--levels", "2"}), out + ".log") == 0);
+  const auto j = read_json(out + "/convergence.json");
+  CHECK(j["series"][0]["integrator"] == "leapfrog");
+  CHECK(j["levels"][1]["spacing"].get<double>() == Approx(0.05));
+  CHECK(j["series"][0]["steps"][0].get<double>() == Approx(0.1));
+}
+
+TEST_CASE("bad study command lines are exit 2 and name the option", "[integration][studies]") {
+  const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+  for (const auto& [args, option] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"compare", "--config", cfg, "--integrators", "rk4"}, "--integrators"},
+           {{"compare", "--config", cfg, "--integrators", ","}, "--integrators"},
+           {{"compare", "--config", cfg, "--integrators", "leapfrog", "--rtols", "1e-3"}, "--rtols"},
+           {{"compare", "--config", cfg, "--integrators", "cvode_adams", "--step-factors", "1"}, "--step-factors"},
+           {{"compare", "--config", cfg, "--integrators", "leapfrog", "--output", ""}, "--output"},
+           {{"converge", "--config", cfg, "--refine", "time", "--dt0", "-1"}, "--dt0"},
+           {{"converge", "--config", cfg, "--refine", "space", "--dt0", "1e-3"}, "--dt0"},
+           {{"converge", "--config", cfg, "--refine", "time", "--integrators", "cvode_adams"}, "--integrators"},
+           {{"converge", "--config", cfg, "--refine", "time", "--integrators", "leapfrog:X"}, "--integrators"},
+           {{"stability", "--config", cfg, "--sound-speed-factors", "0"}, "--sound-speed-factors"},
+           {{"stability", "--config", cfg, "--step-factors", "1,-2"}, "--step-factors"},
+           {{"stability", "--config", cfg, "--osc-threshold", "-1"}, "--osc-threshold"},
+       }) {
+    DYNAMIC_SECTION(args[0] << " " << option << " " << args.back()) {
+      const std::string log = "reports/bad_study_option.log";
+      CHECK(run(args, log) == 2);
+      CHECK(slurp(log).find(option) != std::string::npos);
+    }
+  }
 }

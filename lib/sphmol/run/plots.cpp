@@ -1,49 +1,12 @@
 #include "sphmol/run/plots.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <sstream>
 
-#include "sphmol/io/atomic_file.hpp"
+#include "sphmol/io/gnuplot.hpp"
 
 namespace sphmol {
 
-namespace {
-
-// gnuplot on PATH, or "" (checked first so a missing program is one clear warning).
-std::string find_gnuplot() {
-  const char* path = std::getenv("PATH");
-  if (!path) return {};
-  std::stringstream dirs(path);
-  std::string dir;
-  while (std::getline(dirs, dir, ':')) {
-    const std::string candidate = (dir.empty() ? "." : dir) + "/gnuplot";
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
-  return {};
-}
-
-// Runs `gnuplot script` inside `dir`; returns its exit status (-1 if it could not run).
-int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script) {
-  const pid_t pid = ::fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    ::execl(gnuplot.c_str(), "gnuplot", script.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-}  // namespace
-
-PlotResult make_plots(const std::vector<PlotScript>& plots, const OutputSink& out) {
+PlotResult make_plots(const std::vector<PlotScript>& plots, const OutputSink& out, const std::function<bool()>& interrupted) {
   PlotResult r;
   if (!out.enabled || plots.empty()) return r;
   const std::string gnuplot = find_gnuplot();
@@ -53,16 +16,26 @@ PlotResult make_plots(const std::vector<PlotScript>& plots, const OutputSink& ou
     return r;
   }
   for (const auto& p : plots) {
-    const std::string stem = std::filesystem::path(p.png).stem().string();
-    const std::string script = "plot_" + stem + ".gp";
-    write_file_atomically(out.path(script), p.script);
-    std::filesystem::remove(out.path(p.png));
-    const int status = run_gnuplot(gnuplot, out.directory, script);
-    if (status == 0 && std::filesystem::exists(out.path(p.png)))
+    if (interrupted && interrupted()) {
+      r.interrupted = true;
+      break;
+    }
+    const std::string script = "plot_" + std::filesystem::path(p.png).stem().string() + ".gp";
+    const GnuplotOutcome g = run_gnuplot(gnuplot, out.directory, script, p.script, p.png, interrupted);
+    // The run's own files (summary "files", --overwrite): the script and gnuplot's log always, the PNG
+    // when it was made.
+    out.record(script);
+    out.record(std::filesystem::path(script).stem().string() + ".gnuplot.log");
+    if (g.ok) {
+      out.record(p.png);
       r.written.push_back(p.png);
-    else
-      r.warnings.push_back("output.plots: gnuplot failed on " + out.path(script) + " (exit status " +
-                           std::to_string(status) + "), no " + p.png);
+      continue;
+    }
+    r.warnings.push_back("output.plots: no " + p.png + ": " + g.problem);
+    if (g.interrupted) {
+      r.interrupted = true;
+      break;
+    }
   }
   return r;
 }

@@ -214,21 +214,28 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"pair_passes", sys->pair_passes().empty() ? nlohmann::json("stored") : nlohmann::json(sys->pair_passes())}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
+  if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
+  // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
+  // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
+  // the end of the run (and the plots).
+  const auto signal_after_end = [&] {
+    if (signal || !opt.handle_signals || !blow_up.is_null() || !(signal = pending_signal())) return;
+    checkpoint();
+    if (opt.log) *opt.log << "interrupted by signal " << signal << " after t = " << t << " s; checkpoint written\n";
+  };
+  signal_after_end();
+  if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
+    const auto interrupted = [&] { return opt.handle_signals && pending_signal() != 0; };
+    const PlotResult plots = make_plots(c.plots(out), out, interrupted);
+    j["plots"] = plots.written;
+    for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
+    signal_after_end();
+  }
   j["status"] = signal ? "interrupted" : blow_up.is_null() ? "completed" : "blown_up";
   if (!blow_up.is_null()) j["blow_up"] = blow_up;
   if (signal) {
     j["signal"] = signal;
     j["t_reached"] = t;
-  }
-  if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
-  if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
-    const PlotResult plots = make_plots(c.plots(out), out);
-    for (const auto& png : plots.written) {
-      out.record(png);
-      out.record("plot_" + std::filesystem::path(png).stem().string() + ".gp");
-    }
-    j["plots"] = plots.written;
-    for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   }
   return j;
 }

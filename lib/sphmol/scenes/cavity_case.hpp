@@ -27,6 +27,7 @@ class CavityCase final : public Case<2> {
   std::string reference() const override;
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  std::string primary_error() const override { return "u_rms"; }
   void annotate(nlohmann::json& summary) const override;
   // centrelines.png: u(x = 0.5, y) and v(x, y = 0.5) at the last output against the Ghia points.
   std::vector<PlotScript> plots(const OutputSink& out) const override;

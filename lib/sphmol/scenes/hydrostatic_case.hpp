@@ -19,6 +19,7 @@ class HydrostaticCase final : public Case<2> {
   std::string reference() const override { return "hydrostatic p = rho0 g (depth - y)"; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  std::string primary_error() const override { return "p_rms"; }
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
 

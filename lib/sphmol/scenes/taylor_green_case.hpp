@@ -18,6 +18,7 @@ class TaylorGreenCase final : public Case<2> {
   std::string reference() const override { return "taylor_green_vortex (exact)"; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  std::string primary_error() const override { return "L1_velocity"; }
   void annotate(nlohmann::json& summary) const override;
   // decay.png: max|v| of the particles at the output times against U e^{bt} (log scale).
   std::vector<PlotScript> plots(const OutputSink& out) const override;

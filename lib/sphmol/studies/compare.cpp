@@ -143,7 +143,8 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
                       {"status", S["status"]}});
       if (opt.log)
         *opt.log << "compare: " << spec.label << ' ' << setting << ": error " << fmt(error) << ", wall " << fmt(wall) << " s, CPU "
-                 << fmt(r.cpu_seconds) << " s, " << S["rhs_evals"] << " RHS evaluations\n";
+                 << fmt(r.cpu_seconds) << " s, " << S["rhs_evals"] << " RHS evaluations" << (r.note.empty() ? "" : "; " + r.note)
+                 << '\n';
       if (!r.blown_up) {
         series.x.push_back(wall);
         series.y.push_back(error);
@@ -160,10 +161,9 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   const nlohmann::json fastest_exact =
       opt.reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
   write_file_atomically(opt.output_dir + "/comparison.csv", csv.str());
-  const std::string png = opt.output_dir + "/comparison.png";
-  const std::string chart_problem = draw_chart(chart, png);
+  const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");
   // The same against CPU time: on a shared machine other jobs stretch the wall time.
-  draw_chart(cpu_chart, opt.output_dir + "/comparison_cpu.png");
+  draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");
   nlohmann::json j{{"case", base.case_name},
                    {"error", error_key},
                    {"reference_run", reference},

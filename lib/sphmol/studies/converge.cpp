@@ -54,8 +54,15 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   cfg.output.profiles = false;
 
   std::vector<IntegratorSpec> specs = opt.integrators;
-  if (specs.empty())
-    specs = time ? default_time_integrators() : parse_integrator_list("arkode_erk:ARKODE_DORMAND_PRINCE_7_4_5", "");
+  if (specs.empty() && time) specs = default_time_integrators();
+  if (specs.empty()) {
+    // Space refinement honours the configured integrator and its accuracy settings.
+    IntegratorSpec s;
+    s.integrator = base.time.integrator;
+    s.table = base.time.integrator == "arkode_erk" ? base.time.table : std::string();
+    s.label = s.table.empty() ? s.integrator : s.integrator + ":" + s.table;
+    specs.push_back(s);
+  }
 
   nlohmann::json levels = nlohmann::json::array();
   nlohmann::json series = nlohmann::json::array();
@@ -66,11 +73,18 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
               true, {}};
 
   std::vector<double> ref_state;
+  std::string series_error_key = "e_rms";  // the case's primary error, from the first summary
   double dt0 = 0.0;
   if (time) {
     if (opt.dt0) dt0 = *opt.dt0;
     else if (base.time.dt) dt0 = *base.time.dt;
-    else throw std::invalid_argument("converge --refine time needs a base step: time.dt in the config or --dt0");
+    else dt0 = initial_stable_step(cfg);  // the case's CFL step at t = 0 (time.cfl)
+    if (!(dt0 > 0.0 && std::isfinite(dt0)))
+      throw std::invalid_argument("converge --refine time: no usable coarsest step (" + fmt(dt0) + " s); give --dt0");
+    if (dt0 > cfg.time.t_end)
+      throw std::invalid_argument("converge --refine time: the coarsest step " + fmt(dt0) + " s is longer than time.t_end = " +
+                                  fmt(cfg.time.t_end) + " s; give a smaller --dt0");
+    if (opt.log && !opt.dt0 && !base.time.dt) *opt.log << "converge: coarsest step dt0 = " << fmt(dt0) << " s (the CFL step at t = 0)\n";
     const double dt_fine = dt0 / std::pow(2.0, opt.levels - 1);
     for (int k = 0; k < opt.levels; ++k) levels.push_back({{"level", k}, {"dt", dt0 / std::pow(2.0, k)}});
     Config rc = cfg;
@@ -85,8 +99,14 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
                << " s)\n";
   } else {
     const int n0 = base.discretization.particles_across;
-    if (n0 <= 0) throw std::invalid_argument("converge --refine space needs discretization.particles_across");
-    for (int k = 0; k < opt.levels; ++k) levels.push_back({{"level", k}, {"particles_across", n0 << k}});
+    const double dx0 = base.discretization.spacing;
+    if (n0 <= 0 && !(dx0 > 0.0)) throw std::invalid_argument("converge --refine space needs discretization.particles_across or discretization.spacing");
+    if (n0 > 0 && (static_cast<long long>(n0) << (opt.levels - 1)) > 1'000'000'000LL)
+      throw std::invalid_argument("converge --refine space: particles_across " + std::to_string(n0) + " x 2^" +
+                                  std::to_string(opt.levels - 1) + " is too many");
+    for (int k = 0; k < opt.levels; ++k)
+      levels.push_back(n0 > 0 ? nlohmann::json{{"level", k}, {"particles_across", n0 << k}}
+                              : nlohmann::json{{"level", k}, {"spacing", dx0 / std::pow(2.0, k)}});
   }
 
   for (const auto& spec : specs) {
@@ -101,16 +121,28 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
         c.time.dt = dt0 / std::pow(2.0, k);
         xk = *c.time.dt;
       } else {
-        c.discretization.particles_across = base.discretization.particles_across << k;
-        c.discretization.spacing = 0.0;
-        if (opt.integrators.empty()) {
-          c.time.rtol = 1e-9;
-          c.time.dt.reset();
+        const double refine = std::pow(2.0, k);
+        if (base.discretization.particles_across > 0) {
+          c.discretization.particles_across = base.discretization.particles_across << k;
+          c.discretization.spacing = 0.0;
+        } else {
+          c.discretization.spacing = base.discretization.spacing / refine;
         }
-        xk = base.geometry.channel_height > 0 ? base.geometry.channel_height / c.discretization.particles_across
-                                               : 1.0 / c.discretization.particles_across;
+        // A fixed step shrinks with dx (constant Courant number), as CFL steps do by themselves.
+        if (base.time.dt) c.time.dt = *base.time.dt / refine;
+        xk = 0.0;
       }
       const StudyRun r = run_study_case(c);
+      if (r.summary.contains("primary_error")) series_error_key = r.summary["primary_error"].get<std::string>();
+      if (!time) {
+        // The spacing the scene actually used (particles_across is turned into one by the scene).
+        const auto& d = r.summary.value("discretization", nlohmann::json::object());
+        xk = d.contains("spacing") && d["spacing"].is_number() ? d["spacing"].get<double>()
+             : c.discretization.spacing > 0.0                  ? c.discretization.spacing
+                                                              : (base.geometry.channel_height > 0 ? base.geometry.channel_height : 1.0) /
+                                                                    c.discretization.particles_across;
+      }
+      if (opt.log && !r.note.empty()) *opt.log << "converge: " << spec.label << " level " << k << ": " << r.note << '\n';
       const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : relative_velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))
                             : r.error;
       errors.push_back(e);
@@ -132,12 +164,13 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
     if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
   }
+  if (!time) chart.ylabel = "final " + series_error_key;
   write_file_atomically(opt.output_dir + "/convergence.csv", csv.str());
-  const std::string problem = draw_chart(chart, opt.output_dir + "/convergence.png");
+  const std::string problem = draw_chart(chart, opt.output_dir, "convergence");
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +
                                   std::string(kReferenceTable) + " at dt_finest/" + std::to_string(kReferenceRefinement)
-                            : "the case's primary final error (" + std::string("vs analytic reference") + ")";
+                            : "the case's primary final error " + series_error_key + " against its reference";
   if (!problem.empty()) j["chart_problem"] = problem;
   write_file_atomically(opt.output_dir + "/convergence.json", j.dump(2) + "\n");
   return j;

@@ -1,13 +1,16 @@
 #pragma once
 // Convergence studies (sph-mol converge).
-//  time:  spatial discretisation fixed; fixed step dt0 / 2^k, k = 0..levels-1 (dt0 = time.dt of the
-//         config, or --dt0). Error of level k = rms over all fluid velocity components at t_end of
-//         (v_k - v_ref) divided by max |v_ref|, where v_ref is a reference run of the same
-//         discretisation with ARKODE Verner 8_5_6 (order 6) at step dt_finest / 8. Expected order:
-//         2 for the leapfrogs, the table's q for ERK.
-//  space: particles_across n0 * 2^k with h/dx fixed (discretization.smoothing_ratio); time error made
-//         negligible (ARKODE Dormand-Prince 5 adaptive, rtol 1e-9 unless --integrators says otherwise);
-//         error = the case's primary final error against its analytic reference.
+//  time:  spatial discretisation fixed; fixed step dt0 / 2^k, k = 0..levels-1 (dt0 = --dt0, else
+//         time.dt of the config, else the case's CFL step at t = 0: the built system's stable_step
+//         after one RHS evaluation of the initial state). Error of level k = rms over all fluid
+//         velocity components at t_end of (v_k - v_ref) divided by max |v_ref|, where v_ref is a
+//         reference run of the same discretisation with ARKODE Verner 8_5_6 (order 6) at step
+//         dt_finest / 8. Expected order: 2 for the leapfrogs, the table's q for ERK.
+//  space: discretization.particles_across n0 * 2^k, or discretization.spacing dx0 / 2^k, with h/dx
+//         fixed (discretization.smoothing_ratio); the configured integrator (or --integrators) with
+//         its accuracy settings: rtol as configured, a fixed time.dt halved with dx (constant Courant
+//         number), CFL steps as they come; error = the case's primary final error against its
+//         reference, plotted against the spacing the scene used.
 // Observed order per level pair: log(e_k / e_{k+1}) / log 2; overall: least-squares slope of
 // log e vs log(dt) (or log dx). Writes convergence.csv, convergence.json and convergence.png.
 #include <iosfwd>

@@ -1,6 +1,8 @@
 #pragma once
-// Log-log line charts drawn by gnuplot (Debian gnuplot-nox, pngcairo or png terminal): one line per
-// series. The data and the script are written next to the PNG so the chart can be redrawn.
+// Log-log line charts of the studies, drawn by gnuplot through the one driver (io/gnuplot.hpp): one
+// line per series. The data (STEM.dat) and the script (STEM.gp) are written next to the PNG so the
+// chart can be redrawn (`gnuplot STEM.gp` in the output directory); gnuplot's messages go to
+// STEM.gnuplot.log. Titles, labels and series names are reduced to gnuplot_text's character set.
 #include <string>
 #include <vector>
 
@@ -21,11 +23,12 @@ struct Chart {
   bool tight = false;                 // axes end at the data (plus a margin), not at whole decades
 };
 
-// Writes PNG_PATH (and PNG_PATH minus ".png" plus ".dat"/".gp"). Returns an empty string on
-// success, otherwise why no PNG was made (gnuplot missing or failing); the data files are kept.
-std::string draw_chart(const Chart& chart, const std::string& png_path);
+// The gnuplot script of `chart`, reading STEM.dat and writing STEM.png (relative names; STEM must be a
+// plain file name, io/gnuplot.hpp).
+std::string chart_script(const Chart& chart, const std::string& stem);
 
-// Shell-safe single-quoted string for gnuplot commands.
-std::string gnuplot_quote(const std::string& s);
+// Writes DIR/STEM.dat, DIR/STEM.gp and draws DIR/STEM.png. Returns an empty string on success,
+// otherwise why no PNG was made (gnuplot missing or failing); the data files are kept.
+std::string draw_chart(const Chart& chart, const std::string& dir, const std::string& stem);
 
 }  // namespace sphmol

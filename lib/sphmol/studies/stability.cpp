@@ -113,7 +113,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       if (opt.log)
         *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
                  << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
-                 << (cause.empty() ? "" : ", " + cause) << ")\n";
+                 << (cause.empty() ? "" : ", " + cause) << ")" << (r.note.empty() ? "" : "; " + r.note) << '\n';
     }
   write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
@@ -132,7 +132,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   chart.logy = spans_decade(&ChartSeries::y);
   for (const char* k : {"stable", "oscillating", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
-  const std::string problem = draw_chart(chart, opt.output_dir + "/stability.png");
+  const std::string problem = draw_chart(chart, opt.output_dir, "stability");
   nlohmann::json j{{"case", base.case_name}, {"step_mode", fixed ? "fixed dt" : "cfl factor"}, {"osc_threshold", opt.osc_threshold},
                    {"samples", opt.samples}, {"runs", runs}};
   if (!problem.empty()) j["chart_problem"] = problem;

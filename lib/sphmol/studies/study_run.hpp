@@ -19,9 +19,14 @@ struct StudyRun {
   double cpu_seconds = 0.0;
   bool blown_up = false;
   std::vector<double> final_state;  // y at t_end (empty if blown up)
+  std::string note;                 // why a completed run has no error (primary error not measured)
 };
 
 StudyRun run_study_case(const Config& config);
+
+// The case's CFL step at t = 0: the built system's stable_step after one RHS evaluation of the
+// initial state (time.cfl coefficients of the config). Throws like run_case on an unknown case.
+double initial_stable_step(const Config& config);
 
 // The reference integrator of the time studies (converge --refine time, compare --reference-dt):
 // ARKODE Verner 8(5)6, order 6, at a fixed step.
