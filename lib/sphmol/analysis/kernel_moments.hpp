@@ -1,5 +1,5 @@
 #pragma once
-// Continuous kernel moments (seed 000 eqs 64 and 69), by GSL quadrature, in any dimension.
+// Continuous kernel moments (Vukčević 2012, eqs 64 and 69), by GSL quadrature, in any dimension.
 //   M_k  = int (x - x')_1^k W(x - x', h) dx'        (eq 64: M_0 = 1, M_k = 0 for k >= 1 is the
 //                                                   ideal; even M_k > 0 for a positive kernel)
 //   M'_k = int (x - x')_1^k dW/dx'_1 dx'           (eq 69: M'_0 = 0, M'_1 = 1, others 0)
