@@ -4,8 +4,9 @@
 // the runtime KernelInfo from kernels/registry.hpp.
 //
 // Convention (shared by every kernel file): W(r, h) = sigma_D / h^D * f(r/h), with compact
-// support r < support * h. The sources write kernels either in R = r/h (Vukčević 2012; Vukčević et al.
-// 2012; Potapov & Reshetnikova 2021) or in R = r/(kappa h) (Niedoba 2012); each kernel file converts to r/h and says so.
+// support r < support * h. The sources write kernels either in R = r/h (Vukčević 2012; Vukčević et
+// al. 2012; Potapov & Reshetnikova 2021) or in R = r/(kappa h) (Niedoba 2012); each kernel file
+// converts to r/h and says so.
 //
 // Optional members (read through the helpers below, so older kernels need not define them):
 //   source               — where the formula comes from ("Potapov & Reshetnikova 2021, eq 9 / Niedoba 2012, eq 2.41")
