@@ -2,10 +2,10 @@
 // Hydrostatic kernel analysis of Potapov & Reshetnikova 2021, secs. 4-6 on the 2D triangular
 // lattice with edge d.
 //
-// Setting (our reading of 001): a heavy layer at rest, P = rho0 g y with y the depth (eq 16).
-// Every particle has mass m = a_p d^2 d0 rho0 (eq 15; a_p = sqrt(3)/2, pi/4, 1 is the cell area
-// of hexagon, circle, square over d^2; d0 = 1 in 2D) and volume V = m/rho0. For an interior
-// particle i with h = k d:
+// Setting (our reading of Potapov & Reshetnikova 2021): a heavy layer at rest, P = rho0 g y with y
+// the depth (eq 16). Every particle has mass m = a_p d^2 d0 rho0 (eq 15; a_p = sqrt(3)/2, pi/4, 1
+// is the cell area of hexagon, circle, square over d^2; d0 = 1 in 2D) and volume V = m/rho0. For an
+// interior particle i with h = k d:
 //   eps_rho   = rho_i/rho0 - 1,  rho_i = sum_j m W(r_ij)                      (eqs 3, 17, 18)
 //             = a_p d^2 sum_j W(r_ij) - 1        (self term included)
 //   eps_gradP = (dP/dy)_i/(rho0 g) - 1, with the symmetric form of eq 4,
