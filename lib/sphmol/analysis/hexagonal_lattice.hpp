@@ -1,6 +1,7 @@
 #pragma once
-// The 2D triangular ("hexagonal", dense-packing) lattice of seed 001 sec. 4, fig. 2: edge d,
-// rows horizontal (nearest neighbours along x), rows Delta y = sqrt(3)/2 d apart (eq 20).
+// The 2D triangular ("hexagonal", dense-packing) lattice of Potapov & Reshetnikova 2021, sec. 4,
+// fig. 2: edge d, rows horizontal (nearest neighbours along x), rows Delta y = sqrt(3)/2 d apart
+// (eq 20).
 #include <array>
 #include <vector>
 

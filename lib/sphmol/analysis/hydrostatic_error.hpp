@@ -1,10 +1,11 @@
 #pragma once
-// Hydrostatic kernel analysis of seed 001 secs. 4-6 on the 2D triangular lattice with edge d.
+// Hydrostatic kernel analysis of Potapov & Reshetnikova 2021, secs. 4-6 on the 2D triangular
+// lattice with edge d.
 //
-// Setting (our reading of 001): a heavy layer at rest, P = rho0 g y with y the depth (eq 16).
-// Every particle has mass m = a_p d^2 d0 rho0 (eq 15; a_p = sqrt(3)/2, pi/4, 1 is the cell area
-// of hexagon, circle, square over d^2; d0 = 1 in 2D) and volume V = m/rho0. For an interior
-// particle i with h = k d:
+// Setting (our reading of Potapov & Reshetnikova 2021): a heavy layer at rest, P = rho0 g y with y
+// the depth (eq 16). Every particle has mass m = a_p d^2 d0 rho0 (eq 15; a_p = sqrt(3)/2, pi/4, 1
+// is the cell area of hexagon, circle, square over d^2; d0 = 1 in 2D) and volume V = m/rho0. For an
+// interior particle i with h = k d:
 //   eps_rho   = rho_i/rho0 - 1,  rho_i = sum_j m W(r_ij)                      (eqs 3, 17, 18)
 //             = a_p d^2 sum_j W(r_ij) - 1        (self term included)
 //   eps_gradP = (dP/dy)_i/(rho0 g) - 1, with the symmetric form of eq 4,
@@ -27,8 +28,8 @@ struct HydrostaticErrors {
   double eps_gradp = 0.0;
 };
 
-// Lattice formula (d = 1). The derivative is kernel.dWdr_k(r, h, k), i.e. 001 eq 13b for the
-// composite kernel.
+// Lattice formula (d = 1). The derivative is kernel.dWdr_k(r, h, k), i.e. Potapov & Reshetnikova
+// 2021, eq 13b for the composite kernel.
 HydrostaticErrors hydrostatic_errors(const KernelInfo<2>& kernel, double k, double a_p);
 
 // The same errors by brute force: an explicit hexagonal block of particles (edge d, centre
@@ -53,8 +54,8 @@ struct HydrostaticRow {
 };
 
 // Roots by scanning `scan` intervals for sign changes, then GSL Brent. A sign change across a
-// jump (truncated kernels gaining a shell) or a pole (001 eq 13b at k = 63/74) is not a root and
-// is dropped: a root must have |f| < 1e-9.
+// jump (truncated kernels gaining a shell) or a pole (Potapov & Reshetnikova 2021, eq 13b at k =
+// 63/74) is not a root and is dropped: a root must have |f| < 1e-9.
 HydrostaticRow hydrostatic_row(const KernelInfo<2>& kernel, double a_p, double eps = 0.01, double k_min = 0.75,
                                double k_max = 1.25, int scan = 2000);
 

@@ -1,9 +1,9 @@
 #pragma once
-// Continuous kernel moments (seed 000 eqs 64 and 69), by GSL quadrature, in any dimension.
+// Continuous kernel moments (Vukčević 2012, eqs 64 and 69), by GSL quadrature, in any dimension.
 //   M_k  = int (x - x')_1^k W(x - x', h) dx'        (eq 64: M_0 = 1, M_k = 0 for k >= 1 is the
 //                                                   ideal; even M_k > 0 for a positive kernel)
 //   M'_k = int (x - x')_1^k dW/dx'_1 dx'           (eq 69: M'_0 = 0, M'_1 = 1, others 0)
-// (x - x')_1 is the component along one axis, so in 1D these are exactly 000's moments and in
+// (x - x')_1 is the component along one axis, so in 1D these are exactly Vukčević's moments and in
 // D > 1 they are the moments of the kernel's 1D marginal. For a radial kernel the angular part
 // is exact: int n_1^k dOmega, leaving a radial integral over the kernel's pieces. Odd moments
 // vanish by the kernel's parity, so they are reported as 0 without integration.

@@ -1,8 +1,8 @@
 #pragma once
-// Discrete particle-consistency sums at a point x (seed 000 eqs 90-91, and their gradient
+// Discrete particle-consistency sums at a point x (Vukčević 2012, eqs 90-91, and their gradient
 // analogues, the discrete form of eq 69):
 //   S0  = sum_b W(x - x_b) V_b                       -> 1   (eq 90, constant consistency)
-//   S1  = sum_b (x - x_b) W(x - x_b) V_b             -> 0   (eq 91; printed "= 1" in seed 000,
+//   S1  = sum_b (x - x_b) W(x - x_b) V_b             -> 0   (eq 91; printed "= 1" in Vukčević 2012,
 //                                                         but it is the discrete eq 87, = 0)
 //   G0  = sum_b grad_x W(x - x_b) V_b                -> 0
 //   G1  = sum_b (x_b - x) (x) grad_x W(x - x_b) V_b  -> identity (gradient of a linear field)
@@ -39,7 +39,7 @@ ConsistencySums<D> consistency_sums(const ParticleSet<D>& set, const std::array<
     ++s.neighbours;
     const double w = kernel.W(r, h) * set.V[b];
     // grad_x W = W'(r) dx / r; with k_smoothing = h/d > 0 the k-dependent derivative is used
-    // (001 eq 13b for the composite kernel).
+    // (Potapov & Reshetnikova 2021, eq 13b for the composite kernel).
     const double dw = k_smoothing > 0.0 ? kernel.dWdr_k(r, h, k_smoothing) : kernel.dWdr(r, h);
     const double f = r > 0.0 ? dw / r * set.V[b] : 0.0;
     s.S0 += w;

@@ -11,7 +11,7 @@ namespace sphmol::analysis {
 template <int D>
 struct ParticleSet {
   std::vector<std::array<double, D>> x;
-  std::vector<double> V;  // volumes m/rho ("Delta x_beta" of seed 000 eq 90)
+  std::vector<double> V;  // volumes m/rho ("Delta x_beta" of Vukčević 2012, eq 90)
 };
 
 // (2n+1)^D points j*d, j = -n..n per axis, each with volume d^D; the origin is a particle.

@@ -1,6 +1,6 @@
 #pragma once
 // RKPM / moment-matrix kernel correction restoring linear consistency for one particle i
-// (seed 000 eqs 92-99 with delta = 1; seed 003 eqs 2.80-2.86). The corrected kernel is
+// (Vukčević 2012, eqs 92-99 with delta = 1; Niedoba 2012, eqs 2.80-2.86). The corrected kernel is
 //   W~_ij = W_ij * beta . p_j,   p_j = (1, (x_i - x_j)/L),
 // with beta from the (D+1)x(D+1) moment matrix M = sum_j V_j W_ij p_j p_j^T (eq 99 with the
 // SPH kernel as window function, eqs 96-97: M beta = e_0). Then sum_j V_j W~_ij f_j = f_i for

@@ -1,6 +1,6 @@
 #pragma once
 // Dynamic boundary particles (DBC; Crespo, Gomez-Gesteira & Dalrymple 2007, Comput. Mater. Continua
-// 5:173): wall particles obey the same continuity equation as the fluid (seed 003 eq 2.61),
+// 5:173): wall particles obey the same continuity equation as the fluid (Niedoba 2012, eq 2.61),
 //   drho_a/dt = sum_j m_j v_aj . grad_a W_aj   over the fluid neighbours j of wall particle a,
 // but do not move; their pressure follows from the same EOS. A fluid particle approaching a wall
 // compresses the wall particles near it, whose pressure then pushes it back. Wall densities live in

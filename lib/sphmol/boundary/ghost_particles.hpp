@@ -1,15 +1,15 @@
 #pragma once
-// Ghost (mirror) particles for planar, axis-aligned walls, seed 003 §2.2.4 (eqs 2.77-2.78) and §3.3
-// (Fig 3.4). At every RHS evaluation, each fluid particle closer than the kernel support
+// Ghost (mirror) particles for planar, axis-aligned walls, Niedoba 2012, §2.2.4 (eqs 2.77-2.78) and
+// §3.3 (Fig 3.4). At every RHS evaluation, each fluid particle closer than the kernel support
 // (kappa * the largest current h, so variable-h scenes get more images where the gas expands, as in
-// 003 §3.4) to a wall gets a mirror
+// Niedoba 2012, §3.4) to a wall gets a mirror
 // image behind it; a particle near two walls (a corner) gets three images: one per wall and one
 // mirrored through both (Fig 3.4); in 3D near three walls, all seven. Images carry the source's mass
-// (003 §3.3: "m_f = m"), smoothing length and internal energy (003 §3.5: ghosts "take over" the
-// properties of their source), and its density (GhostStateCopy, after the density pass). Under a body
-// force the pressure is not simply copied (boundary/ghost_hydrostatic_pressure.hpp, after the EOS). Velocities, with
-// v_w the wall velocity:
-//   free slip (003 eqs 2.77-2.78): tangential component kept, normal component mirrored about v_w;
+// (Niedoba 2012, §3.3: "m_f = m"), smoothing length and internal energy (Niedoba 2012, §3.5: ghosts
+// "take over" the properties of their source), and its density (GhostStateCopy, after the density
+// pass). Under a body force the pressure is not simply copied
+// (boundary/ghost_hydrostatic_pressure.hpp, after the EOS). Velocities, with v_w the wall velocity:
+//   free slip (Niedoba 2012, eqs 2.77-2.78): tangential component kept, normal component mirrored about v_w;
 //   no slip: v_g = 2 v_w - v, so the mean of a pair is v_w on the wall (a linear profile continues
 //   through the wall);
 //   corner image: free slip = both mirrors in turn; no slip = -v + v_wA + v_wB (the velocity that

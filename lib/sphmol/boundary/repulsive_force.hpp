@@ -1,10 +1,11 @@
 #pragma once
-// Repulsive virtual boundary particles of Lennard-Jones type, seed 003 eq 2.76 (Monaghan 1994):
+// Repulsive virtual boundary particles of Lennard-Jones type, Niedoba 2012, eq 2.76 (Monaghan
+// 1994):
 //   F_ij = D [ (r0/r)^p1 - (r0/r)^p2 ] x_ij / r^2   for r <= r0,   0 for r > r0,
 // added to the acceleration of fluid particle i for every virtual (wall) particle j. D [m^2/s^2] is of
 // the order of the largest squared velocity (g H for a water column); p1 > p2 (12 and 4 after Monaghan,
-// 9.5 and 4 in 003 §3.3). The virtual particles are massless walls (scenes place them), so this is the
-// only way they act: they add nothing to density sums, pressure or viscous terms.
+// 9.5 and 4 in Niedoba 2012, §3.3). The virtual particles are massless walls (scenes place them),
+// so this is the only way they act: they add nothing to density sums, pressure or viscous terms.
 #include <cmath>
 
 #include "sphmol/rhs/term.hpp"

@@ -3,9 +3,9 @@
 // 231:7057, eq. 27), for a wall at rest or moving uniformly:
 //   p_w = (sum_f p_f W_wf + g . sum_f rho_f (x_w - x_f) W_wf) / sum_f W_wf
 // and the wall density from the inverse EOS. A wall held at rest density has p = 0 (Tait, gauge EOS),
-// which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (000 eq 117)
-// turns it into a force pushing the fluid off the bottom. Wall rows list only fluid neighbours.
-// Wall particles without fluid neighbours keep their pressure of the EOS pass.
+// which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (Vukčević
+// 2012, eq 117) turns it into a force pushing the fluid off the bottom. Wall rows list only fluid
+// neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass.
 #include <array>
 #include <functional>
 

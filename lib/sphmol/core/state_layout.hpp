@@ -1,11 +1,11 @@
 #pragma once
 // Layout of the ODE state vector y for n fluid particles. The state holds only what a scene needs
-// (SPEC §1): positions and velocities always, one block per component (structure of arrays), then
-// the optional first-order fields in a fixed order: density (continuity density, seed 003 eq 2.61),
-// specific internal energy (energy equation, 003 eq 2.66), smoothing length (dh/dt, 003 eq 2.68),
-// and last the densities of the n_wall_density wall particles (dynamic boundary particles, Crespo
-// et al. 2007: walls obey continuity but do not move, so only their density is in the state).
-// The SUNDIALS N_Vector wraps this storage directly.
+// (no unused fields): positions and velocities always, one block per component (structure of
+// arrays), then the optional first-order fields in a fixed order: density (continuity density,
+// Niedoba 2012, eq 2.61), specific internal energy (energy equation, Niedoba 2012, eq 2.66),
+// smoothing length (dh/dt, Niedoba 2012, eq 2.68), and last the densities of the n_wall_density
+// wall particles (dynamic boundary particles, Crespo et al. 2007: walls obey continuity but do not
+// move, so only their density is in the state). The SUNDIALS N_Vector wraps this storage directly.
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Composite kernel of Potapov & Reshetnikova: seed 001 eqs 13a/13b, 2D only (the source gives
+// Composite kernel of Potapov & Reshetnikova 2021, eqs 13a/13b, 2D only (the source gives
 // only the 2D modification), support q = r/h <= 1 with h = k d.
 //   13a: W = 15/(13 h^2) (1 - q^2)^2 (1 - c q^2),  c = 4 - 52/(5 pi).
 //        (Integral: pi int_0^1 (1-u)^2 (1 - c u) du = pi (1/3 - c/12) = 13/15, so the printed

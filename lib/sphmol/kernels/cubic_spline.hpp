@@ -1,8 +1,8 @@
 #pragma once
-// Cubic B-spline (Monaghan & Lattanzio 1985): seed 002 eq 15, seed 000 eq 58, seed 001 eq 8.
-// W = alpha_D (2/3 - R^2 + R^3/2) for R < 1, alpha_D/6 (2-R)^3 for 1 <= R < 2, R = r/h.
-// alpha_D = 1/h, 15/(7 pi h^2), 3/(2 pi h^3) in 1D/2D/3D; tests/unit/test_kernel_normalisation.cpp
-// checks each by GSL quadrature.
+// Cubic B-spline (Monaghan & Lattanzio 1985): Vukčević et al. 2012, eq 15, Vukčević 2012, eq 58,
+// Potapov & Reshetnikova 2021, eq 8. W = alpha_D (2/3 - R^2 + R^3/2) for R < 1, alpha_D/6 (2-R)^3
+// for 1 <= R < 2, R = r/h. alpha_D = 1/h, 15/(7 pi h^2), 3/(2 pi h^3) in 1D/2D/3D;
+// tests/unit/test_kernel_normalisation.cpp checks each by GSL quadrature.
 #include <numbers>
 
 #include "sphmol/kernels/kernel.hpp"

@@ -1,9 +1,10 @@
 #pragma once
-// "Spiky" kernel of Desbrun & Cani (1996), listed as seed 001 eq 11 with support q = r/h <= 2.
-// Seed 001 prints W = A_D (2 - q)^2, but its constants 5/(16 pi h^2) and 15/(64 pi h^3) normalise
-// (2 - q)^3 — Desbrun's original spiky kernel, 15/(pi H^6) (H - r)^3 with H = 2h — and not the
-// square (which would need 3/(8 pi h^2)). We implement the cubic. Its 1D constant is 1/(8h) by
-// the integral (2 int_0^2 (2-q)^3 dq = 8); the printed 1/(4h) is wrong.
+// "Spiky" kernel of Desbrun & Cani (1996), listed as Potapov & Reshetnikova 2021, eq 11 with
+// support q = r/h <= 2. Potapov & Reshetnikova 2021 prints W = A_D (2 - q)^2, but its constants
+// 5/(16 pi h^2) and 15/(64 pi h^3) normalise (2 - q)^3 — Desbrun's original spiky kernel, 15/(pi
+// H^6) (H - r)^3 with H = 2h — and not the square (which would need 3/(8 pi h^2)). We implement the
+// cubic. Its 1D constant is 1/(8h) by the integral (2 int_0^2 (2-q)^3 dq = 8); the printed 1/(4h)
+// is wrong.
 #include <numbers>
 #include <string_view>
 

@@ -1,7 +1,8 @@
 #pragma once
-// Gaussian (Gingold & Monaghan 1977): seed 000 eq 57, W = alpha_D exp(-q^2), q = r/h.
+// Gaussian (Gingold & Monaghan 1977): Vukčević 2012, eq 57, W = alpha_D exp(-q^2), q = r/h.
 // The source defines it on all of R^D with alpha_D = pi^(-D/2) h^-D. We truncate it at q = 3
-// (the support seeds 001 eq 6 and 003 eq 2.43 give the Gaussian family) and RENORMALISE over
+// (the support Potapov & Reshetnikova 2021, eq 6, and Niedoba 2012, eq 2.43, give the Gaussian
+// family) and RENORMALISE over
 // the truncated ball, so that it integrates to exactly 1:
 //   mass_1 = sqrt(pi) erf 3,  mass_2 = pi (1 - e^-9),  mass_3 = pi^(3/2) erf 3 - 6 pi e^-9.
 // The unrenormalised variant is truncated_exponential.hpp.

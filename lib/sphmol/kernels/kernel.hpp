@@ -4,13 +4,14 @@
 // the runtime KernelInfo from kernels/registry.hpp.
 //
 // Convention (shared by every kernel file): W(r, h) = sigma_D / h^D * f(r/h), with compact
-// support r < support * h. The sources write kernels either in R = r/h (seed 000, 001, 002) or in
-// R = r/(kappa h) (seed 003); each kernel file converts to r/h and says so.
+// support r < support * h. The sources write kernels either in R = r/h (Vukčević 2012; Vukčević et
+// al. 2012; Potapov & Reshetnikova 2021) or in R = r/(kappa h) (Niedoba 2012); each kernel file
+// converts to r/h and says so.
 //
 // Optional members (read through the helpers below, so older kernels need not define them):
-//   source               — where the formula comes from ("seed 001 eq 9 / seed 003 eq 2.41")
+//   source               — where the formula comes from ("Potapov & Reshetnikova 2021, eq 9 / Niedoba 2012, eq 2.41")
 //   unavailable_reason   — why `available` is false in this D
-//   derivative_is_exact  — false when dWdr is not d/dr of W (seed 001 composite kernel, eq 13b)
+//   derivative_is_exact  — false when dWdr is not d/dr of W (Potapov & Reshetnikova 2021 composite kernel, eq 13b)
 //   dWdr_k(r, h, k)      — derivative that depends on the smoothing coefficient k = h/d too
 //   mass()               — integral of W over R^D when it is deliberately not 1 (unrenormalised
 //                          truncated Gaussian); 1 otherwise
@@ -85,7 +86,7 @@ double kernel_mass() {
   if constexpr (requires { K::mass(); }) return K::mass(); else return 1.0;
 }
 // Radial derivative when the particle spacing d = h/k is known. Only kernels whose derivative
-// is a separate, k-dependent function (seed 001 eq 13b) differ from dWdr.
+// is a separate, k-dependent function (Potapov & Reshetnikova 2021, eq 13b) differ from dWdr.
 template <class K>
 double kernel_dWdr_k(double r, double h, double k) {
   if constexpr (requires { K::dWdr_k(r, h, k); }) return K::dWdr_k(r, h, k); else return K::dWdr(r, h);

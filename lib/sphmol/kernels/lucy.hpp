@@ -1,6 +1,6 @@
 #pragma once
-// Lucy (1977) bell-shaped quartic: seed 000 eq 55, W = alpha_D (1 + 3q)(1 - q)^3 for q = r/h < 1.
-// alpha_D = 5/(4h), 5/(pi h^2), 105/(16 pi h^3) as printed; all three confirmed by quadrature.
+// Lucy (1977) bell-shaped quartic: Vukčević 2012, eq 55, W = alpha_D (1 + 3q)(1 - q)^3 for q = r/h
+// < 1. alpha_D = 5/(4h), 5/(pi h^2), 105/(16 pi h^3) as printed; all three confirmed by quadrature.
 #include <numbers>
 #include <string_view>
 

@@ -1,7 +1,8 @@
 #pragma once
-// Poly6 kernel of Mueller, Charypar & Gross (2003): seed 001 eq 12, W = A_D (1 - q^2)^3 for
-// q = r/h <= 1. Printed A_D = 35/(16h), 4/(pi h^2), 315/(64 pi h^3). The 2D and 3D constants
-// match the integral; the 1D one does not: 2 int_0^1 (1-q^2)^3 dq = 32/35, so A_1 = 35/(32h).
+// Poly6 kernel of Mueller, Charypar & Gross (2003): Potapov & Reshetnikova 2021, eq 12, W = A_D (1
+// - q^2)^3 for q = r/h <= 1. Printed A_D = 35/(16h), 4/(pi h^2), 315/(64 pi h^3). The 2D and 3D
+// constants match the integral; the 1D one does not: 2 int_0^1 (1-q^2)^3 dq = 32/35, so A_1 =
+// 35/(32h).
 #include <numbers>
 #include <string_view>
 

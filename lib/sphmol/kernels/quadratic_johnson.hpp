@@ -1,8 +1,9 @@
 #pragma once
-// Quadratic kernel of Johnson et al. (1996): seed 001 eq 10 (q = r/h <= 2) and seed 003 eq 2.44
-// (R = r/(kappa h), kappa = 2). W = A_D (3/4 - 3/4 q + 3/16 q^2), A_D = 1/h, 2/(pi h^2),
-// 5/(4 pi h^3); both sources agree and quadrature confirms them. Its derivative does not vanish
-// at q = 0 (dW/dr = -3/4 A_D/h), the known reason it is used for impacts and not for fluids.
+// Quadratic kernel of Johnson et al. (1996): Potapov & Reshetnikova 2021, eq 10 (q = r/h <= 2) and
+// Niedoba 2012, eq 2.44 (R = r/(kappa h), kappa = 2). W = A_D (3/4 - 3/4 q + 3/16 q^2), A_D = 1/h,
+// 2/(pi h^2), 5/(4 pi h^3); both sources agree and quadrature confirms them. Its derivative does
+// not vanish at q = 0 (dW/dr = -3/4 A_D/h), the known reason it is used for impacts and not for
+// fluids.
 #include <numbers>
 #include <string_view>
 

@@ -1,10 +1,10 @@
 #pragma once
-// Quartic of Liu (G.R. Liu 2002): seed 001 eq 9 (q = r/h <= 2) and seed 003 eq 2.41 (R =
-// r/(kappa h), kappa = 2; substituting R = q/2 gives 001's coefficients exactly).
-// W = A_D (2/3 - 9/8 q^2 + 19/24 q^3 - 5/32 q^4), A_D = 1/h, 15/(7 pi h^2), 315/(208 pi h^3);
-// both sources agree and quadrature confirms all three. Note W = -5/32 A_D (q-2)^2 (q^2 - 16/15 q
-// - 16/15) is slightly NEGATIVE for 1.6957 < q < 2 (minimum -1.58e-3 A_D at q = 1.8);
-// neither source claims positivity.
+// Quartic of Liu (G.R. Liu 2002): Potapov & Reshetnikova 2021, eq 9 (q = r/h <= 2) and Niedoba
+// 2012, eq 2.41 (R = r/(kappa h), kappa = 2; substituting R = q/2 gives Potapov & Reshetnikova's
+// coefficients exactly). W = A_D (2/3 - 9/8 q^2 + 19/24 q^3 - 5/32 q^4), A_D = 1/h, 15/(7 pi h^2),
+// 315/(208 pi h^3); both sources agree and quadrature confirms all three. Note W = -5/32 A_D
+// (q-2)^2 (q^2 - 16/15 q - 16/15) is slightly NEGATIVE for 1.6957 < q < 2 (minimum -1.58e-3 A_D at
+// q = 1.8); neither source claims positivity.
 #include <numbers>
 #include <string_view>
 

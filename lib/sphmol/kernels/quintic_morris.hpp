@@ -1,11 +1,12 @@
 #pragma once
-// Quintic spline of Morris (1997): seed 001 eq 7 (q = r/h <= 3) and seed 003 eq 2.42 (R =
-// r/(kappa h), kappa = 3: 81/22 (1-R)^5 = (3-q)^5 / 66 etc., the same shape).
+// Quintic spline of Morris (1997): Potapov & Reshetnikova 2021, eq 7 (q = r/h <= 3) and Niedoba
+// 2012, eq 2.42 (R = r/(kappa h), kappa = 3: 81/22 (1-R)^5 = (3-q)^5 / 66 etc., the same shape).
 // W = A_D [(3-q)^5 - 6(2-q)^5 + 15(1-q)^5] with the terms switched off beyond q = 1, 2, 3.
 // Integral: int_0^a (a-q)^5 q^(D-1) dq = a^(D+5) (D-1)! 5!/(D+5)!, so the correct constants are
 //   A_1 = 1/(120 h), A_2 = 7/(478 pi h^2), A_3 = 1/(120 pi h^3).
-// Seed 001 prints 120/h (inverted) and 3/(395 pi h^3) (wrong; the literature's 3/(359 pi) is also
-// off by 0.3%); seed 003's 33/20, 2079/239, 297/20 over kappa^D agree with the integral.
+// Potapov & Reshetnikova 2021 prints 120/h (inverted) and 3/(395 pi h^3) (wrong; the literature's
+// 3/(359 pi) is also off by 0.3%); Niedoba's 33/20, 2079/239, 297/20 over kappa^D agree with the
+// integral.
 #include <numbers>
 #include <string_view>
 

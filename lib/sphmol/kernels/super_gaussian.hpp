@@ -1,7 +1,7 @@
 #pragma once
-// Super-Gaussian (Monaghan 2005): seed 001 eq 6, W = A_D (3/2 - q^2) exp(-q^2) for q = r/h <= 3.
-// The printed A_D = 1/sqrt(pi), 2/pi, e^4/(16 pi) are wrong for this truncated form; the
-// integral wins (we renormalise over q < 3):
+// Super-Gaussian (Monaghan 2005): Potapov & Reshetnikova 2021, eq 6, W = A_D (3/2 - q^2) exp(-q^2)
+// for q = r/h <= 3. The printed A_D = 1/sqrt(pi), 2/pi, e^4/(16 pi) are wrong for this truncated
+// form; the integral wins (we renormalise over q < 3):
 //   1D: 1/sqrt(pi) is the constant over all of R; over q < 3 the mass is sqrt(pi) erf 3 + 3 e^-9.
 //   2D: 2/pi is the constant over R^2; over q < 3 the mass is pi/2 (1 + 17 e^-9) (2e-3 more).
 //   3D: (3/2 - q^2) e^-q^2 has ZERO mass over R^3 (only (5/2 - q^2) is a 3D super-Gaussian).

@@ -1,11 +1,11 @@
 #pragma once
-// Exponential (truncated Gaussian) of seed 003 eq 2.43: W = alpha_D exp(-(3R)^2) for R < 1 with
-// R = r/(kappa h), kappa = 3. In q = r/h that is exp(-q^2) for q < 3, and alpha_D = 3/(sqrt(pi)
-// kappa h), 9/(pi kappa^2 h^2), 27/(pi^(3/2) kappa^3 h^3) becomes pi^(-D/2) h^-D: the constant
-// of the UNtruncated Gaussian. We keep the source's constant (not renormalised), so the kernel
-// integrates to mass() = 1 - (Gaussian tail beyond 3h): erf 3, 1 - e^-9, erf 3 - 6 e^-9/sqrt(pi)
-// (about 1 - 2.2e-5, 1 - 1.2e-4, 1 - 4.4e-4). Its jump of W at the support edge is what seed 003
-// warns about; gaussian.hpp is the renormalised variant.
+// Exponential (truncated Gaussian) of Niedoba 2012, eq 2.43: W = alpha_D exp(-(3R)^2) for R < 1
+// with R = r/(kappa h), kappa = 3. In q = r/h that is exp(-q^2) for q < 3, and alpha_D =
+// 3/(sqrt(pi) kappa h), 9/(pi kappa^2 h^2), 27/(pi^(3/2) kappa^3 h^3) becomes pi^(-D/2) h^-D: the
+// constant of the UNtruncated Gaussian. We keep the source's constant (not renormalised), so the
+// kernel integrates to mass() = 1 - (Gaussian tail beyond 3h): erf 3, 1 - e^-9, erf 3 - 6
+// e^-9/sqrt(pi) (about 1 - 2.2e-5, 1 - 1.2e-4, 1 - 4.4e-4). Its jump of W at the support edge is
+// what Niedoba 2012 warns about; gaussian.hpp is the renormalised variant.
 #include <cmath>
 #include <numbers>
 #include <string_view>

@@ -1,5 +1,6 @@
 #pragma once
-// Wendland C2 kernel (Wendland 1995, Adv. Comput. Math. 4:389) — beyond the seeds, needed for the
+// Wendland C2 kernel (Wendland 1995, Adv. Comput. Math. 4:389) — not in the SPH texts the other
+// kernels come from; needed for the
 // dam-break case. psi_{3,1}(R) = (1 - R)^4 (4R + 1) is positive definite in D <= 3; with
 // R = q/2 (support 2h) it reads (1 - q/2)^4 (2q + 1). Constants from the integral:
 // A_D = 3/(4h), 7/(4 pi h^2), 21/(16 pi h^3).

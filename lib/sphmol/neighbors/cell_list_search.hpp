@@ -1,9 +1,9 @@
 #pragma once
-// Cell linked list (seed 003 §2.2.5): particles binned into cells at least one search radius wide,
-// each particle tested against the 3^D cells around its own (found once per cell, shared by its
-// particles). O(N) for a bounded density; periodic directions wrap the cell index. Particles outside
-// the box in a non-periodic direction are put in the edge cell, so an escaping particle slows the
-// search but is never lost.
+// Cell linked list (Niedoba 2012, §2.2.5): particles binned into cells at least one search radius
+// wide, each particle tested against the 3^D cells around its own (found once per cell, shared by
+// its particles). O(N) for a bounded density; periodic directions wrap the cell index. Particles
+// outside the box in a non-periodic direction are put in the edge cell, so an escaping particle
+// slows the search but is never lost.
 #include "sphmol/neighbors/neighbor_search.hpp"
 
 namespace sphmol {

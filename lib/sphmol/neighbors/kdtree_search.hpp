@@ -1,5 +1,5 @@
 #pragma once
-// Fixed-radius neighbour search with a CGAL kd-tree (seed 003 §2.2.5, "tree method"). Periodic
+// Fixed-radius neighbour search with a CGAL kd-tree (Niedoba 2012, §2.2.5, "tree method"). Periodic
 // directions are handled by inserting images of the particles within `radius` of a periodic face.
 #include "sphmol/neighbors/neighbor_search.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
-// Monaghan artificial viscosity, seed 003 eqs 2.70-2.72:
+// Monaghan artificial viscosity, Niedoba 2012, eqs 2.70-2.72:
 //   Pi_ij = (beta theta_ij - alpha cbar_ij) theta_ij / rhobar_ij   if v_ij . x_ij < 0, else 0
-//   theta_ij = h_ij v_ij . x_ij / (|x_ij|^2 + eta^2),  eta = eta_factor h_ij (seed 003: 0.1 h_ij)
+//   theta_ij = h_ij v_ij . x_ij / (|x_ij|^2 + eta^2),  eta = eta_factor h_ij (Niedoba 2012: 0.1 h_ij)
 //   dv_i/dt -= sum_j m_j Pi_ij grad_i W_ij                    (added to the pressure term, eq 2.71)
 //   de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij         (its work, eq 2.72; only with energy)
 // Pi_ij is symmetric in i, j, so the pair forces are antisymmetric and momentum is conserved; the

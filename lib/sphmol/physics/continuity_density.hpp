@@ -1,14 +1,14 @@
 #pragma once
-// Continuity density, seed 003 eq 2.61 (seed 000 eq 108):
+// Continuity density, Niedoba 2012, eq 2.61 (Vukčević 2012, eq 108):
 //   drho_i/dt = sum_j m_j v_ij . grad_i W_ij,   v_ij = v_i - v_j
 // rho is part of the ODE state; this term writes its rate. Wall neighbours enter with their
-// prescribed velocity. No edge effect at density jumps (seed 003 §3.3), but mass is not conserved
-// exactly (the density no longer follows from the positions).
+// prescribed velocity. No edge effect at density jumps (Niedoba 2012, §3.3), but mass is not
+// conserved exactly (the density no longer follows from the positions).
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
-// The sum of seed 003 eq 2.61 over one row (also used for dynamic wall particles).
+// The sum of Niedoba 2012, eq 2.61 over one row (also used for dynamic wall particles).
 template <int D>
 inline double continuity_rate(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
   const auto& m = w.particles->mass;

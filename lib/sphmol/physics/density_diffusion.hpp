@@ -1,6 +1,6 @@
 #pragma once
 // delta-SPH density diffusion (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180:861), beyond the
-// seeds: a diffusive term added to the continuity equation (seed 003 eq 2.61) that damps the
+// seeds: a diffusive term added to the continuity equation (Niedoba 2012, eq 2.61) that damps the
 // high-frequency pressure noise of weakly compressible SPH,
 //   drho_i/dt += delta h c0 sum_j psi_ij . grad_i W_ij m_j / rho_j,
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2.

@@ -1,10 +1,10 @@
 #pragma once
-// Energy equation of an inviscid fluid, pressure work only (seed 003 §2.2.4):
+// Energy equation of an inviscid fluid, pressure work only (Niedoba 2012, §2.2.4):
 //   eq 2.66 (Form117): de_i/dt = 1/2 sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) v_ij . grad_i W_ij
 //   eq 2.65 (Form116): de_i/dt = 1/2 sum_j m_j (p_i + p_j)/(rho_i rho_j) v_ij . grad_i W_ij
-// Each form is the work of the matching momentum equation (000 eq 117 / 116), so the total
-// energy sum m (e + v^2/2) is conserved by the pair sums. The artificial viscosity adds its own
-// work (physics/artificial_viscosity.hpp, eq 2.72).
+// Each form is the work of the matching momentum equation (Vukčević 2012, eq 117 / 116), so the
+// total energy sum m (e + v^2/2) is conserved by the pair sums. The artificial viscosity adds its
+// own work (physics/artificial_viscosity.hpp, eq 2.72).
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {

@@ -1,7 +1,7 @@
 #pragma once
-// Ideal-gas equation of state, seed 003 eq 2.73 (2.18): p = (gamma - 1) rho e, with the sound speed
-// it implies, c = sqrt(gamma p / rho) = sqrt(gamma (gamma - 1) e), for the artificial viscosity and
-// the CFL limit. Needs e, i.e. the energy equation. Walls use their fixed rho and e.
+// Ideal-gas equation of state, Niedoba 2012, eq 2.73 (2.18): p = (gamma - 1) rho e, with the sound
+// speed it implies, c = sqrt(gamma p / rho) = sqrt(gamma (gamma - 1) e), for the artificial
+// viscosity and the CFL limit. Needs e, i.e. the energy equation. Walls use their fixed rho and e.
 #include <cmath>
 
 #include "sphmol/rhs/term.hpp"

@@ -1,9 +1,10 @@
 #pragma once
-// Equation of state p = c^2 rho (Morris et al. 1997; seed 002 eq 20, seed 000 eq 126): an
-// artificially compressible fluid whose sound speed c is chosen so that density varies ~1 %.
-// With `relative`, p = c^2 (rho - rho0): the same pressure gradient in the continuum, but without the
-// background pressure c^2 rho0, which the symmetric SPH gradient (000 eq 117) turns into a spurious
-// force wherever the particle arrangement is not symmetric (e.g. fluid rows sliding over a wall).
+// Equation of state p = c^2 rho (Morris et al. 1997; Vukčević et al. 2012, eq 20, Vukčević 2012, eq
+// 126): an artificially compressible fluid whose sound speed c is chosen so that density varies ~1
+// %. With `relative`, p = c^2 (rho - rho0): the same pressure gradient in the continuum, but
+// without the background pressure c^2 rho0, which the symmetric SPH gradient (Vukčević 2012, eq
+// 117) turns into a spurious force wherever the particle arrangement is not symmetric (e.g. fluid
+// rows sliding over a wall).
 #include <cmath>
 
 #include "sphmol/rhs/term.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Tait equation of state for nearly incompressible water, seed 003 eq 2.75 (Monaghan 1994):
+// Tait equation of state for nearly incompressible water, Niedoba 2012, eq 2.75 (Monaghan 1994):
 //   p = B ((rho / rho0)^gamma - 1),   B = c0^2 rho0 / gamma,
 // so that dp/drho = c0^2 at rho = rho0. c0 is chosen ~10x the largest flow speed (e.g. sqrt(g H)
 // for a water column), which keeps density variations near 1 %.

@@ -1,10 +1,10 @@
 #pragma once
-// Normalised summation density, seed 003 eq 2.58:
+// Normalised summation density, Niedoba 2012, eq 2.58:
 //   rho_i = sum_j m_j W_ij / sum_j (m_j / rho_j) W_ij        (both sums include j = i)
 // The rho_j of the denominator must come from the same state for the RHS to be a function of y
-// alone, so they are the plain summation densities (seed 000 eq 100) of a first pass; near a free
-// surface or a density jump both sums miss the same neighbours and the deficit largely cancels
-// (the "edge effect" seed 003 §3.3 mentions). Wall particles keep their rest density.
+// alone, so they are the plain summation densities (Vukčević 2012, eq 100) of a first pass; near a
+// free surface or a density jump both sums miss the same neighbours and the deficit largely cancels
+// (the "edge effect" Niedoba 2012, §3.3 mentions). Wall particles keep their rest density.
 #include <vector>
 
 #include "sphmol/rhs/term.hpp"

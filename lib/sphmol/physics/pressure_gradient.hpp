@@ -1,5 +1,6 @@
 #pragma once
-// Pressure part of the symmetric momentum equation, seed 000 eq 117 (seed 002 eq 12):
+// Pressure part of the symmetric momentum equation, Vukčević 2012, eq 117 (Vukčević et al. 2012, eq
+// 12):
 //   dv_i/dt -= sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij
 #include "sphmol/rhs/pair_term.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Pressure part of the symmetric momentum equation, seed 000 eq 116 (seed 003 eq 2.62):
+// Pressure part of the symmetric momentum equation, Vukčević 2012, eq 116 (Niedoba 2012, eq 2.62):
 //   dv_i/dt -= sum_j m_j (p_i + p_j) / (rho_i rho_j) grad_i W_ij
 // Antisymmetric in i, j like eq 117, so pair forces conserve momentum; pairs with the energy
 // equation in its eq 2.65 form.

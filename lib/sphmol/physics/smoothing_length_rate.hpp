@@ -1,5 +1,5 @@
 #pragma once
-// Smoothing length as an ODE, seed 003 eq 2.68 (Benz 1989):
+// Smoothing length as an ODE, Niedoba 2012, eq 2.68 (Benz 1989):
 //   dh_i/dt = -(1/D) (h_i / rho_i) drho_i/dt
 // Runs after the density rate (continuity density) in the term list; h is part of the state.
 #include "sphmol/rhs/term.hpp"

@@ -1,10 +1,12 @@
 #pragma once
-// Strain-rate tensor from velocity differences, seed 000 eq 122 / seed 002 eq 13:
+// Strain-rate tensor from velocity differences, Vukčević 2012, eq 122 / Vukčević et al. 2012, eq
+// 13:
 //   eps_ab(i) = sum_j V_j [ v_b(ji) dW/dx_a + v_a(ji) dW/dx_b ] - 2/3 delta_ab sum_j V_j v_c(ji) dW/dx_c
 // with V_j = m_j / rho_j and v(ji) = v_j - v_i. Computed for wall rows too, because the momentum
-// equation (000 eq 117) needs eps at the wall neighbours; wall rows see only fluid particles, and a
-// missing wall-wall pair contributes nothing for walls that move together. Velocity differences of
-// fluid-wall pairs are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
+// equation (Vukčević 2012, eq 117) needs eps at the wall neighbours; wall rows see only fluid
+// particles, and a missing wall-wall pair contributes nothing for walls that move together.
+// Velocity differences of fluid-wall pairs are scaled by the wall model's factor
+// (rhs/workspace.hpp, vfac).
 #include <Eigen/Dense>
 
 #include "sphmol/rhs/term.hpp"

@@ -1,5 +1,6 @@
 #pragma once
-// Viscous part of the symmetric momentum equation, seed 000 eq 117 (seed 002 eq 12):
+// Viscous part of the symmetric momentum equation, Vukčević 2012, eq 117 (Vukčević et al. 2012, eq
+// 12):
 //   dv_a(i)/dt += sum_j m_j (mu eps_ab(i)/rho_i^2 + mu eps_ab(j)/rho_j^2) dW_ij/dx_b(i)
 // with the strain rate of physics/strain_rate.hpp and mu = rho0 nu the fluid's dynamic viscosity.
 #include "sphmol/rhs/term.hpp"

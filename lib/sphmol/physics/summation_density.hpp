@@ -1,7 +1,7 @@
 #pragma once
-// Summation density, seed 002 eq 11 / seed 000 eq 100: rho_i = sum_j m_j W_ij, including i itself.
-// Wall particles keep their rest density (their rows list only fluid neighbours, so a sum there
-// would be truncated).
+// Summation density, Vukčević et al. 2012, eq 11 / Vukčević 2012, eq 100: rho_i = sum_j m_j W_ij,
+// including i itself. Wall particles keep their rest density (their rows list only fluid
+// neighbours, so a sum there would be truncated).
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {

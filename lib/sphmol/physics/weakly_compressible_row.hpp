@@ -1,14 +1,14 @@
 #pragma once
 // The weakly compressible fluid row of the dam break and every continuity-density scene without a
-// physical viscosity: continuity density (seed 003 eq 2.61), delta-SPH diffusion (optional), and the
-// momentum equation with Monaghan's artificial viscosity inside the pressure bracket (seed 003 eq 2.71:
-// dv_i/dt = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2 + Pi_ij) grad_i W_ij, pressure as seed 000 eq 117),
-// in one sum over the row: each pair's neighbour data (v_j, rho_j, c_j, m_j) are loaded once,
-// v_ij . x_ij is formed once, and p/rho^2 and m/rho are computed once per particle, not per pair,
-// leaving one division per pair (in Pi_ij). The per-pair formulas are the separate terms' (continuity_rate,
-// density_diffusion_pair, MonaghanPi); only the summation order differs from running them apart
-// (round-off; tests/integration/test_fused_pair_passes.cpp). Chosen by the assembly when exactly
-// these terms meet (discretization.combine_terms).
+// physical viscosity: continuity density (Niedoba 2012, eq 2.61), delta-SPH diffusion (optional),
+// and the momentum equation with Monaghan's artificial viscosity inside the pressure bracket
+// (Niedoba 2012, eq 2.71: dv_i/dt = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2 + Pi_ij) grad_i W_ij,
+// pressure as Vukčević 2012, eq 117), in one sum over the row: each pair's neighbour data (v_j,
+// rho_j, c_j, m_j) are loaded once, v_ij . x_ij is formed once, and p/rho^2 and m/rho are computed
+// once per particle, not per pair, leaving one division per pair (in Pi_ij). The per-pair formulas
+// are the separate terms' (continuity_rate, density_diffusion_pair, MonaghanPi); only the summation
+// order differs from running them apart (round-off; tests/integration/test_fused_pair_passes.cpp).
+// Chosen by the assembly when exactly these terms meet (discretization.combine_terms).
 #include <algorithm>
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// XSPH position update, seed 002 eq 21 (seed 000 eq 127):
+// XSPH position update, Vukčević et al. 2012, eq 21 (Vukčević 2012, eq 127):
 //   dx_i/dt = v_i - eps sum_j (m_j/rho_j) v_ij W_ij,   v_ij = v_i - v_j
 // The plain dx/dt = v is set by the RHS before the terms run; this term adds the correction.
 #include "sphmol/rhs/pair_term.hpp"

@@ -26,8 +26,8 @@ double CouetteSeries::steady_velocity(double y) const { return v0 * y / l; }
 double CouetteSeries::velocity_fourier(double y, double t) const {
   check_args(*this, y, t);
   if (!(t > 0.0)) throw std::domain_error("CouetteSeries::velocity_fourier: t must be > 0");
-  // seed 002 eq 23: u = v0 y/l + sum_{n>=1} 2 v0/(n pi) (-1)^n sin(n pi y/l) exp(-nu n^2 pi^2 t/l^2).
-  // (Checked: at t = 0 the sum is minus the sine series of y/l, so u(y,0) = 0.)
+  // Vukčević et al. 2012, eq 23: u = v0 y/l + sum_{n>=1} 2 v0/(n pi) (-1)^n sin(n pi y/l) exp(-nu
+  // n^2 pi^2 t/l^2). (Checked: at t = 0 the sum is minus the sine series of y/l, so u(y,0) = 0.)
   const double pi = std::numbers::pi;
   const double a = pi * pi * nu * t / (l * l);  // exponent per n^2
   double sum = 0.0;
@@ -46,9 +46,9 @@ double CouetteSeries::velocity_fourier(double y, double t) const {
 double CouetteSeries::velocity_images(double y, double t) const {
   check_args(*this, y, t);
   if (!(t > 0.0)) throw std::domain_error("CouetteSeries::velocity_images: t must be > 0");
-  // Method of images (derived here, not in seed 002): each erfc((c -+ y)/(2 sqrt(nu t))) solves
-  // u_t = nu u_yy; the pair cancels at y = 0 and the sum telescopes to erfc(0) = 1 at y = l;
-  // all arguments are positive inside the channel, so u -> 0 as t -> 0+.
+  // Method of images (derived here, not in Vukčević et al. 2012): each erfc((c -+ y)/(2 sqrt(nu
+  // t))) solves u_t = nu u_yy; the pair cancels at y = 0 and the sum telescopes to erfc(0) = 1 at y
+  // = l; all arguments are positive inside the channel, so u -> 0 as t -> 0+.
   // u = v0 sum_{k>=0} [erfc(((2k+1) l - y)/s) - erfc(((2k+1) l + y)/s)], s = 2 sqrt(nu t).
   const double s = 2.0 * std::sqrt(nu * t);
   double sum = 0.0;

@@ -1,8 +1,9 @@
 #pragma once
 // Start-up Couette flow: plate y = 0 fixed, plate y = l moves at v0 from t = 0, fluid at rest at t = 0.
-// u_t = nu u_yy, u(0,t) = 0, u(l,t) = v0, u(y,0) = 0 (seed 002 eq 23, Morris et al. 1997).
-// velocity() is accurate to 1e-14 v0 at every t >= 0: the Fourier series (seed 002 eq 23) for
-// nu t / l^2 >= switch_tau, the image (erfc) series below it, where the Fourier series converges slowly.
+// u_t = nu u_yy, u(0,t) = 0, u(l,t) = v0, u(y,0) = 0 (Vukčević et al. 2012, eq 23, Morris et al.
+// 1997). velocity() is accurate to 1e-14 v0 at every t >= 0: the Fourier series (Vukčević et al.
+// 2012, eq 23) for nu t / l^2 >= switch_tau, the image (erfc) series below it, where the Fourier
+// series converges slowly.
 
 namespace sphmol {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Exact solution of the Riemann problem for the 1D Euler equations of an ideal gas (Toro, "Riemann
-// Solvers and Numerical Methods for Fluid Dynamics", 3rd ed., ch. 4). Reference for the seed 003 §3
-// shock tube (rho 1/0.25, p 1/0.1795, gamma 1.4).
+// Solvers and Numerical Methods for Fluid Dynamics", 3rd ed., ch. 4). Reference for the Niedoba
+// 2012, §3 shock tube (rho 1/0.25, p 1/0.1795, gamma 1.4).
 // Star pressure: root of Toro eq 4.5, f(p) = f_L(p) + f_R(p) + u_R - u_L, by GSL Brent; f is monotone
 // increasing and f(0) < 0 unless a vacuum is generated, so [0, p_hi] with f(p_hi) > 0 brackets it.
 

@@ -26,7 +26,7 @@ double PoiseuilleSeries::peak_velocity() const { return F * l * l / (8.0 * nu); 
 double PoiseuilleSeries::velocity_fourier(double y, double t) const {
   check_args(*this, y, t);
   if (!(t > 0.0)) throw std::domain_error("PoiseuilleSeries::velocity_fourier: t must be > 0");
-  // Corrected seed 002 eq 19 (see header). Work in units of peak = F l^2/(8 nu):
+  // Corrected Vukčević et al. 2012, eq 19 (see header). Work in units of peak = F l^2/(8 nu):
   // coefficient 4 F l^2/(nu pi^3 n^3) = peak * 32/(pi^3 n^3).
   const double pi = std::numbers::pi;
   const double a = pi * pi * nu * t / (l * l);

@@ -3,9 +3,10 @@
 // mass, along the plates) switched on at t = 0: u_t = nu u_yy + F, u(0,t) = u(l,t) = 0, u(y,0) = 0.
 // Steady profile F/(2 nu) y (l - y), peak F l^2/(8 nu) at y = l/2.
 //
-// Seed 002 eq 19 (after Morris et al. 1997) prints u = F/(2nu) y(y - l) + sum 4Fl^2/(nu pi^3 (2n+1)^3) sin exp,
-// which is the NEGATIVE of the solution: its steady part is < 0 inside the channel for F > 0. Expanding
-// y(l - y) = sum_{n odd} 8 l^2/(n^3 pi^3) sin(n pi y/l) on (0, l) gives the correct form
+// Vukčević et al. 2012, eq 19 (after Morris et al. 1997) prints u = F/(2nu) y(y - l) + sum
+// 4Fl^2/(nu pi^3 (2n+1)^3) sin exp, which is the NEGATIVE of the solution: its steady part is < 0
+// inside the channel for F > 0. Expanding y(l - y) = sum_{n odd} 8 l^2/(n^3 pi^3) sin(n pi y/l) on
+// (0, l) gives the correct form
 //   u = F/(2nu) y(l - y) - sum_{n>=0} 4 F l^2/(nu pi^3 (2n+1)^3) sin((2n+1) pi y/l) exp(-(2n+1)^2 pi^2 nu t/l^2),
 // which vanishes at t = 0 and is > 0 for F > 0.
 // velocity() is accurate to 1e-14 peak_velocity() at every t >= 0: Fourier form for nu t/l^2 >= switch_tau,

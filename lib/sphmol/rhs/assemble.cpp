@@ -150,7 +150,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
         tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c, tv.step_factor * h / c, du));
     if (du) terms.push_back(std::make_unique<TransportVelocityStress<D>>(du));
   }
-  // Reads the complete drho/dt (seed 003 eq 2.68), so after every density sum.
+  // Reads the complete drho/dt (Niedoba 2012, eq 2.68), so after every density sum.
   if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
   // Per particle and read by nothing else: last, so that it never splits a fused pass.
   if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));

@@ -1,8 +1,9 @@
 #pragma once
-// Kernel pass for a variable smoothing length (seed 003 §2.2.5): each pair uses the symmetrised
-// h_ij = (h_i + h_j)/2 (seed 003 eq 2.69), so W_ij = W_ji and grad_i W_ij = -grad_j W_ji and pair
-// forces stay antisymmetric; a pair is active when r_ij < kappa h_ij (seed 003 eq 2.79). Chosen once
-// per scene instead of KernelPassFor: the constant-h loop carries no per-pair h.
+// Kernel pass for a variable smoothing length (Niedoba 2012, §2.2.5): each pair uses the
+// symmetrised h_ij = (h_i + h_j)/2 (Niedoba 2012, eq 2.69), so W_ij = W_ji and grad_i W_ij =
+// -grad_j W_ji and pair forces stay antisymmetric; a pair is active when r_ij < kappa h_ij (Niedoba
+// 2012, eq 2.79). Chosen once per scene instead of KernelPassFor: the constant-h loop carries no
+// per-pair h.
 #include "sphmol/rhs/kernel_pass.hpp"
 
 namespace sphmol {
@@ -15,7 +16,7 @@ class KernelPassVariableH final : public KernelPassRows<D, K, KernelPassVariable
     hs_ = w.hs.data();
   }
   bool active(std::size_t i, std::uint32_t j, double r2) const {
-    const double rc = K::support * (0.5 * (hs_[i] + hs_[j]));  // seed 003 eq 2.79, h_ij of eq 2.69
+    const double rc = K::support * (0.5 * (hs_[i] + hs_[j]));  // Niedoba 2012, eq 2.79, h_ij of eq 2.69
     return r2 < rc * rc;
   }
   void eval(std::size_t i, std::uint32_t j, double r2, double& W, double& F) const {

@@ -1,6 +1,6 @@
 #pragma once
 // Particles generated from the current state at every RHS evaluation (ghost/mirror particles,
-// seed 003 §2.2.4 and §3.3). SphSystem calls the generator right after gathering positions and
+// Niedoba 2012, §2.2.4 and §3.3). SphSystem calls the generator right after gathering positions and
 // velocities, before the neighbour update. The generator appends its particles after the scene's
 // own fluid + wall particles (as wall-kind particles, so they are integrated by nobody and
 // ghost-ghost or ghost-wall pairs are never listed), sets their x and v in the workspace, resizes

@@ -184,7 +184,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     const double floor = fields_.wall_density_floor;
     for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
   }
-  if (fields_.smoothing_length == SmoothingLengthMode::density)  // seed 003 eq 2.67
+  if (fields_.smoothing_length == SmoothingLengthMode::density)  // Niedoba 2012, eq 2.67
     for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
   // Generated (ghost) particles are appended here, from the fluid state just gathered (positions,
   // velocities, density, energy, h), so that the neighbour update and every term see them like

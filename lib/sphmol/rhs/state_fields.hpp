@@ -1,17 +1,17 @@
 #pragma once
-// Which optional fields a scene integrates (SPEC §1: the state holds only what the scene needs) and
-// how the smoothing length evolves (seed 003 §2.2.5).
+// Which optional fields a scene integrates (the state holds only what the scene needs) and
+// how the smoothing length evolves (Niedoba 2012, §2.2.5).
 namespace sphmol {
 
 enum class SmoothingLengthMode {
   constant,  // h fixed
-  density,   // h_i = h_i(0) (rho_i(0) / rho_i)^(1/D), seed 003 eq 2.67, from the state density
-  ode,       // dh_i/dt = -(h_i / (D rho_i)) drho_i/dt, seed 003 eq 2.68, h in the state
+  density,   // h_i = h_i(0) (rho_i(0) / rho_i)^(1/D), Niedoba 2012, eq 2.67, from the state density
+  ode,       // dh_i/dt = -(h_i / (D rho_i)) drho_i/dt, Niedoba 2012, eq 2.68, h in the state
 };
 
 struct StateFields {
-  bool density = false;  // continuity density (seed 003 eq 2.61): rho in the state
-  bool energy = false;   // energy equation (seed 003 eq 2.66/2.72): e in the state
+  bool density = false;  // continuity density (Niedoba 2012, eq 2.61): rho in the state
+  bool energy = false;   // energy equation (Niedoba 2012, eq 2.66/2.72): e in the state
   SmoothingLengthMode smoothing_length = SmoothingLengthMode::constant;
   // Dynamic boundary particles (Crespo et al. 2007): wall densities in the state. The EOS and the
   // momentum equation read max(rho_wall, wall_density_floor): DualSPHysics clamps wall densities at

@@ -46,9 +46,9 @@ struct Workspace {
   // Outputs for fluid particles (point into the caller's ydot).
   std::array<double*, D> dxdt{}, dvdt{};
 
-  // Compressible flow (seed 003 §2.2.4-2.2.5). Per particle: sound speed (set by the EOS, read by the
-  // artificial viscosity and the CFL limit), specific internal energy (state, or fixed for walls),
-  // smoothing length h_i (all equal to h unless the scene varies h).
+  // Compressible flow (Niedoba 2012, §2.2.4-2.2.5). Per particle: sound speed (set by the EOS, read
+  // by the artificial viscosity and the CFL limit), specific internal energy (state, or fixed for
+  // walls), smoothing length h_i (all equal to h unless the scene varies h).
   std::vector<double> c, e, hs;
   // Outputs of the optional state blocks (into ydot; null when the block is not in the state).
   double* drhodt = nullptr;

@@ -8,6 +8,7 @@
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/kernels/registry.hpp"
+#include "sphmol/reference/data_directory.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 
@@ -22,8 +23,8 @@ std::unique_ptr<SphSystem<2>> CavityCase::build(const Config& config) {
   if (config.fluid.kinematic_viscosity <= 0) throw std::invalid_argument("fluid.kinematic_viscosity: cavity needs nu > 0");
   U_ = config.geometry.wall_velocity;
   Re_ = std::abs(U_) * L_ / config.fluid.kinematic_viscosity;
-  const std::string dir = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
-  ghia_ = load_ghia(dir + "ghia1982_u_vertical_centreline.csv", dir + "ghia1982_v_horizontal_centreline.csv", Re_);
+  ghia_ = load_ghia(reference_data_file("ghia1982_u_vertical_centreline.csv"),
+                    reference_data_file("ghia1982_v_horizontal_centreline.csv"), Re_);
   kernel_ = config.discretization.kernel;
   BoxWalls<2> walls{};
   for (int d = 0; d < 2; ++d) walls[d][0].present = walls[d][1].present = true;

@@ -1,5 +1,5 @@
 #pragma once
-// Built-in leapfrog of seed 002 eq 22 (drift-kick-drift):
+// Built-in leapfrog of Vukčević et al. 2012, eq 22 (drift-kick-drift):
 //   x_{n+1/2} = x_n + dt/2 v_n,   v_{n+1} = v_n + dt a_{n+1/2},   x_{n+1} = x_{n+1/2} + dt/2 v_{n+1}
 // One RHS evaluation per step, at the half step. Viscous forces depend on velocity, so a_{n+1/2}
 // is evaluated with the predicted v_n + dt/2 a_{n-1/2} (O(dt^2) accurate, which keeps the scheme
