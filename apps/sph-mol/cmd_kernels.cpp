@@ -111,8 +111,8 @@ int run_hydrostatic() {
       std::cerr << "sph-mol kernels: cannot write to output directory '" << opt.output << "'\n";
       return 1;
     }
-    table << "kernel,a_p,eps_rho_roots,eps_gradp_at_rho_roots,eps_gradp_roots,eps_rho_at_gradp_roots,"
-             "condition22,best_k,best_max_abs_error\n";
+    table << "kernel,a_p [-],eps_rho_roots k [-],eps_gradp_at_rho_roots [-],eps_gradp_roots k [-],"
+             "eps_rho_at_gradp_roots [-],condition22,best_k [-],best_max_abs_error [-]\n";
     table.precision(10);
   }
   std::printf("Hydrostatic kernel analysis, seed 001 eqs 17-22: 2D triangular lattice edge d, h = k d, "
@@ -127,8 +127,8 @@ int run_hydrostatic() {
     if (!opt.output.empty()) {
       curves.open(std::filesystem::path(opt.output) / ("hydrostatic_curves_" + std::string(e.name) + ".csv"));
       curves.precision(12);
-      curves << "k";
-      for (auto n : ap_names) curves << ",eps_rho_ap=" << n << ",eps_gradp_ap=" << n;
+      curves << "k [-]";
+      for (auto n : ap_names) curves << ",eps_rho_ap=" << n << " [-],eps_gradp_ap=" << n << " [-]";
       curves << "\n";
       for (int i = 0; i <= 500; ++i) {
         const double k = 0.75 + 0.5 * i / 500;

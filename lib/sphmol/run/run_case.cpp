@@ -13,6 +13,7 @@
 #include "sphmol/run/last_good_state.hpp"
 #include <stdexcept>
 
+#include "sphmol/core/version.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/case_registry.hpp"
 #include "sphmol/run/checkpoint.hpp"
@@ -247,6 +248,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;
+  summary["version"] = version();
+  summary["git_commit"] = git_commit();
   if (out.enabled) {
     write_file_atomically(out.path("config.yaml"), to_yaml(config));
     write_file_atomically(out.path("summary.json"), summary.dump(2) + "\n");

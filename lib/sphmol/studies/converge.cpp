@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
 
@@ -60,7 +61,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   nlohmann::json levels = nlohmann::json::array();
   nlohmann::json series = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "refine,integrator,level," << (time ? "dt" : "dx") << ",error,observed_order,expected_order,wall_seconds\n";
+  std::string error_key;  // the case's error measure, for the unit in the CSV header
   Chart chart{std::string("convergence in ") + (time ? "time" : "space") + ": " + base.case_name,
               time ? "dt [s]" : "particle spacing dx [m]", time ? "rel. rms velocity error vs reference run" : "error vs analytic", true,
               true, {}};
@@ -111,6 +112,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
                                                : 1.0 / c.discretization.particles_across;
       }
       const StudyRun r = run_study_case(c);
+      error_key = r.summary.value("primary_error", "e_rms");
       const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : relative_velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))
                             : r.error;
       errors.push_back(e);
@@ -132,7 +134,10 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
     if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
   }
-  write_file_atomically(opt.output_dir + "/convergence.csv", csv.str());
+  write_file_atomically(opt.output_dir + "/convergence.csv",
+                        std::string("refine,integrator,level [-],") + (time ? "dt [s]" : "dx [m]") + ",error [" +
+                            (time ? std::string("-") : error_unit(error_key)) +
+                            "],observed_order [-],expected_order [-],wall_seconds [s]\n" + csv.str());
   const std::string problem = draw_chart(chart, opt.output_dir + "/convergence.png");
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +
