@@ -60,7 +60,7 @@ TEST_CASE("summary: program version and the git commit of the build", "[integrat
   const auto r = test_support::run_process(
       SPHMOL_BINARY,
       {"--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "-q", "--output", (dir / "o").string(),
-       "--set", "discretization.particles_across=10", "--set", "time.t_end=0.01", "--set", "output.times=[0.01]", "--set",
+       "--set", "discretization.particles_across=20", "--set", "time.t_end=0.01", "--set", "output.times=[0.01]", "--set",
        "output.plots=false"},
       (dir / "err").string());
   INFO(r.err);
