@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +17,7 @@
 #include "sphmol/scenes/cavity_case.hpp"
 #include "sphmol/scenes/channel_case.hpp"
 #include "sphmol/scenes/hydrostatic_case.hpp"
+#include "sphmol/scenes/shock_tube_case.hpp"
 #include "vtk_appended.hpp"
 
 using namespace sphmol;
@@ -250,4 +252,31 @@ TEST_CASE("vtk: the observer writes one file per group and a .pvd that a restart
   CHECK(fs::exists(other / "fluid_0000.vtp"));
   CHECK_FALSE(fs::exists(other / "walls_0000.vtp"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("vtk: 1D shock tube: padded coordinates and the further state blocks under their names", "[vtk][output]") {
+  ShockTubeCase<1> c;
+  auto sys = c.build(load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube_1d.yaml"));
+  std::vector<double> y = sys->initial_state(), ydot(y.size());
+  sys->rhs(0.0, y.data(), ydot.data());
+  const auto& L = sys->layout();
+  const std::size_t nf = sys->particles().n_fluid;
+  const Decoded d = decode(vtp_file<1>(*sys, y.data(), 0.0, VtkPart::fluid));
+  REQUIRE(d.n == nf);
+  const auto names = L.field_names();
+  REQUIRE(L.has_density);  // continuity density: a state block named "density" like the point array
+  REQUIRE(L.extra_blocks() >= 2);
+  std::set<std::string> seen;
+  for (const auto* a : d.pd->all("DataArray")) CHECK(seen.insert(a->attr.at("Name")).second);  // names unique
+  for (std::size_t b = 0; b < L.extra_blocks(); ++b) {
+    INFO(names[2 + b]);
+    const auto& v = d.point(names[2 + b]);
+    REQUIRE(v.size() == nf);
+    for (std::size_t i = 0; i < nf; ++i) REQUIRE(v[i] == y[L.velocities_end() + b * nf + i]);
+  }
+  for (std::size_t i = 0; i < nf; ++i) {
+    REQUIRE(d.xyz[3 * i] == sys->domain().wrap(0, y[L.position(0) + i]));
+    REQUIRE(d.xyz[3 * i + 1] == 0.0);
+    REQUIRE(d.xyz[3 * i + 2] == 0.0);
+  }
 }

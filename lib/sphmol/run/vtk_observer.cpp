@@ -113,20 +113,29 @@ std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart
   }));
   point_arrays.push_back(make_array<double>("Float64", "mass", 1, n, field(P.mass)));
   point_arrays.push_back(make_array<double>("Float64", "velocity", 3, n, velocity));
-  point_arrays.push_back(make_array<double>("Float64", "density", 1, n, field(rho)));
+  // With an integrated density the fluid's is the state's own (the same values the RHS gathered).
+  if (part == VtkPart::fluid && L.has_density)
+    point_arrays.push_back(make_array<double>("Float64", "density", 1, n,
+                                              [&](std::size_t k, int) { return y[L.density() + k]; }));
+  else
+    point_arrays.push_back(make_array<double>("Float64", "density", 1, n, field(rho)));
   point_arrays.push_back(make_array<double>("Float64", "pressure", 1, n, field(p)));
   point_arrays.push_back(make_array<std::uint8_t>("UInt8", "kind", 1, n, [&](std::size_t, int) {
     return static_cast<std::uint8_t>(part);
   }));
   if (part == VtkPart::fluid && nf > 0) {
-    // Further state blocks after the velocities, one scalar per fluid particle each. (Wall
-    // densities of dynamic boundary particles, last in the state, are in "density" already.)
+    // Further state blocks after the velocities, one scalar per fluid particle each, except the
+    // density, written above (one array per name: ParaView shows only one of two equal names). Wall
+    // densities of dynamic boundary particles, last in the state, are in the walls' "density".
     const std::size_t extra = L.extra_blocks();
     const std::vector<std::string> names = L.field_names();
-    for (std::size_t b = 0; b < extra; ++b)
-      point_arrays.push_back(make_array<double>(
-          "Float64", names.size() >= 2 + extra ? names[2 + b] : "state_block_" + std::to_string(b), 1, n,
-          [&, b](std::size_t k, int) { return y[L.velocities_end() + b * nf + k]; }));
+    for (std::size_t b = 0; b < extra; ++b) {
+      const std::string name = names.size() >= 2 + extra ? names[2 + b] : "state_block_" + std::to_string(b);
+      if (name == "density") continue;
+      point_arrays.push_back(make_array<double>("Float64", name, 1, n, [&, b](std::size_t k, int) {
+        return y[L.velocities_end() + b * nf + k];
+      }));
+    }
   }
   points.push_back(make_array<double>("Float64", "Points", 3, n, position));
   // One vertex cell per particle, so ParaView draws the points without a glyph filter.
