@@ -10,7 +10,8 @@
 // Point data: `id` (the particle's index in the scene's initial particle set, the same in every
 // output; ghosts -1: they are regenerated at every evaluation), `mass`, `velocity` (3 components,
 // zero-padded below 3D), `density`, `pressure`, `kind` (0 fluid, 1 wall, 2 ghost); fluid files also
-// carry each further state block of the layout (energy, h, ...) under its field name. Wall particles
+// carry each further state block of the layout (energy, h, ...) under its field name, an integrated
+// density being the `density` array itself. Wall particles
 // are where the solver places them (Particles::wall_position: belts such as a cavity lid stay put),
 // ghosts as generated at the most recent RHS evaluation (the run loop evaluates the RHS at the written
 // state first). Each file carries its time as the FieldData array `TimeValue`, which ParaView reads.
