@@ -251,6 +251,19 @@ TEST_CASE("vtk: the observer writes one file per group and a .pvd that a restart
   CHECK(mini_xml::parse(slurp_file((other / "particles.pvd").string()))->child("Collection")->all("DataSet").size() == 1);
   CHECK(fs::exists(other / "fluid_0000.vtp"));
   CHECK_FALSE(fs::exists(other / "walls_0000.vtp"));
+  // State saved without the group and the output count (one file per output time): continued too.
+  const fs::path single = dir / "single";
+  fs::create_directories(single);
+  { std::ofstream(single / "particles_0000.vtp") << "x"; }
+  VtkObserver<2> old(false);
+  old.restore_state(nlohmann::json::parse(R"({"files": [{"t": 0.5, "file": "particles_0000.vtp"}]})"),
+                    OutputSink{single.string(), true});
+  old.at_output(*sys, y.data(), 1.0, OutputSink{single.string(), true});
+  const auto kept_pvd = mini_xml::parse(slurp_file((single / "particles.pvd").string()));
+  const auto kept = kept_pvd->child("Collection")->all("DataSet");
+  REQUIRE(kept.size() == 2);
+  CHECK(kept[0]->attr.at("file") == "particles_0000.vtp");
+  CHECK(kept[1]->attr.at("file") == "fluid_0001.vtp");
   fs::remove_all(dir);
 }
 
