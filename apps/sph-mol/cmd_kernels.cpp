@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <numbers>
 #include <string>
@@ -17,6 +17,7 @@
 #include "sphmol/analysis/corrected_consistency.hpp"
 #include "sphmol/analysis/particle_consistency.hpp"
 #include "sphmol/analysis/particle_sets.hpp"
+#include "sphmol/io/atomic_file.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "subcommand.hpp"
 
@@ -98,21 +99,29 @@ std::string roots_text(const std::vector<sphmol::analysis::HydrostaticRoot>& roo
   return s;
 }
 
+bool write_output(const std::string& path, const std::string& text) {
+  try {
+    sphmol::write_file_atomically(path, text);
+    return true;
+  } catch (const std::exception& ex) {
+    std::cerr << "sph-mol kernels: cannot write " << path << ": " << ex.what() << "\n";
+    return false;
+  }
+}
+
 int run_hydrostatic() {
   using namespace sphmol::analysis;
   const double aps[3] = {std::sqrt(3.0) / 2.0, std::numbers::pi / 4.0, 1.0};
   const char* ap_names[3] = {"sqrt3/2", "pi/4", "1"};
-  std::ofstream table;
-  if (!opt.output.empty()) {
+  // Each file is assembled in memory and written whole through a fresh temporary (never through a
+  // link planted at its name).
+  const bool write = !opt.output.empty();
+  std::ostringstream table;
+  if (write) {
     std::error_code ec;
     std::filesystem::create_directories(opt.output, ec);
-    table.open(std::filesystem::path(opt.output) / "hydrostatic_table.csv");
-    if (!table) {
-      std::cerr << "sph-mol kernels: cannot write to output directory '" << opt.output << "'\n";
-      return 1;
-    }
-    table << "kernel,a_p,eps_rho_roots,eps_gradp_at_rho_roots,eps_gradp_roots,eps_rho_at_gradp_roots,"
-             "condition22,best_k,best_max_abs_error\n";
+    table << "kernel,a_p [-],eps_rho_roots k [-],eps_gradp_at_rho_roots [-],eps_gradp_roots k [-],"
+             "eps_rho_at_gradp_roots [-],condition22,best_k [-],best_max_abs_error [-]\n";
     table.precision(10);
   }
   std::printf("Hydrostatic kernel analysis, seed 001 eqs 17-22: 2D triangular lattice edge d, h = k d, "
@@ -123,12 +132,11 @@ int run_hydrostatic() {
               "best k", "max|eps|");
   for (const auto& e : sphmol::kernel_catalogue<2>()) {
     if (!e.available || (!opt.kernel.empty() && e.name != opt.kernel)) continue;
-    std::ofstream curves;
-    if (!opt.output.empty()) {
-      curves.open(std::filesystem::path(opt.output) / ("hydrostatic_curves_" + std::string(e.name) + ".csv"));
+    if (write) {
+      std::ostringstream curves;
       curves.precision(12);
-      curves << "k";
-      for (auto n : ap_names) curves << ",eps_rho_ap=" << n << ",eps_gradp_ap=" << n;
+      curves << "k [-]";
+      for (auto n : ap_names) curves << ",eps_rho_ap=" << n << " [-],eps_gradp_ap=" << n << " [-]";
       curves << "\n";
       for (int i = 0; i <= 500; ++i) {
         const double k = 0.75 + 0.5 * i / 500;
@@ -139,13 +147,14 @@ int run_hydrostatic() {
         }
         curves << "\n";
       }
+      if (!write_output(opt.output + "/hydrostatic_curves_" + std::string(e.name) + ".csv", curves.str())) return 1;
     }
     for (int a = 0; a < 3; ++a) {
       const auto row = hydrostatic_row(e.info, aps[a], opt.eps);
       std::printf("%-22s %-8s %-40s %-40s %-6s %8.5f %10.5f\n", std::string(e.name).c_str(), ap_names[a],
                   roots_text(row.rho_roots).c_str(), roots_text(row.gradp_roots).c_str(),
                   row.passes ? "pass" : "FAIL", row.best_k, row.best_err);
-      if (table) {
+      if (write) {
         auto list = [](const std::vector<HydrostaticRoot>& rs, bool k) {
           std::string s;
           char buf[32];
@@ -161,7 +170,10 @@ int run_hydrostatic() {
       }
     }
   }
-  if (!opt.output.empty()) std::printf("wrote %s/hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv\n", opt.output.c_str());
+  if (write) {
+    if (!write_output(opt.output + "/hydrostatic_table.csv", table.str())) return 1;
+    std::printf("wrote %s/hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv\n", opt.output.c_str());
+  }
   return 0;
 }
 

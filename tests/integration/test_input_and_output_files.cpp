@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "../unit/mini_xml.hpp"
+#include "../unit/vtk_appended.hpp"
 #include "run_helpers.hpp"
 
 using namespace run_helpers;
@@ -38,12 +39,19 @@ TEST_CASE("output: VTK collection and gnuplot profile plot", "[vtk][plots][integ
   REQUIRE(r.code == 0);
   const auto pvd = mini_xml::parse(slurp(dir / "a" / "particles.pvd"));
   const auto sets = pvd->child("Collection")->all("DataSet");
-  REQUIRE(sets.size() == 3);  // 0.0225, 0.045, 0.05
+  REQUIRE(sets.size() == 3);  // 0.0225, 0.045, 0.05: fluid only
   CHECK(std::stod(sets[2]->attr.at("timestep")) == 0.05);
   for (const auto* s : sets) {
-    const auto vtp = mini_xml::parse(slurp(dir / "a" / s->attr.at("file")));
-    CHECK(vtp->child("PolyData")->child("Piece")->attr.at("NumberOfPoints") == "200");  // fluid only
+    CHECK(s->attr.at("part") == "0");
+    CHECK(s->attr.at("name") == "fluid");
+    const std::string text = slurp(dir / "a" / s->attr.at("file"));
+    const auto vtp = vtk_appended::read(text);
+    const auto* poly = vtp.root->child("PolyData");
+    CHECK(poly->child("Piece")->attr.at("NumberOfPoints") == "200");
+    CHECK(vtp.of(vtk_appended::array_named(*poly->child("FieldData"), "TimeValue"))[0] == std::stod(s->attr.at("timestep")));
   }
+  CHECK(fs::exists(dir / "a" / "fluid_0002.vtp"));
+  CHECK_FALSE(fs::exists(dir / "a" / "walls_0000.vtp"));
   const auto summary = json_file(dir / "a" / "summary.json");
   const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
   if (have_gnuplot) {
@@ -74,14 +82,15 @@ TEST_CASE("output: Taylor-Green decay and cavity centre-line plots", "[plots][in
   REQUIRE(r.code == 0);
   // The decay CSV holds every output time; the plot reads it.
   const std::string decay = slurp(dir / "tg" / "decay.csv");
-  CHECK_THAT(decay, Contains("t,maxv_sph,maxv_exact") && Contains("\n0.05,") && Contains("\n0.1,"));
+  CHECK_THAT(decay, Contains("t [s],maxv_sph [m/s],maxv_exact [m/s]\n") && Contains("\n0.05,") && Contains("\n0.1,"));
   r = sph_mol("--config '" + v + "cavity.yaml' -q --set discretization.particles_across=20 --set time.dt=1.2e-3 "
               "--set time.t_end=0.1 --set 'output.times=[0.1]' --set output.plots=true --output '" +
                   (dir / "cav").string() + "'",
               dir / "e2");
   INFO(r.err);
   REQUIRE(r.code == 0);
-  CHECK(fs::exists(dir / "cav" / "centrelines_t0.1.csv"));
+  CHECK(fs::exists(dir / "cav" / "centreline_u_t0.1.csv"));
+  CHECK(fs::exists(dir / "cav" / "centreline_v_t0.1.csv"));
   const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
   if (!have_gnuplot) {
     WARN("gnuplot not installed: the PNG part of this test is skipped");

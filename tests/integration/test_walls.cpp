@@ -4,7 +4,7 @@
 // panels) and ghost particles in the VTK files.
 #include <catch2/catch.hpp>
 
-#include "../unit/mini_xml.hpp"
+#include "../unit/vtk_appended.hpp"
 #include "run_helpers.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/run_case.hpp"
@@ -102,20 +102,20 @@ TEST_CASE("vtk: output.vtk_ghosts adds the ghost particles with kind 2", "[integ
   r = sph_mol(hydrostatic(common + "--output '" + (dir / "n").string() + "'"), dir / "e2");
   REQUIRE(r.code == 0);
   auto kinds = [&](const fs::path& file) {
-    const auto vtp = mini_xml::parse(slurp(file));
-    const auto* pd = vtp->child("PolyData")->child("Piece")->child("PointData");
-    for (const auto* a : pd->all("DataArray"))
-      if (a->attr.at("Name") == "kind") return mini_xml::numbers(*a);
-    return std::vector<double>{};
+    const std::string text = slurp(file);
+    const auto vtp = vtk_appended::read(text);
+    const auto* pd = vtp.root->child("PolyData")->child("Piece")->child("PointData");
+    return vtp.of(vtk_appended::array_named(*pd, "kind"));
   };
-  const auto with = kinds(dir / "g" / "particles_0000.vtp");
-  const auto without = kinds(dir / "n" / "particles_0000.vtp");
   const auto count = [](const std::vector<double>& k, double v) { return std::count(k.begin(), k.end(), v); };
-  CHECK(count(with, 0.0) == 90);  // 10 x 9 fluid
-  CHECK(count(without, 0.0) == 90);
-  CHECK(count(without, 2.0) == 0);
+  const auto fluid = kinds(dir / "g" / "fluid_0000.vtp");
+  CHECK(count(fluid, 0.0) == 90);  // 10 x 9 fluid
+  CHECK(count(kinds(dir / "n" / "fluid_0000.vtp"), 0.0) == 90);
+  CHECK_FALSE(fs::exists(dir / "n" / "ghosts_0000.vtp"));
+  CHECK_FALSE(fs::exists(dir / "g" / "walls_0000.vtp"));  // ghost walls: no wall particles
   // Ghost images: the bottom row (10) and both side columns (9 each) within the support 2.6 dx of a
   // wall have images, plus the corner images: at least 10 + 18 + 4.
-  CHECK(count(with, 2.0) >= 32);
-  CHECK(with.size() == without.size() + static_cast<std::size_t>(count(with, 2.0)));
+  const auto ghosts = kinds(dir / "g" / "ghosts_0000.vtp");
+  CHECK(ghosts.size() >= 32);
+  CHECK(static_cast<std::size_t>(count(ghosts, 2.0)) == ghosts.size());
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "sphmol/reference/ghia_table.hpp"
@@ -78,4 +79,23 @@ TEST_CASE("Ghia 1982: malformed files are rejected with a clear message", "[refe
   CHECK_THAT(load_error(good_u, v400), Catch::Contains("only one"));
   REQUIRE(load_ghia(good_u, good_v, 100.0));  // the well-formed pair loads
   for (const auto& p : {good_v, bad_num, bad_cols, bad_header, bad_order, bad_name, good_u, v400}) std::remove(p.c_str());
+}
+
+TEST_CASE("Ghia 1982: plain CSV with units in the header, as shipped", "[reference][ghia]") {
+  // The shipped tables are plain CSV (pandas.read_csv reads them as they are): no comment lines.
+  for (const auto& p : {path_u, path_v}) {
+    std::ifstream in(p);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(text.find('#') == std::string::npos);
+    CHECK(text.substr(0, text.find('\n')).find(" [-]") != std::string::npos);
+  }
+  const std::string u = write_temp("u_units.csv", "y [-],u_Re100 [-]\n0,0\n0.5,-0.2\n1,1\n");
+  const std::string v = write_temp("v_units.csv", "x [-],v_Re100 [-]\n0,0\n0.5,0.05\n1,0\n");
+  const auto t = load_ghia(u, v, 100.0);
+  REQUIRE(t);
+  CHECK(t->u == std::vector<double>{0.0, -0.2, 1.0});
+  CHECK(t->x == std::vector<double>{0.0, 0.5, 1.0});
+  const std::string metres = write_temp("u_metres.csv", "y [m],u_Re100 [-]\n0,0\n1,1\n");
+  CHECK_THAT(load_error(metres, v), Catch::Contains(metres + ":1") && Catch::Contains("the unit must be [-]"));
+  for (const auto& p : {u, v, metres}) std::remove(p.c_str());
 }

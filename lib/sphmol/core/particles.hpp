@@ -29,6 +29,8 @@ struct Particles {
   std::vector<std::uint8_t> stationary;
 
   std::size_t size() const { return mass.size(); }
+  // Where wall particle i is at time t: the one rule the solver and every writer share.
+  double wall_position(int d, std::size_t i, double t) const { return x_ref[d][i] + (stationary[i] ? 0.0 : v[d][i] * t); }
   std::size_t n_wall() const { return size() - n_fluid; }
 
   void add(Kind k, const std::array<double, D>& pos, const std::array<double, D>& vel, double m, double density,

@@ -51,8 +51,17 @@ std::optional<Column> read_table(const std::string& path, const std::string& cna
     ++line_no;
     if (!text.empty() && text.back() == '\r') text.pop_back();
     if (text.empty() || text[0] == '#') continue;
-    const auto cells = split_csv(text);
+    auto cells = split_csv(text);
     if (!have_header) {
+      // Column names may carry their unit, which must be "[-]" (the values are scaled by L and U).
+      for (auto& cell : cells) {
+        const auto open = cell.find('[');
+        if (open == std::string::npos) continue;
+        if (cell.substr(open) != "[-]")
+          fail(path, line_no, "column '" + cell + "': the table is dimensionless, the unit must be [-]");
+        cell.erase(open);
+        while (!cell.empty() && cell.back() == ' ') cell.pop_back();
+      }
       if (cells.size() < 2 || cells[0] != cname) fail(path, line_no, "header must start with '" + cname + "' and a data column");
       const std::string prefix = vname + "_Re";
       for (std::size_t i = 1; i < cells.size(); ++i) {

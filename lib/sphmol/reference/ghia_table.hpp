@@ -1,8 +1,9 @@
 #pragma once
 // Lid-driven cavity centre-line reference of Ghia, Ghia & Shin (1982), J. Comput. Phys. 48:387, Tables I
 // and II, as stored in verification/ghia1982_*.csv (see verification/README.md).
-// File format: '#' comment lines, a header "y,u_Re100,u_Re400,..." (resp. "x,v_Re100,..."), then rows of
-// numbers with the coordinate strictly increasing in [0, 1].
+// File format: a header "y [-],u_Re100 [-],u_Re400 [-],..." (resp. "x [-],v_Re100 [-],..."; the unit is
+// optional and must be "[-]": the table is dimensionless), then rows of numbers with the coordinate
+// strictly increasing in [0, 1]. Lines starting with '#' are skipped.
 #include <optional>
 #include <string>
 #include <vector>

@@ -167,7 +167,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       ws_.v[d][i] = vs[k];
     }
     for (std::size_t i = nf; i < nb; ++i)
-      ws_.x[d][i] = domain_.wrap(d, P.x_ref[d][i] + (P.stationary[i] ? 0.0 : P.v[d][i] * t));
+      ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
   }
   // Optional fields: per-scene branches outside every pair loop.
   auto gather = [&](std::size_t block, std::vector<double>& to) {

@@ -11,9 +11,9 @@ template <int D>
 void write_last_good_state(const SphSystem<D>& sys, const double* y, const std::string& path) {
   const auto& L = sys.layout();
   std::ostringstream s;
-  s << "particle";
-  for (int d = 0; d < D; ++d) s << ",x" << d;
-  for (int d = 0; d < D; ++d) s << ",v" << d;
+  s << "id [-]";
+  for (int d = 0; d < D; ++d) s << ",x" << d << " [m]";
+  for (int d = 0; d < D; ++d) s << ",v" << d << " [m/s]";
   s << '\n' << std::setprecision(17);
   for (std::size_t i = 0; i < L.n; ++i) {
     s << i;

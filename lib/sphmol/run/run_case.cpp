@@ -13,6 +13,7 @@
 #include "sphmol/run/last_good_state.hpp"
 #include <stdexcept>
 
+#include "sphmol/core/version.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/case_registry.hpp"
 #include "sphmol/run/checkpoint.hpp"
@@ -289,6 +290,8 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;
+  summary["version"] = version();
+  summary["git_commit"] = git_commit();
   if (out.enabled) {
     if (!folder) folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
     out.write("config.yaml", to_yaml(resolved));

@@ -1,6 +1,9 @@
 #include "sphmol/run/vtk_observer.hpp"
 
+#include <bit>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 
@@ -10,149 +13,228 @@ namespace sphmol {
 
 namespace {
 
-void put(std::ostringstream& s, double v) {
+const char* const kPartName[3] = {"fluid", "walls", "ghosts"};
+
+std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", v);
-  s << buf;
+  return buf;
 }
 
-template <class Get>
-void data_array(std::ostringstream& s, const char* type, const std::string& name, int components, std::size_t n,
-                Get get) {
-  s << "        <DataArray type=\"" << type << "\"";
-  if (!name.empty()) s << " Name=\"" << name << "\"";
-  s << " NumberOfComponents=\"" << components << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    s << "          ";
-    for (int c = 0; c < components; ++c) {
-      if (c) s << ' ';
-      put(s, get(i, c));
-    }
-    s << '\n';
-  }
-  s << "        </DataArray>\n";
+// One array of the appended section: its XML attributes and its little-endian bytes.
+struct Array {
+  std::string type, name;
+  int components;
+  std::string bytes;
+};
+
+template <class T>
+void append_le(std::string& out, T v) {
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  if constexpr (std::endian::native == std::endian::big)
+    for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
+  out.append(b, sizeof(T));
 }
 
-std::string pvd_text(const std::vector<std::pair<double, std::string>>& files) {
-  std::ostringstream s;
-  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-    << "  <Collection>\n";
-  for (const auto& [t, f] : files) {
-    s << "    <DataSet timestep=\"";
-    put(s, t);
-    s << "\" group=\"\" part=\"0\" file=\"" << f << "\"/>\n";
+template <class T, class Get>
+Array make_array(const char* type, std::string name, int components, std::size_t n, Get get) {
+  Array a{type, std::move(name), components, {}};
+  a.bytes.reserve(n * static_cast<std::size_t>(components) * sizeof(T));
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < components; ++c) append_le<T>(a.bytes, static_cast<T>(get(i, c)));
+  return a;
+}
+
+void array_tag(std::ostringstream& s, const Array& a, std::uint64_t offset, const char* indent, bool tuples = false) {
+  s << indent << "<DataArray type=\"" << a.type << "\" Name=\"" << a.name << "\" NumberOfComponents=\"" << a.components
+    << "\"";
+  if (tuples) s << " NumberOfTuples=\"1\"";
+  s << " format=\"appended\" offset=\"" << offset << "\"/>\n";
+}
+
+// The rows of `part` as particle indices of the system: fluid [0, nf), walls [nf, nb), ghosts
+// [nb, nb + ng) (positions and fields of all of them are indexed so).
+template <int D>
+std::pair<std::size_t, std::size_t> part_range(const SphSystem<D>& sys, VtkPart part) {
+  const std::size_t nf = sys.particles().n_fluid, nb = sys.base_particles();
+  switch (part) {
+    case VtkPart::fluid: return {0, nf};
+    case VtkPart::walls: return {nf, nb};
+    case VtkPart::ghosts: return {nb, nb + sys.generated_particles()};
   }
-  s << "  </Collection>\n</VTKFile>\n";
-  return s.str();
+  return {0, 0};
 }
 
 }  // namespace
 
 template <int D>
-std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool walls, bool ghosts) {
+std::size_t vtk_part_size(const SphSystem<D>& sys, VtkPart part) {
+  const auto [b, e] = part_range(sys, part);
+  return e - b;
+}
+
+template <int D>
+std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part) {
   const auto& P = sys.particles();
   const auto& L = sys.layout();
   const auto& dom = sys.domain();
-  // Written: fluid [0, nf), then walls [nf, nb) if asked, then ghosts [nb, nb + ng) if asked.
-  const std::size_t nf = P.n_fluid, nb = sys.base_particles(), ng = ghosts ? sys.generated_particles() : 0;
-  const std::size_t nw = walls ? nb - nf : 0, n = nf + nw + ng;
-  const auto index = [&](std::size_t k) { return k < nf + nw ? k : nb + (k - nf - nw); };  // row -> particle
+  const std::size_t nf = P.n_fluid;
+  const auto [first, last] = part_range(sys, part);
+  const std::size_t n = last - first;
+  const std::vector<double>& rho = sys.density();
+  const std::vector<double>& p = sys.pressure();
+
+  // Fluid from the state; walls where the solver puts them; ghosts as generated (their positions
+  // and velocities exist only in the workspace, whose order is the state order when a generator is
+  // set: SphSystem does not reorder then). All wrapped into the periodic box.
   const auto position = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
-    const std::size_t i = index(k);
-    // Fluid from the state; walls move rigidly, x = x_ref + v t; ghosts as generated. Wrapped into
-    // the periodic box.
-    if (i >= nb) return dom.wrap(d, sys.positions()[d][i]);
-    return dom.wrap(d, i < nf ? y[L.position(d) + i] : P.x_ref[d][i] + P.v[d][i] * t);
+    const std::size_t i = first + k;
+    if (part == VtkPart::fluid) return dom.wrap(d, y[L.position(d) + i]);
+    if (part == VtkPart::walls) return dom.wrap(d, P.wall_position(d, i, t));
+    return dom.wrap(d, sys.positions()[d][i]);
   };
   const auto velocity = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
-    const std::size_t i = index(k);
-    if (i >= nb) return sys.velocities()[d][i];
-    return i < nf ? y[L.velocity(d) + i] : P.v[d][i];
+    const std::size_t i = first + k;
+    if (part == VtkPart::fluid) return y[L.velocity(d) + i];
+    if (part == VtkPart::walls) return P.v[d][i];
+    return sys.velocities()[d][i];
   };
-  const std::vector<double>& rho = sys.density();
-  const std::vector<double>& p = sys.pressure();
-  const auto kind = [&](std::size_t k) {
-    const std::size_t i = index(k);
-    return i >= nb ? 2.0 : static_cast<double>(P.kind[i]);
+  const auto field = [&](const std::vector<double>& f) {
+    return [&f, first = first](std::size_t k, int) { return first + k < f.size() ? f[first + k] : 0.0; };
   };
 
-  // Further state blocks after the velocities, one scalar per fluid particle each (walls: 0).
-  // (Wall densities of dynamic boundary particles, last in the state, are in "density" already.)
-  const std::size_t extra = nf > 0 ? L.extra_blocks() : 0;
-  std::vector<std::string> names = L.field_names();
-  std::vector<std::string> extra_names;
-  for (std::size_t k = 0; k < extra; ++k)
-    extra_names.push_back(names.size() >= 2 + extra ? names[2 + k] : "state_block_" + std::to_string(k));
+  std::vector<Array> time_arrays, point_arrays, points, verts;
+  time_arrays.push_back(make_array<double>("Float64", "TimeValue", 1, 1, [&](std::size_t, int) { return t; }));
+  point_arrays.push_back(make_array<std::int64_t>("Int64", "id", 1, n, [&](std::size_t k, int) {
+    return part == VtkPart::ghosts ? std::int64_t{-1} : static_cast<std::int64_t>(first + k);
+  }));
+  point_arrays.push_back(make_array<double>("Float64", "mass", 1, n, field(P.mass)));
+  point_arrays.push_back(make_array<double>("Float64", "velocity", 3, n, velocity));
+  // With an integrated density the fluid's is the state's own (the same values the RHS gathered).
+  if (part == VtkPart::fluid && L.has_density)
+    point_arrays.push_back(make_array<double>("Float64", "density", 1, n,
+                                              [&](std::size_t k, int) { return y[L.density() + k]; }));
+  else
+    point_arrays.push_back(make_array<double>("Float64", "density", 1, n, field(rho)));
+  point_arrays.push_back(make_array<double>("Float64", "pressure", 1, n, field(p)));
+  point_arrays.push_back(make_array<std::uint8_t>("UInt8", "kind", 1, n, [&](std::size_t, int) {
+    return static_cast<std::uint8_t>(part);
+  }));
+  if (part == VtkPart::fluid && nf > 0) {
+    // Further state blocks after the velocities, one scalar per fluid particle each, except the
+    // density, written above (one array per name: ParaView shows only one of two equal names). Wall
+    // densities of dynamic boundary particles, last in the state, are in the walls' "density".
+    const std::size_t extra = L.extra_blocks();
+    const std::vector<std::string> names = L.field_names();
+    for (std::size_t b = 0; b < extra; ++b) {
+      const std::string name = names.size() >= 2 + extra ? names[2 + b] : "state_block_" + std::to_string(b);
+      if (name == "density") continue;
+      point_arrays.push_back(make_array<double>("Float64", name, 1, n, [&, b](std::size_t k, int) {
+        return y[L.velocities_end() + b * nf + k];
+      }));
+    }
+  }
+  points.push_back(make_array<double>("Float64", "Points", 3, n, position));
+  // One vertex cell per particle, so ParaView draws the points without a glyph filter.
+  verts.push_back(make_array<std::int64_t>("Int64", "connectivity", 1, n, [](std::size_t k, int) { return k; }));
+  verts.push_back(make_array<std::int64_t>("Int64", "offsets", 1, n, [](std::size_t k, int) { return k + 1; }));
 
   std::ostringstream s;
-  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-    << "  <PolyData>\n    <FieldData>\n"
-    << "      <DataArray type=\"Float64\" Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">";
-  put(s, t);
-  s << "</DataArray>\n    </FieldData>\n"
+  std::uint64_t offset = 0;
+  const auto tags = [&](const std::vector<Array>& arrays, const char* indent, bool tuples = false) {
+    for (const auto& a : arrays) {
+      array_tag(s, a, offset, indent, tuples);
+      offset += sizeof(std::uint64_t) + a.bytes.size();
+    }
+  };
+  s << "<?xml version=\"1.0\"?>\n"
+    << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+    << "  <PolyData>\n    <FieldData>\n";
+  tags(time_arrays, "      ", true);
+  s << "    </FieldData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
     << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"density\" Vectors=\"velocity\">\n";
-  data_array(s, "Float64", "velocity", 3, n, velocity);
-  data_array(s, "Float64", "density", 1, n, [&](std::size_t k, int) {
-    const std::size_t i = index(k);
-    return i < rho.size() ? rho[i] : 0.0;
-  });
-  data_array(s, "Float64", "pressure", 1, n, [&](std::size_t k, int) {
-    const std::size_t i = index(k);
-    return i < p.size() ? p[i] : 0.0;
-  });
-  data_array(s, "UInt8", "kind", 1, n, [&](std::size_t k, int) { return kind(k); });
-  for (std::size_t k = 0; k < extra; ++k)
-    data_array(s, "Float64", extra_names[k], 1, n,
-               [&](std::size_t i, int) { return i < nf ? y[L.velocities_end() + k * nf + i] : 0.0; });
+  tags(point_arrays, "        ");
   s << "      </PointData>\n      <Points>\n";
-  data_array(s, "Float64", "", 3, n, position);
+  tags(points, "        ");
   s << "      </Points>\n      <Verts>\n";
-  // One vertex cell per particle, so ParaView draws the points without a glyph filter.
-  data_array(s, "Int64", "connectivity", 1, n, [](std::size_t i, int) { return static_cast<double>(i); });
-  data_array(s, "Int64", "offsets", 1, n, [](std::size_t i, int) { return static_cast<double>(i + 1); });
-  s << "      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return s.str();
+  tags(verts, "        ");
+  s << "      </Verts>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+  std::string text = s.str();
+  text.reserve(text.size() + offset + 32);
+  for (const auto* group : {&time_arrays, &point_arrays, &points, &verts})
+    for (const auto& a : *group) {
+      append_le<std::uint64_t>(text, a.bytes.size());
+      text += a.bytes;
+    }
+  text += "\n  </AppendedData>\n</VTKFile>\n";
+  return text;
 }
 
 template <int D>
 void VtkObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
   if (!out.enabled) return;
-  char name[32];
-  std::snprintf(name, sizeof name, "particles_%04zu.vtp", written_.size());
-  out.write(name, vtp_text(sys, y, t, walls_, ghosts_));
-  written_.emplace_back(t, name);
+  std::vector<VtkPart> parts{VtkPart::fluid};
+  if (walls_ && vtk_part_size(sys, VtkPart::walls) > 0) parts.push_back(VtkPart::walls);
+  if (ghosts_ && vtk_part_size(sys, VtkPart::ghosts) > 0) parts.push_back(VtkPart::ghosts);
+  for (const VtkPart part : parts) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s_%04zu.vtp", kPartName[static_cast<int>(part)], outputs_);
+    out.write(name, vtp_file(sys, y, t, part));
+    written_.push_back({t, static_cast<int>(part), name});
+  }
+  ++outputs_;
   // Rewritten every time, so an interrupted run still leaves a complete collection.
-  out.write("particles.pvd", pvd_text(written_));
+  std::ostringstream s;
+  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+    << "  <Collection>\n";
+  for (const auto& e : written_)
+    s << "    <DataSet timestep=\"" << number(e.t) << "\" group=\"\" part=\"" << e.part << "\" name=\""
+      << kPartName[e.part] << "\" file=\"" << e.file << "\"/>\n";
+  s << "  </Collection>\n</VTKFile>\n";
+  out.write("particles.pvd", s.str());
 }
 
 template <int D>
 nlohmann::json VtkObserver<D>::save_state() const {
   nlohmann::json files = nlohmann::json::array();
-  for (const auto& [t, f] : written_) files.push_back({{"t", t}, {"file", f}});
-  return {{"files", files}};
+  for (const auto& e : written_) files.push_back({{"t", e.t}, {"part", e.part}, {"file", e.file}});
+  return {{"files", files}, {"outputs", outputs_}};
 }
 
 template <int D>
 void VtkObserver<D>::restore_state(const nlohmann::json& state, const OutputSink& out) {
   // Continue the collection with the earlier files that are in this output directory (a restart
-  // into another directory starts a new collection).
+  // into another directory starts a new collection, numbered from 0).
   written_.clear();
+  outputs_ = 0;
   if (!state.contains("files")) return;
   for (const auto& f : state["files"]) {
     const std::string file = f.at("file").get<std::string>();
-    if (std::filesystem::exists(out.path(file))) written_.emplace_back(f.at("t").get<double>(), file);
+    const int part = f.value("part", 0);
+    if (part < 0 || part > 2) continue;
+    if (std::filesystem::exists(out.path(file))) written_.push_back({f.at("t").get<double>(), part, file});
+  }
+  if (written_.empty()) return;
+  if (state.contains("outputs")) {
+    outputs_ = state["outputs"].get<std::size_t>();
+  } else {  // a checkpoint without the count: one output time per distinct t
+    for (std::size_t k = 0; k < written_.size(); ++k) outputs_ += k == 0 || written_[k].t != written_[k - 1].t;
   }
 }
 
 template class VtkObserver<1>;
 template class VtkObserver<2>;
 template class VtkObserver<3>;
-template std::string vtp_text<1>(const SphSystem<1>&, const double*, double, bool, bool);
-template std::string vtp_text<2>(const SphSystem<2>&, const double*, double, bool, bool);
-template std::string vtp_text<3>(const SphSystem<3>&, const double*, double, bool, bool);
+template std::size_t vtk_part_size<1>(const SphSystem<1>&, VtkPart);
+template std::size_t vtk_part_size<2>(const SphSystem<2>&, VtkPart);
+template std::size_t vtk_part_size<3>(const SphSystem<3>&, VtkPart);
+template std::string vtp_file<1>(const SphSystem<1>&, const double*, double, VtkPart);
+template std::string vtp_file<2>(const SphSystem<2>&, const double*, double, VtkPart);
+template std::string vtp_file<3>(const SphSystem<3>&, const double*, double, VtkPart);
 
 }  // namespace sphmol

@@ -1,20 +1,28 @@
 #pragma once
-// VTK XML PolyData output (ParaView, VisIt): one particles_NNNN.vtp per output time and a
-// particles.pvd collection listing them with their physical times. ASCII with 17 significant
-// digits: readable and diffable, exact round trip of every double, no base64/endianness handling;
-// the files are larger than binary ones, which is fine at the particle counts this code runs.
-// Fields: every per-particle quantity the system exposes — position and velocity (3 components,
-// zero-padded below 3D), density, pressure, kind (0 fluid, 1 wall, 2 ghost), then each further state
-// block of the layout (energy, h, ... as other scenes add them) under its field name (walls and
-// ghosts: 0). Ghost (mirror) particles are those generated at the most recent RHS evaluation
-// (output.vtk_ghosts; the run loop evaluates the RHS at the written state first), after the walls.
+// VTK XML PolyData output (ParaView, VisIt). At every output time one file per particle group:
+// fluid_NNNN.vtp, walls_NNNN.vtp (output.vtk_walls, when the scene has wall particles) and
+// ghosts_NNNN.vtp (output.vtk_ghosts, when ghost walls made images), and a particles.pvd collection
+// that lists them with their physical time (`timestep`) and group (`part` 0 fluid, 1 walls,
+// 2 ghosts), so ParaView shows each group as a block and can colour or hide it alone.
+// Encoding: raw appended binary (`header_type="UInt64"`, little-endian): each array is a UInt64
+// byte count followed by its values, exact for every double and about half the size of 17-digit
+// ASCII (docs/output.md gives the measured sizes).
+// Point data: `id` (the particle's index in the scene's initial particle set, the same in every
+// output; ghosts -1: they are regenerated at every evaluation), `mass`, `velocity` (3 components,
+// zero-padded below 3D), `density`, `pressure`, `kind` (0 fluid, 1 wall, 2 ghost); fluid files also
+// carry each further state block of the layout (energy, h, ...) under its field name, an integrated
+// density being the `density` array itself. Wall particles
+// are where the solver places them (Particles::wall_position: belts such as a cavity lid stay put),
+// ghosts as generated at the most recent RHS evaluation (the run loop evaluates the RHS at the written
+// state first). Each file carries its time as the FieldData array `TimeValue`, which ParaView reads.
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "sphmol/run/case.hpp"
 
 namespace sphmol {
+
+enum class VtkPart { fluid = 0, walls = 1, ghosts = 2 };
 
 template <int D>
 class VtkObserver final : public OutputObserver<D> {
@@ -25,12 +33,24 @@ class VtkObserver final : public OutputObserver<D> {
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
 
  private:
+  struct Entry {
+    double t;
+    int part;
+    std::string file;
+  };
   bool walls_, ghosts_;
-  std::vector<std::pair<double, std::string>> written_;  // (time, file) for the .pvd
+  std::vector<Entry> written_;  // every file so far, for the .pvd
+  std::size_t outputs_ = 0;     // output times written (the NNNN of the file names)
 };
 
-// The .vtp text of the state y at time t (exposed for tests).
+// Number of particles of `part` in the state y (walls: the scene's wall particles; ghosts: the
+// images of the most recent RHS evaluation).
 template <int D>
-std::string vtp_text(const SphSystem<D>& sys, const double* y, double t, bool walls, bool ghosts = false);
+std::size_t vtk_part_size(const SphSystem<D>& sys, VtkPart part);
+
+// The .vtp content (XML header and raw appended binary data) of one part of the state y at time t
+// (exposed for tests).
+template <int D>
+std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part);
 
 }  // namespace sphmol

@@ -70,9 +70,10 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
     }
     return den > 0.0 ? num / den : 0.0;
   };
-  std::ostringstream csv;
-  csv << std::setprecision(10) << "# cavity centre lines at t = " << t << " s vs Ghia et al. (1982), Re = " << Re_
-      << "; SPH Shepard-interpolated\nline,coord,sph,ghia\n";
+  // One file per centre line, so that every column is numeric.
+  std::ostringstream csv_u, csv_v;
+  csv_u << std::setprecision(10) << "y/L [-],u_sph/U [-],u_ghia/U [-]\n";
+  csv_v << std::setprecision(10) << "x/L [-],v_sph/U [-],v_ghia/U [-]\n";
   double su = 0, mu = 0, sv = 0, mv = 0;
   int nu = 0, nv = 0;
   std::vector<double> line;  // SPH values at the table points, u then v (steadiness)
@@ -85,7 +86,7 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
     su += e * e;
     mu = std::max(mu, std::abs(e));
     ++nu;
-    csv << "u_x0.5," << yy << ',' << u << ',' << ghia_->u[k] << '\n';
+    csv_u << yy << ',' << u << ',' << ghia_->u[k] << '\n';
   }
   for (std::size_t k = 0; k < ghia_->x.size(); ++k) {
     const double xx = ghia_->x[k];
@@ -96,13 +97,15 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
     sv += e * e;
     mv = std::max(mv, std::abs(e));
     ++nv;
-    csv << "v_y0.5," << xx << ',' << v << ',' << ghia_->v[k] << '\n';
+    csv_v << xx << ',' << v << ',' << ghia_->v[k] << '\n';
   }
   if (out.enabled) {
-    std::ostringstream name;
-    name << "centrelines_t" << std::setprecision(6) << t << ".csv";
-    out.write(name.str(), csv.str());
-    last_csv_ = name.str();
+    std::ostringstream tag;
+    tag << "_t" << std::setprecision(6) << t << ".csv";
+    last_u_csv_ = "centreline_u" + tag.str();
+    last_v_csv_ = "centreline_v" + tag.str();
+    out.write(last_u_csv_, csv_u.str());
+    out.write(last_v_csv_, csv_v.str());
     last_t_ = t;
   }
   double change = 1.0;
@@ -140,27 +143,30 @@ void CavityCase::annotate(nlohmann::json& summary) const {
       "per convective time L/U between the last two outputs: relative kinetic-energy change (ke_rate) and RMS "
       "change of the centre-line velocities / U (centreline_rate); steady if both < 5e-3";
   summary["discretization"]["spacing"] = spacing_;
+  if (ghia_) {
+    std::ostringstream r;
+    r << " vs Ghia, Ghia & Shin (1982) Tables I and II at Re = " << Re_
+      << "; SPH velocities Shepard-interpolated to the table points, output time t";
+    const std::string ref = r.str();
+    summary["csv_files"]["centreline_u_t<t>.csv"] = "u/U on the vertical centre line x = L/2" + ref;
+    summary["csv_files"]["centreline_v_t<t>.csv"] = "v/U on the horizontal centre line y = L/2" + ref;
+  }
 }
 
 std::vector<PlotScript> CavityCase::plots(const OutputSink& out) const {
-  if (!ghia_ || last_csv_.empty()) return {};
-  const std::string f = last_csv_;
-  // Rows are "line,coord,sph,ghia"; the ternary keeps the rows of one centre line (1/0 = skip).
-  auto sel = [](const std::string& line, const std::string& x, const std::string& y) {
-    return "(strcol(1) eq '" + line + "' ? " + x + " : 1/0):" + y;
-  };
+  if (!ghia_ || last_u_csv_.empty()) return {};
   std::ostringstream s;
   s << gnuplot_csv_preamble("Cavity centre lines vs Ghia, Ghia & Shin (1982) (sph-mol CavityCase)", 1200, 560, 11,
-                            "centrelines.png", 'l')  // header 'line,coord,sph,ghia'
+                            "centrelines.png")
     << "set multiplot layout 1,2 title \"Lid-driven cavity, Re = " << Re_ << ", t = " << last_t_
     << " s: lines SPH, points Ghia et al. (1982)\" noenhanced\n"
     << "set grid\nset key bottom right\n"
     << "set xlabel 'u / U at x = 0.5'\nset ylabel 'y / L'\nset yrange [0:1]\n"
-    << "plot '" << f << "' using " << sel("u_x0.5", "$3", "2") << " with linespoints pt 6 lw 2 title 'SPH', \\\n"
-    << "  '" << f << "' using " << sel("u_x0.5", "$4", "2") << " with points pt 7 ps 1.3 title 'Ghia'\n"
+    << "plot '" << last_u_csv_ << "' using 2:1 with linespoints pt 6 lw 2 title 'SPH', \\\n"
+    << "  '" << last_u_csv_ << "' using 3:1 with points pt 7 ps 1.3 title 'Ghia'\n"
     << "set xlabel 'x / L'\nset ylabel 'v / U at y = 0.5'\nset xrange [0:1]\nset autoscale y\nset key top right\n"
-    << "plot '" << f << "' using " << sel("v_y0.5", "$2", "3") << " with linespoints pt 6 lw 2 title 'SPH', \\\n"
-    << "  '" << f << "' using " << sel("v_y0.5", "$2", "4") << " with points pt 7 ps 1.3 title 'Ghia'\n"
+    << "plot '" << last_v_csv_ << "' using 1:2 with linespoints pt 6 lw 2 title 'SPH', \\\n"
+    << "  '" << last_v_csv_ << "' using 1:3 with points pt 7 ps 1.3 title 'Ghia'\n"
     << "unset multiplot\n";
   return {{"centrelines.png", s.str()}};
 }

@@ -39,7 +39,7 @@ class CavityCase final : public Case<2> {
   static constexpr double kSteadyRate = 5e-3;
   double t_prev_ = 0.0;
   std::vector<double> line_prev_;  // centre-line values at the previous output
-  std::string last_csv_;  // centre-line file of the latest output (plots)
+  std::string last_u_csv_, last_v_csv_;  // centre-line files of the latest output (plots)
   double last_t_ = 0.0;
 };
 

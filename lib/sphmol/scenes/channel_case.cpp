@@ -36,7 +36,7 @@ nlohmann::json ChannelCase::measure(const SphSystem<2>& sys, const double* y, do
   }
   if (out.enabled && profiles_) {
     std::ostringstream s, name;
-    s << "# SPH velocity profile vs " << ref_.name << " at t = " << t << " s\ny,u_sph,u_exact\n" << std::setprecision(12);
+    s << "y [m],u_sph [m/s],u_exact [m/s]\n" << std::setprecision(12);
     for (const auto& p : e.profile) s << p.y << ',' << p.u_sph << ',' << p.u_exact << '\n';
     name << "profile_t" << std::setprecision(6) << t << ".csv";
     out.write(name.str(), s.str());
@@ -53,6 +53,9 @@ void ChannelCase::annotate(nlohmann::json& summary) const {
   summary["v0"] = ref_.v0;
   summary["discretization"]["spacing"] = spacing_;
   summary["discretization"]["wall_layers"] = wall_layers_;
+  if (profiles_)
+    summary["csv_files"]["profile_t<t>.csv"] = "SPH velocity profile across the channel (fluid particles) vs " + ref_.name +
+                                               " at output time t";
 }
 
 std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
@@ -60,8 +63,7 @@ std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
   const auto files = timed_output_files(out, "profile_t");
   if (files.empty()) return {};
   std::ostringstream s;
-  s << gnuplot_csv_preamble("SPH velocity profiles vs " + ref_.name + " (sph-mol ChannelCase)", 900, 640, 11, "profiles.png",
-                            'y')  // header 'y,u_sph,u_exact'
+  s << gnuplot_csv_preamble("SPH velocity profiles vs " + ref_.name + " (sph-mol ChannelCase)", 900, 640, 11, "profiles.png")
     << "set title \"" << ref_.name << ": u(y) at the output times; points SPH, lines exact\" noenhanced\n"
     << "set xlabel 'u [m/s]'\nset ylabel 'y [m]'\nset key outside right top\nset grid\n"
     << "plot \\\n";

@@ -25,8 +25,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   n_wall_ = s.particles.n_wall();
   mass0_ = 0.0;
   for (std::size_t i = 0; i < n_fluid0_; ++i) mass0_ += s.particles.mass[i];
-  csv_ = "# dam break surge front: SPH vs Ritter (2 sqrt(gH) t), Martin & Moyce 1952, Koshizuka & Oka 1996\n"
-         "t,T,x_front,x_ritter,x_mm,x_ko\n";
+  csv_ = "t [s],T [-],x_front [m],x_ritter [m],x_mm [m],x_ko [m]\n";
   auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
   sys->append_term(std::make_unique<WallPenetrationMonitor>(Lx_, config.geometry.box[1], penetration_));
   return sys;
@@ -57,10 +56,8 @@ nlohmann::json DamBreakCase::measure(const SphSystem<2>& sys, const double* y, d
 
   std::ostringstream row;
   row << std::setprecision(10) << t << ',' << T << ',' << x_front << ',' << x_ritter << ',';
-  if (mm) row << *mm * a_;
-  row << ',';
-  if (ko) row << *ko * a_;
-  row << '\n';
+  // Outside the experiments' time range: nan (read as missing by pandas and numpy).
+  row << (mm ? *mm * a_ : std::nan("")) << ',' << (ko ? *ko * a_ : std::nan("")) << '\n';
   csv_ += row.str();
   if (out.enabled) out.write("front.csv", csv_);
   return j;
@@ -120,6 +117,12 @@ void DamBreakCase::annotate(nlohmann::json& summary) const {
   summary["discretization"]["spacing"] = dx_;
   summary["discretization"]["wall_layers"] = wall_layers_;
   summary["particles_total"] = n_fluid0_ + n_wall_;
+  summary["csv_files"] = {
+      {"front.csv", "surge front x_front (rightmost fluid particle + dx/2) at every output time, T = t sqrt(2 g / a), "
+                    "vs Ritter a + 2 sqrt(g H) t and the experiments of Martin and Moyce (1952, n^2 = 2) and Koshizuka "
+                    "and Oka (1996) scaled to a (x_mm, x_ko; nan outside their time range)"},
+      {"front_martin_moyce_1952.csv", "Martin and Moyce (1952, n^2 = 2) surge front scaled to a and g of this run"},
+      {"front_koshizuka_oka_1996.csv", "Koshizuka and Oka (1996) surge front scaled to a and g of this run"}};
   // The anchor counts all particles (fluid and wall) per step.
   const long steps = summary.value("steps", 0L);
   const double wall = summary.value("wall_seconds", 0.0);
@@ -128,17 +131,18 @@ void DamBreakCase::annotate(nlohmann::json& summary) const {
 }
 
 std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
-  // Reference points in dimensional form, for gnuplot.
-  std::ostringstream ref;
-  ref << "# t [s], x_front [m] of the experiments scaled to a = " << a_ << " m, g = " << g_ << " m/s^2\n"
-      << "# source,t,x\n" << std::setprecision(8);
+  // Reference points in dimensional form, one file per experiment, for gnuplot.
   const double tscale = 1.0 / std::sqrt(2.0 * g_ / a_);
-  for (const auto& p : martin_moyce_1952_n2_2()) ref << "mm," << p.T * tscale << ',' << p.Z * a_ << '\n';
-  ref << "\n\n";
-  for (const auto& p : koshizuka_oka_1996()) ref << "ko," << p.T * tscale << ',' << p.Z * a_ << '\n';
-  out.write("front_reference.csv", ref.str());
+  const auto reference = [&](const std::string& file, const auto& points) {
+    std::ostringstream ref;
+    ref << "t [s],x_front [m]\n" << std::setprecision(8);
+    for (const auto& p : points) ref << p.T * tscale << ',' << p.Z * a_ << '\n';
+    out.write(file, ref.str());
+  };
+  reference("front_martin_moyce_1952.csv", martin_moyce_1952_n2_2());
+  reference("front_koshizuka_oka_1996.csv", koshizuka_oka_1996());
   std::ostringstream s;
-  s << gnuplot_csv_preamble("Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)", 900, 640, 11, "front.png", 't')
+  s << gnuplot_csv_preamble("Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)", 900, 640, 11, "front.png")
     << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"
     << "set xlabel 't [s]'\nset ylabel 'x_{front} [m]'\nset key left top\nset grid\n"
     << "set key right bottom box opaque\n"
@@ -147,8 +151,8 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
     << "ritter(t) = " << a_ << " + 2.0 * sqrt(" << g_ << " * " << H_ << ") * t\n"
     << "plot 'front.csv' using 1:3 with linespoints pt 7 ps 0.6 lw 1.5 title 'SPH', \\\n"
     << "  ritter(x) with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t (upper bound)', \\\n"
-    << "  'front_reference.csv' index 0 using 2:3 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
-    << "  'front_reference.csv' index 1 using 2:3 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n"
+    << "  'front_martin_moyce_1952.csv' using 1:2 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
+    << "  'front_koshizuka_oka_1996.csv' using 1:2 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n"
     << "  " << Lx_ << " with lines lc rgb 'black' lw 1 title 'right wall'\n";
   return {{"front.png", s.str()}};
 }

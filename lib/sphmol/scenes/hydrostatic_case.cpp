@@ -42,7 +42,7 @@ nlohmann::json HydrostaticCase::measure(const SphSystem<2>& sys, const double* y
   const double scale = rho0_ * g_ * depth_;
   double s2 = 0.0, emax = 0.0;
   std::ostringstream csv;
-  csv << "# hydrostatic pressure at t = " << t << " s: SPH vs rho0 g (depth - y)\ny,p_sph,p_exact\n" << std::setprecision(10);
+  csv << "y [m],p_sph [Pa],p_exact [Pa]\n" << std::setprecision(10);
   for (std::size_t i = 0; i < n; ++i) {
     const double yi = y[lay.position(1) + i];
     const double pe = rho0_ * g_ * (depth_ - yi);
@@ -85,6 +85,8 @@ void HydrostaticCase::annotate(nlohmann::json& summary) const {
   summary["settle_time"] = settle_;
   summary["final_errors_note"] = "p_rms, p_max: worst over output times t >= settle_time; max_drift over all RHS evaluations";
   summary["discretization"]["spacing"] = spacing_;
+  summary["csv_files"]["pressure_t<t>.csv"] =
+      "pressure of every fluid particle vs the hydrostatic p = rho0 g (depth - y) at output time t";
 }
 
 // p against depth at the last output time: every fluid particle, and the line rho0 g depth.
@@ -94,8 +96,7 @@ std::vector<PlotScript> HydrostaticCase::plots(const OutputSink& out) const {
   const auto& [t_last, file] = files.back();
   std::ostringstream s;
   s << std::setprecision(10)
-    << gnuplot_csv_preamble("hydrostatic column: p vs depth (sph-mol HydrostaticCase)", 800, 640, 11, "pressure_depth.png",
-                            'y')  // header 'y,p_sph,p_exact'
+    << gnuplot_csv_preamble("hydrostatic column: p vs depth (sph-mol HydrostaticCase)", 800, 640, 11, "pressure_depth.png")
     << "set title \"hydrostatic pressure at t = " << t_last << " s\"\n"
     << "set xlabel 'depth H - y [m]'\nset ylabel 'p [Pa]'\nset key top left\nset grid\n"
     << "H = " << depth_ << "\nrho0g = " << rho0_ * g_ << "\nset xrange [0:H]\n"

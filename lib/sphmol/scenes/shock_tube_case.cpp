@@ -20,6 +20,9 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
+constexpr const char* kProfileHeader =
+    "x [m],rho [kg/m^3],u [m/s],p [Pa],e [J/kg],rho_exact [kg/m^3],u_exact [m/s],p_exact [Pa],e_exact [J/kg]\n";
+
 // x where f crosses `level` between bins a and b (linear interpolation).
 double crossing(const ShockTubeBin& a, const ShockTubeBin& b, double fa, double fb, double level) {
   if (fb == fa) return 0.5 * (a.x + b.x);
@@ -125,10 +128,7 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
   const RiemannWaves ex = exact_->waves(t, 0.0);
   if (out.enabled && profiles_) {
     std::ostringstream s, name;
-    s << "# shock tube: SPH profile binned in x (bin = particle spacing, mean over the bin's particles) vs the "
-         "exact Riemann solution at the bin's mean x, t = "
-      << t << "\nx,rho,u,p,e,rho_exact,u_exact,p_exact,e_exact\n"
-      << std::setprecision(10);
+    s << kProfileHeader << std::setprecision(10);
     for (const auto& b : bins) {
       const RiemannSample q = exact_->sample(b.x, t, 0.0);
       s << b.x << ',' << b.rho << ',' << b.u << ',' << b.p << ',' << b.e << ',' << q.rho << ',' << q.u << ',' << q.p
@@ -140,9 +140,7 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
   if (out.enabled && profiles_) {
     std::sort(mid.begin(), mid.end());
     std::ostringstream s, name;
-    s << "# shock tube: mid-line particles (|y - W/2| < dx; 1D: all) vs the exact Riemann solution at their x, t = "
-      << t << "\nx,rho,u,p,e,rho_exact,u_exact,p_exact,e_exact\n"
-      << std::setprecision(10);
+    s << kProfileHeader << std::setprecision(10);
     for (const auto& r : mid)
       for (int k = 0; k < 9; ++k) s << r[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
     name << "midline_t" << std::setprecision(6) << t << ".csv";
@@ -187,6 +185,13 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
       {"L1_mid", "the same mean over the mid-line particles only, |y - W/2| < dx (1D: all particles)"},
       {"waves", "threshold crossings on the x-binned profile: rarefaction head/tail where u passes 5%/95% of u*, "
                 "shock where u falls through u*/2, contact where rho passes (rho*_L + rho*_R)/2"}};
+  if (profiles_) {
+    summary["csv_files"]["profile_t<t>.csv"] =
+        "SPH profile binned in x (bin = particle spacing, mean over the bin's particles) vs the exact Riemann solution "
+        "at the bin's mean x, output time t";
+    summary["csv_files"]["midline_t<t>.csv"] =
+        "mid-line particles (|y - W/2| < dx; 1D: all), sorted by x, vs the exact Riemann solution at their x, output time t";
+  }
 }
 
 // Rho, u, p, e on the mid-line at the last output time against the exact solution: 4 panels.
@@ -198,8 +203,8 @@ std::vector<PlotScript> ShockTubeCase<D>::plots(const OutputSink& out) const {
   const auto& [t_last, file] = files.back();
   std::ostringstream s;
   s << gnuplot_csv_preamble("shock tube: mid-line particles vs the exact Riemann solution (sph-mol ShockTubeCase)", 1100,
-                            800, 10, "shock_tube.png", 'x')  // header 'x,rho,...'
-    << "set grid\nset key center right\nset xlabel 'x'\n"
+                            800, 10, "shock_tube.png")
+    << "set grid\nset key center right\nset xlabel 'x [m]'\n"
     << "set multiplot layout 2,2 title \"shock tube, t = " << t_last << ": points SPH (mid-line), lines exact\"\n";
   const char* names[] = {"density rho", "velocity u", "pressure p", "internal energy e"};
   for (int k = 0; k < 4; ++k)

@@ -55,8 +55,7 @@ nlohmann::json TaylorGreenCase::measure(const SphSystem<2>& sys, const double* y
   ln_vmax_.push_back(std::log(vmax));
   if (out.enabled) {
     std::ostringstream s;
-    s << "# Taylor-Green: max |v| of the SPH particles vs the exact amplitude U e^{bt}, b = " << b << " 1/s\n"
-      << "t,maxv_sph,maxv_exact\n" << std::setprecision(12);
+    s << "t [s],maxv_sph [m/s],maxv_exact [m/s]\n" << std::setprecision(12);
     for (std::size_t k = 0; k < t_.size(); ++k) s << t_[k] << ',' << vmax_[k] << ',' << ref_.U * std::exp(b * t_[k]) << '\n';
     out.write("decay.csv", s.str());
   }
@@ -89,6 +88,10 @@ void TaylorGreenCase::annotate(nlohmann::json& summary) const {
   summary["Re"] = ref_.Re;
   summary["U"] = ref_.U;
   summary["discretization"]["spacing"] = spacing_;
+  std::ostringstream decay;
+  decay << "largest particle speed at every output time vs the exact Taylor-Green amplitude U e^{bt}, b = "
+        << ref_.decay_rate() / L_ << " 1/s";
+  summary["csv_files"]["decay.csv"] = decay.str();
 }
 
 std::vector<PlotScript> TaylorGreenCase::plots(const OutputSink& out) const {
@@ -97,7 +100,7 @@ std::vector<PlotScript> TaylorGreenCase::plots(const OutputSink& out) const {
   std::ostringstream s;
   s << std::setprecision(12)
     << gnuplot_csv_preamble("Taylor-Green decay: SPH max|v| vs the exact U e^{bt} (sph-mol TaylorGreenCase)", 900, 640, 11,
-                            "decay.png", 't')  // header 't,maxv_sph,maxv_exact'
+                            "decay.png")
     << "set title \"Taylor-Green, Re = " << ref_.Re << ": max|v| (points SPH, line exact U e^{bt}, b = " << b
     << " 1/s)\" noenhanced\n"
     << "set xlabel 't [s]'\nset ylabel 'max |v| [m/s]'\nset logscale y\nset grid\nset key top right\n"

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/fastest_at_error.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
@@ -79,7 +80,7 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   std::filesystem::create_directories(opt.output_dir);
   nlohmann::json runs = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "integrator,setting,wall_seconds,cpu_seconds,rhs_evals,steps,error,exact_error,status\n";
+  // The header follows the runs: the error units depend on the case's error measure.
   std::vector<double> ref_state;
   nlohmann::json reference = nullptr;
   if (opt.reference_dt) {
@@ -160,7 +161,10 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   // With a reference run, the same summary for the exact-reference error (time + space error).
   const nlohmann::json fastest_exact =
       opt.reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
-  write_file_atomically(opt.output_dir + "/comparison.csv", csv.str());
+  write_file_atomically(opt.output_dir + "/comparison.csv",
+                        "integrator,setting,wall_seconds [s],cpu_seconds [s],rhs_evals [-],steps [-],error [" +
+                            (opt.reference_dt ? std::string("-") : error_unit(exact_key)) + "],exact_error [" +
+                            error_unit(exact_key) + "],status\n" + csv.str());
   const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");
   // The same against CPU time: on a shared machine other jobs stretch the wall time.
   draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
 
@@ -67,7 +68,6 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   nlohmann::json levels = nlohmann::json::array();
   nlohmann::json series = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "refine,integrator,level," << (time ? "dt" : "dx") << ",error,observed_order,expected_order,wall_seconds\n";
   Chart chart{std::string("convergence in ") + (time ? "time" : "space") + ": " + base.case_name,
               time ? "dt [s]" : "particle spacing dx [m]", time ? "rel. rms velocity error vs reference run" : "error vs analytic", true,
               true, {}};
@@ -165,7 +165,10 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
   }
   if (!time) chart.ylabel = "final " + series_error_key;
-  write_file_atomically(opt.output_dir + "/convergence.csv", csv.str());
+  write_file_atomically(opt.output_dir + "/convergence.csv",
+                        std::string("refine,integrator,level [-],") + (time ? "dt [s]" : "dx [m]") + ",error [" +
+                            (time ? std::string("-") : error_unit(series_error_key)) +
+                            "],observed_order [-],expected_order [-],wall_seconds [s]\n" + csv.str());
   const std::string problem = draw_chart(chart, opt.output_dir, "convergence");
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +

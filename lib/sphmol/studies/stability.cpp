@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
 
@@ -74,7 +75,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   std::filesystem::create_directories(opt.output_dir);
   const bool fixed = base.time.dt.has_value();
   std::ostringstream csv;
-  csv << "sound_speed," << (fixed ? "dt" : "cfl_factor") << ",class,status,sign_changes,late_amplitude,max_abs_e_signed,error,steps,wall_seconds,cause\n";
+  std::string error_key;  // the case's error measure, for the unit in the CSV header
   std::map<std::string, ChartSeries> by_class;
   by_class["stable"] = ChartSeries{"stable", {}, {}, "forest-green"};
   by_class["oscillating"] = ChartSeries{"oscillating", {}, {}, "dark-orange"};
@@ -98,6 +99,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       c.output.profiles = false;
       const StudyRun r = run_study_case(c);
       const StabilityClass cl = classify_run(r.summary, opt.osc_threshold);
+      error_key = r.summary.value("primary_error", "e_rms");
       const std::string cause = r.blown_up ? r.summary["blow_up"]["cause"].get<std::string>() : std::string();
       std::string cause_csv = cause;
       for (char& ch : cause_csv)
@@ -115,7 +117,10 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
                  << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
                  << (cause.empty() ? "" : ", " + cause) << ")" << (r.note.empty() ? "" : "; " + r.note) << '\n';
     }
-  write_file_atomically(opt.output_dir + "/stability.csv", csv.str());
+  write_file_atomically(opt.output_dir + "/stability.csv",
+                        std::string("sound_speed [m/s],") + (fixed ? "dt [s]" : "cfl_factor [-]") +
+                            ",class,status,sign_changes [-],late_amplitude [-],max_abs_e_signed [-],error [" +
+                            error_unit(error_key) + "],steps [-],wall_seconds [s],cause\n" + csv.str());
   Chart chart{"stability map: " + base.case_name, "sound speed c [m/s]", fixed ? "dt [s]" : "CFL factor", true, true, {}, "points pointsize 2"};
   chart.tight = true;
   // A log axis within one decade gets no tick labels: an axis is linear unless it spans one.
