@@ -19,6 +19,7 @@
 #include "sphmol/run/observers.hpp"
 #include "sphmol/run/plots.hpp"
 #include "sphmol/run/progress.hpp"
+#include "sphmol/run/restart_check.hpp"
 #include "sphmol/run/signals.hpp"
 #include "sphmol/time/integrator.hpp"
 
@@ -54,6 +55,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                             std::to_string(restart->y.size()) + " state values, integrator " + restart->integrator +
                             ") does not match the config (case " + config.case_name + ", " +
                             std::to_string(y.size()) + " state values, integrator " + integrator->name() + ")");
+    check_restart(*restart, config, opt.restart_from, opt.force_physics_change);
     y = restart->y;
     t = restart->t;
     errors = restart->errors;
@@ -84,6 +86,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   const auto wall_now = [&] {
     return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  std::vector<std::string> written = restart ? restart->written : std::vector<std::string>{};  // pruning: run/checkpoint.hpp
   const auto checkpoint = [&] {
     if (!out.enabled) return;
     Checkpoint cp;
@@ -99,7 +102,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     cp.wall_seconds = wall_now();
     cp.rhs_seconds = rhs_before_s + sys->rhs_seconds();
     cp.search_seconds = search_before_s + sys->search_seconds();
-    write_checkpoint(out.directory, cp, to_yaml(config));
+    write_checkpoint(out.directory, cp, to_yaml(config), written);
   };
 
   // Stop at every output time and every multiple of checkpoint_every; step by step in between.
