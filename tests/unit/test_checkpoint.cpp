@@ -147,6 +147,15 @@ TEST_CASE("read_checkpoint refuses values a restart cannot continue from, naming
       {"dimension", 7, "dimension: 7 is not 1, 2 or 3"},
       {"errors", 5, "errors: not an array"},
   };
+  {
+    nlohmann::json j = good;
+    j["integrator_state"] = {{"steps", -4}, {"rejected_steps", 1}};
+    write_json(cp, j);
+    CHECK(error_of(cp) == file + ": integrator_state.steps: -4 is not a count >= 0");
+    j["integrator_state"] = {{"steps", 4}, {"rejected_steps", 1.5}};
+    write_json(cp, j);
+    CHECK(error_of(cp) == file + ": integrator_state.rejected_steps: 1.5 is not a count >= 0");
+  }
   for (const auto& c : cases) {
     nlohmann::json j = good;
     j[c.key] = c.value;

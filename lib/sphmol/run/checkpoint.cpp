@@ -153,6 +153,13 @@ Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
       if (!std::isfinite(cp.y[k])) throw bad("state", "value " + std::to_string(k) + " is " + std::to_string(cp.y[k]) + ", not finite");
     cp.integrator = j.at("integrator").get<std::string>();
     cp.integrator_state = j.at("integrator_state");
+    if (!cp.integrator_state.is_object()) throw bad("integrator_state", "not an object");
+    // Step counters continue in the summary: a negative or fractional one is not a checkpoint's.
+    for (const auto& [key, value] : cp.integrator_state.items()) {
+      const bool counter = key == "steps" || (key.size() > 6 && key.compare(key.size() - 6, 6, "_steps") == 0);
+      if (counter && !(value.is_number_unsigned() || (value.is_number_integer() && value.get<long>() >= 0)))
+        throw bad("integrator_state." + key, value.dump() + " is not a count >= 0");
+    }
     cp.errors = j.at("errors");
     if (!cp.errors.is_array()) throw bad("errors", "not an array");
     cp.observers = j.at("observers");
