@@ -7,8 +7,8 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/version.hpp"

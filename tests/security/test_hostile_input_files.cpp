@@ -1,7 +1,10 @@
 // Input files that would exhaust memory or never end: a config larger than the limit, /dev/zero, a
 // FIFO, a directory. Each is refused before it is read, as bad input (exit 2) with the reason, and
 // nothing is written.
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -90,5 +93,40 @@ TEST_CASE("a checkpoint.json that is /dev/zero or deeply nested is refused (exit
   INFO(r.err);
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Matchers::Contains("nested deeper than 64 levels"));
+  CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_CASE("running out of memory is a message and exit 1, not an abort", "[security][input]") {
+  // A config under the size limit whose parse needs more memory than the address-space limit allows
+  // (a 15 MiB list: about a million YAML nodes).
+  const fs::path dir = scratch("out-of-memory");
+  const fs::path cfg = dir / "big.yaml";
+  {
+    std::ofstream out(cfg);
+    out << "case: couette\nextra: [1.5";
+    for (int k = 0; k < 3'500'000; ++k) out << ",1.5";
+    out << "]\n";
+  }
+  REQUIRE(fs::file_size(cfg) < (std::uintmax_t{16} << 20));
+  const fs::path err = dir / "err";
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const rlimit lim{400u << 20, 400u << 20};
+    ::setrlimit(RLIMIT_AS, &lim);
+    const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, STDERR_FILENO);
+    ::execl(SPHMOL_BINARY, SPHMOL_BINARY, "--config", cfg.c_str(), "--output", (dir / "out").c_str(), nullptr);
+    ::_exit(127);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  std::ifstream in(err);
+  std::ostringstream text;
+  text << in.rdbuf();
+  INFO(text.str());
+  REQUIRE(WIFEXITED(status));  // before: std::terminate, SIGABRT
+  CHECK(WEXITSTATUS(status) == 1);
+  CHECK_THAT(text.str(), Catch::Matchers::Contains("sph-mol: out of memory"));
   CHECK_FALSE(fs::exists(dir / "out"));
 }
