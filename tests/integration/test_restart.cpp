@@ -32,7 +32,7 @@ TEST_CASE("restart: interrupted + restarted run = uninterrupted run", "[restart]
       INFO(r.err);
       REQUIRE(r.code == 0);
 
-      // Only the two newest checkpoints are kept.
+      // Only the last two checkpoints the run wrote are kept.
       CHECK(fs::exists(dir / "whole" / "checkpoint-0.1"));
       CHECK(fs::exists(dir / "whole" / "checkpoint-0.075"));
       CHECK_FALSE(fs::exists(dir / "whole" / "checkpoint-0.05"));
