@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The full test suite: set-up and Release build, all Catch2 tests (unit + integration) via CTest,
 # then the unit tests again under ASan+UBSan (only that target is built in the sanitizer tree),
-# then 60 s of fuzzing the config loader.
+# then 90 s of fuzzing (config loader, run command line, checkpoint reader).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -9,4 +9,4 @@ ctest --preset release -j "$(nproc)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$(nproc)" --target sphmol-unit-tests
 ctest --preset asan -j "$(nproc)"
-scripts/fuzz.sh 60
+scripts/fuzz.sh 90

@@ -9,6 +9,7 @@
 
 #include "run_helpers.hpp"
 #include "sphmol/io/double_codec.hpp"
+#include "support/process.hpp"
 
 using namespace run_helpers;
 
@@ -31,7 +32,7 @@ TEST_CASE("restart: interrupted + restarted run = uninterrupted run", "[restart]
       INFO(r.err);
       REQUIRE(r.code == 0);
 
-      // Only the two newest checkpoints are kept.
+      // Only the last two checkpoints the run wrote are kept.
       CHECK(fs::exists(dir / "whole" / "checkpoint-0.1"));
       CHECK(fs::exists(dir / "whole" / "checkpoint-0.075"));
       CHECK_FALSE(fs::exists(dir / "whole" / "checkpoint-0.05"));
@@ -80,10 +81,132 @@ TEST_CASE("restart: bad checkpoint paths are input errors (exit 2, nothing writt
   r = sph_mol("--restart '" + (dir / "fake").string() + "' --output '" + (dir / "out").string() + "'", dir / "e");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Matchers::Contains("unknown format"));
-  // A checkpoint of the previous format (without the RHS and search seconds) names both formats.
-  std::ofstream(dir / "fake" / "checkpoint.json") << "{\"format\": \"sph-mol checkpoint 1\"}";
+  // A checkpoint of the previous format (without its config and list of written checkpoints) names both formats.
+  std::ofstream(dir / "fake" / "checkpoint.json") << "{\"format\": \"sph-mol checkpoint 2\"}";
   r = sph_mol("--restart '" + (dir / "fake").string() + "' --output '" + (dir / "out").string() + "'", dir / "e");
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Catch::Matchers::Contains("'sph-mol checkpoint 1' (this build reads 'sph-mol checkpoint 2')"));
+  CHECK_THAT(r.err, Catch::Matchers::Contains("'sph-mol checkpoint 2' (this build reads 'sph-mol checkpoint 3')"));
   CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+namespace {
+const std::string kCouette = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+
+// sph-mol with an argument vector, killed after `seconds` (so a run that never ends fails the test).
+test_support::ProcessResult run_bounded(const std::vector<std::string>& args, const fs::path& err, int seconds = 60) {
+  std::vector<std::string> argv = {"-s", "KILL", std::to_string(seconds), SPHMOL_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test_support::run_process("/usr/bin/timeout", argv, err.string());
+}
+
+std::vector<std::string> couette_args(const fs::path& out, std::vector<std::string> extra) {
+  std::vector<std::string> a = {"--config", kCouette, "--set", "discretization.particles_across=20", "--set",
+                                "output.plots=false", "-q", "--output", out.string()};
+  a.insert(a.end(), extra.begin(), extra.end());
+  return a;
+}
+}  // namespace
+
+TEST_CASE("restart: a rerun keeps its own newest checkpoints beside later ones of an earlier run", "[restart][integration]") {
+  const fs::path dir = scratch("restart-prune");
+  const fs::path out = dir / "out";
+  // First run to 0.1 leaves checkpoint-0.075 and checkpoint-0.1.
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.1", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
+  // A rerun to 0.05 into the same directory: its checkpoints 0.025 and 0.05 stay, and so do the others.
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e2").code == 0);
+  CHECK(fs::exists(out / "checkpoint-0.025"));
+  CHECK(fs::exists(out / "checkpoint-0.05"));
+  CHECK(fs::exists(out / "checkpoint-0.075"));
+  CHECK(fs::exists(out / "checkpoint-0.1"));
+  // Restarted from 0.05 into the same directory to 0.1: the list continues (0.025 and 0.05 go when
+  // 0.075 and 0.1 are written), and checkpoint-0.1 is now this run's.
+  const auto r = run_bounded({"-q", "--restart", (out / "checkpoint-0.05").string(), "--output", out.string(), "--set",
+                              "time.t_end=0.1"},
+                             dir / "e3");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_FALSE(fs::exists(out / "checkpoint-0.025"));
+  CHECK_FALSE(fs::exists(out / "checkpoint-0.05"));
+  CHECK(fs::exists(out / "checkpoint-0.075"));
+  const auto written = checkpoint_at(out, "0.1")["written"];
+  REQUIRE(written.size() == 2);
+  CHECK(fs::path(written[0].get<std::string>()).filename() == "checkpoint-0.075");
+  CHECK(fs::path(written[1].get<std::string>()).filename() == "checkpoint-0.1");
+}
+
+TEST_CASE("restart: a checkpoint with a NaN, negative or final time is refused (exit 2, file and field named)", "[restart][integration]") {
+  const fs::path dir = scratch("restart-time");
+  const fs::path out = dir / "out";
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
+  const fs::path cp = out / "checkpoint-0.05";
+  const std::string file = (cp / "checkpoint.json").string();
+  const nlohmann::json good = json_file(cp / "checkpoint.json");
+
+  // At t_end: nothing to continue.
+  auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r0").string()}, dir / "e");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains(file + ": t_bits: the checkpoint is at t = 0.050000 s, not before time.t_end"));
+  for (const auto& [bits, shown] : std::vector<std::pair<std::string, std::string>>{
+           {sphmol::encode_doubles({std::nan("")}), "nan"}, {sphmol::encode_doubles({-0.01}), "-0.010000"}}) {
+    auto j = good;
+    j["t_bits"] = bits;
+    std::ofstream(cp / "checkpoint.json") << j.dump();
+    // Before this check a NaN time made the run loop spin forever, deaf to SIGTERM.
+    r = run_bounded({"--restart", cp.string(), "--output", (dir / "r1").string(), "--set", "time.t_end=0.1"}, dir / "e", 30);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::Contains(file + ": t_bits: time " + shown + " is not a finite time >= 0"));
+  }
+  CHECK_FALSE(fs::exists(dir / "r0"));
+  CHECK_FALSE(fs::exists(dir / "r1"));
+}
+
+TEST_CASE("restart: a change of the physics is refused with the key named, unless --force-physics-change", "[restart][integration]") {
+  const fs::path dir = scratch("restart-physics");
+  const fs::path out = dir / "out";
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
+  const fs::path cp = out / "checkpoint-0.05";
+  const std::string file = (cp / "checkpoint.json").string();
+  // --set of physics keys.
+  for (const auto& [set, key] : std::vector<std::pair<std::string, std::string>>{
+           {"fluid.kinematic_viscosity=2e-6", "fluid.kinematic_viscosity"},
+           {"discretization.kernel=wendland_c2", "discretization.kernel"},
+           {"discretization.smoothing_ratio=1.5", "discretization.smoothing_ratio"},
+           {"fluid.eos.sound_speed=0.02", "fluid.eos.sound_speed"},
+           {"discretization.momentum=symmetric_116", "discretization.momentum"}}) {
+    const auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r").string(), "--set", "time.t_end=0.075",
+                                "--set", set},
+                               dir / "e");
+    INFO(set << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::Contains(file + ": config: the restart changes the physics"));
+    CHECK_THAT(r.err, Catch::Matchers::Contains(key + " ("));
+    CHECK_THAT(r.err, Catch::Matchers::Contains("--force-physics-change"));
+  }
+  CHECK_FALSE(fs::exists(dir / "r"));
+  // An edited config.yaml in the checkpoint directory is compared too.
+  const std::string yaml = slurp(cp / "config.yaml");
+  std::string edited = yaml;
+  const auto at = edited.find("kinematic_viscosity: ");
+  REQUIRE(at != std::string::npos);
+  edited = edited.substr(0, at + 21) + "3" + edited.substr(at + 21);  // 1e-06 -> 31e-06
+  std::ofstream(cp / "config.yaml") << edited;
+  auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r").string(), "--set", "time.t_end=0.075"}, dir / "e");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("fluid.kinematic_viscosity ("));
+  // Forced: it runs with the new viscosity.
+  r = run_bounded({"--restart", cp.string(), "--output", (dir / "r").string(), "--set", "time.t_end=0.075", "--force-physics-change", "-q"},
+                  dir / "e");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  std::ofstream(cp / "config.yaml") << yaml;
+  // Keys that do not change the physics stay free: end time, outputs, tolerances.
+  r = run_bounded({"--restart", cp.string(), "--output", (dir / "r2").string(), "--set", "time.t_end=0.075", "--set",
+                   "time.rtol=1e-7", "--set", "output.profiles=false", "--set", "output.checkpoint_every=0.01", "-q"},
+                  dir / "e");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  // --force-physics-change without --restart means nothing: refused.
+  r = run_bounded({"--config", kCouette, "--force-physics-change", "--output", (dir / "r3").string()}, dir / "e");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("--force-physics-change only applies to --restart"));
 }

@@ -81,3 +81,45 @@ TEST_CASE("signals: interrupted run writes checkpoint + summary and restarts exa
     }
   }
 }
+
+TEST_CASE("signals: a CVODE run with one output time stops within a step of SIGTERM", "[signals][integration][cvode]") {
+  // CVODE used to integrate to the next output time in one call and see the signal only there.
+  const fs::path dir = scratch("signal-cvode");
+  const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+  const std::vector<std::string> args = {"--config", cfg, "--set", "discretization.particles_across=20", "--set",
+                                         "output.plots=false", "--set", "time.integrator=cvode_adams", "--set",
+                                         "time.t_end=1000", "--set", "output.times=[]", "-q", "--output",
+                                         (dir / "run").string()};
+  const pid_t pid = spawn(args, dir / "err");
+  REQUIRE(pid > 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // the scene is built, CVODE is stepping
+  const auto sent = std::chrono::steady_clock::now();
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  bool ended = false;
+  while (std::chrono::steady_clock::now() - sent < std::chrono::seconds(20))
+    if (::waitpid(pid, &status, WNOHANG) == pid) {
+      ended = true;
+      break;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  if (!ended) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  INFO(slurp(dir / "err"));
+  REQUIRE(ended);
+  CHECK(seconds < 3.0);  // one step and the checkpoint: well under a second unloaded
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 143);
+  const auto s = json_file(dir / "run" / "summary.json");
+  CHECK(s["status"] == "interrupted");
+  const double t = s["t_reached"].get<double>();
+  CHECK(t > 0.0);
+  CHECK(t < 1000.0);
+  char name[64];
+  std::snprintf(name, sizeof name, "checkpoint-%.10g", t);
+  CHECK(fs::exists(dir / "run" / name / "checkpoint.json"));
+}

@@ -88,7 +88,7 @@ TEST_CASE("gnuplot scripts of the studies and the cases hold only relative, gene
   CHECK(s.find("set title 'title with _quote__and newline'\n") != std::string::npos);  // one line, one string
   CHECK(s.find("title 'arkode_erk:_; _touch pwned'") != std::string::npos);
   CHECK_THROWS_AS(chart_script(c, "../x"), std::logic_error);
-  const std::string p = gnuplot_csv_preamble("comment\n!touch pwned \\", 800, 600, 11, "front.png", 't');
+  const std::string p = gnuplot_csv_preamble("comment\n!touch pwned \\", 800, 600, 11, "front.png");
   CHECK(p.find("\n!") == std::string::npos);
   CHECK(p.find("set output 'front.png'\n") != std::string::npos);
 }

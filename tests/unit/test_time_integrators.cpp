@@ -122,3 +122,31 @@ TEST_CASE("config: the new integrators are accepted; cvode_adams rejects a fixed
   CHECK(load_config_string(base, {"time.integrator=cvode_adams"}).time.integrator == "cvode_adams");
   CHECK_THAT(error_of(base, {"time.integrator=cvode_adams", "time.dt=1e-4"}), Catch::Matchers::Contains("cvode_adams is adaptive only"));
 }
+
+TEST_CASE("cvode_adams steps one internal step at a time toward the stop time, with the steps of advance", "[time][cvode]") {
+  // The run loop checks for SIGINT/SIGTERM between calls of step_toward: one call must be one step.
+  Oscillator sa, sb;
+  sa.cfl = sb.cfl = 0.01;
+  std::vector<double> ya{1.0, 0.0}, yb{1.0, 0.0};
+  CvodeAdams A({1e-8, 1e-11, 1'000'000}), B({1e-8, 1e-11, 1'000'000});
+  A.initialize(sa, 0.0, ya.data());
+  B.initialize(sb, 0.0, yb.data());
+  for (double tout : {1.5, 3.0}) {
+    A.advance(tout);
+    long calls = 0;
+    double t = 0.0;
+    do {
+      const long before = B.stats().steps;
+      t = B.step_toward(tout);
+      CHECK(B.stats().steps == before + 1);
+      CHECK(t <= tout);
+      ++calls;
+    } while (t < tout);
+    CHECK(t == tout);
+    CHECK(calls > 100);
+  }
+  CHECK(A.stats().steps == B.stats().steps);
+  CHECK(ya[0] == yb[0]);  // bit for bit
+  CHECK(ya[1] == yb[1]);
+  CHECK(B.step_toward(3.0) == 3.0);  // already there: no step
+}

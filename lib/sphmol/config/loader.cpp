@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/io/input_file.hpp"
 #include "sphmol/config/erk_tables.hpp"
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/kernels/registry.hpp"
@@ -515,11 +516,13 @@ Config load_config_string(const std::string& yaml, const std::vector<std::string
 }
 
 Config load_config(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open config file: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_config_string(text.str(), overrides, path);
+  std::string text;
+  try {
+    text = read_input_file(path, kMaxConfigBytes, "config file");
+  } catch (const InputFileError& e) {
+    throw ConfigError(e.what());
+  }
+  return load_config_string(text, overrides, path);
 }
 
 }  // namespace sphmol

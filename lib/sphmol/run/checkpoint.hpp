@@ -1,10 +1,12 @@
 #pragma once
 // Checkpoints: DIR/checkpoint-<t>/ holds checkpoint.json (time, state, integrator state, the
 // measurements so far, observer state; doubles as hex of their bits, so a restart starts from the
-// identical state) and config.yaml (the resolved config, which `sph-mol --restart` loads). The
-// directory is written under a temporary name, every file fsynced, then renamed into place: a
-// killed run leaves either the old set of checkpoints or the new one, never a partial one. The
-// two newest checkpoints are kept.
+// identical state; the resolved config it was written with; the checkpoints this run wrote) and
+// config.yaml (the same resolved config, which `sph-mol --restart` loads). The directory is written
+// under a temporary name, every file fsynced, then renamed into place: a killed run leaves either the
+// old set of checkpoints or the new one, never a partial one. Of the checkpoints this run wrote (a
+// restarted run continues its predecessor's list when it writes to the same directory), the two
+// latest are kept; a checkpoint the run did not write is never removed, whatever its time.
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -28,14 +30,22 @@ struct Checkpoint {
   long rhs_evals = 0;
   double wall_seconds = 0.0;
   double rhs_seconds = 0.0, search_seconds = 0.0;  // the parts of wall_seconds in the RHS, in the search
+  // Read back only: the resolved config (to_yaml) the checkpoint was written with, and the checkpoint
+  // directories (absolute paths, oldest first, this one last) the run had written and kept.
+  std::string config_yaml;
+  std::vector<std::string> written;
   std::vector<std::string> files;  // the files the run had written to its output folder (OutputSink)
 };
 
 // "checkpoint-<t>" (t with 10 significant digits).
 std::string checkpoint_name(double t);
-// Writes DIR/checkpoint-<t>/ atomically and removes all but the two newest; returns its path.
-std::string write_checkpoint(const std::string& directory, const Checkpoint& cp, const std::string& config_yaml);
-// Reads DIR/checkpoint-<t>/checkpoint.json; throws CheckpointError naming the problem.
+// Writes DIR/checkpoint-<t>/ atomically; returns its path. `written`: the checkpoints this run wrote
+// so far (start with the restarted checkpoint's `written`, or empty); the new one is appended and all
+// but the last two in DIR are removed from the disk and from the list.
+std::string write_checkpoint(const std::string& directory, const Checkpoint& cp, const std::string& config_yaml,
+                             std::vector<std::string>& written);
+// Reads DIR/checkpoint-<t>/checkpoint.json and checks what a restart relies on (a finite time >= 0,
+// counters >= 0, a finite state); throws CheckpointError naming the file and the field.
 Checkpoint read_checkpoint(const std::string& checkpoint_dir);
 
 }  // namespace sphmol

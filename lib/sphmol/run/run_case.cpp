@@ -21,6 +21,7 @@
 #include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/plots.hpp"
 #include "sphmol/run/progress.hpp"
+#include "sphmol/run/restart_check.hpp"
 #include "sphmol/run/signals.hpp"
 #include "sphmol/time/integrator.hpp"
 
@@ -57,6 +58,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                             std::to_string(restart->y.size()) + " state values, integrator " + restart->integrator +
                             ") does not match the config (case " + config.case_name + ", " +
                             std::to_string(y.size()) + " state values, integrator " + integrator->name() + ")");
+    check_restart(*restart, config, opt.restart_from, opt.force_physics_change);
     y = restart->y;
     t = restart->t;
     errors = restart->errors;
@@ -90,6 +92,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   const auto wall_now = [&] {
     return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  std::vector<std::string> written = restart ? restart->written : std::vector<std::string>{};  // pruning: run/checkpoint.hpp
   const auto checkpoint = [&] {
     if (!out.enabled) return;
     Checkpoint cp;
@@ -107,7 +110,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     cp.search_seconds = search_before_s + sys->search_seconds();
     out.record(checkpoint_name(t));
     cp.files = out.written();
-    write_checkpoint(out.directory, cp, to_yaml(config));
+    write_checkpoint(out.directory, cp, to_yaml(config), written);
   };
 
   // Stop at every output time and every multiple of checkpoint_every; step by step in between.
@@ -297,7 +300,11 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     out.write("config.yaml", to_yaml(resolved));
     out.record("summary.json");
     summary["output_directory"] = out.directory;
-    summary["files"] = out.written();
+    // What is in the folder now (pruned checkpoints are gone), plus the summary about to be written.
+    nlohmann::json files = nlohmann::json::array();
+    for (const auto& f : out.written())
+      if (f == "summary.json" || std::filesystem::exists(std::filesystem::symlink_status(out.path(f)))) files.push_back(f);
+    summary["files"] = files;
     write_file_atomically(out.path("summary.json"), summary.dump(2) + "\n");
   }
   return summary;

@@ -18,6 +18,7 @@ struct RunOptions {
   std::vector<double>* final_state = nullptr;  // if set: receives the state y at t_end (studies)
   std::ostream* progress = nullptr;  // live progress line (a terminal's stderr); null = none
   std::string restart_from;     // a checkpoint-<t> directory to continue from (run/checkpoint.hpp)
+  bool force_physics_change = false;  // restart even if the config changes the physics (run/restart_check.hpp)
   bool handle_signals = false;  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted"
   // The output folder may hold another run's summary: delete that run's files first (--overwrite).
   bool overwrite = false;

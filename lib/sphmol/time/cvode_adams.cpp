@@ -64,23 +64,35 @@ void CvodeAdams::initialize(OdeSystem& sys, double t0, double* y) {
 }
 
 void CvodeAdams::advance(double tout) {
-  check(CVodeSetStopTime(mem_, tout), "SetStopTime");
-  double t = t_;
-  while (t < tout) {
-    const int flag = CVode(mem_, tout, y_, &t, CV_ONE_STEP);
-    if (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE || flag == CV_RHSFUNC_FAIL)
-      throw BlowUp(t, -1, std::string("step-size collapse: CVODE ") + CVodeGetReturnFlagName(flag));
-    if (flag < 0)
-      throw std::runtime_error("CVODE: integration failed at t = " + std::to_string(t) + ": " + CVodeGetReturnFlagName(flag));
-    double h = 0.0;
-    CVodeGetLastStep(mem_, &h);
-    after_step(t, N_VGetArrayPointer(y_), h);
-    // The CFL limit of the latest evaluation bounds the next step.
-    const double hmax = sys_->stable_step();
-    if (std::isfinite(hmax) && hmax > 0.0) check(CVodeSetMaxStep(mem_, hmax), "SetMaxStep");
-    if (flag == CV_TSTOP_RETURN) break;
+  while (t_ < tout) step_toward(tout);
+}
+
+double CvodeAdams::step_toward(double tout) {
+  if (t_ >= tout) return t_;
+  // CVODE clears its stop time once it is reached; a new target sets it again.
+  if (!tstop_set_ || tstop_ != tout) {
+    check(CVodeSetStopTime(mem_, tout), "SetStopTime");
+    tstop_ = tout;
+    tstop_set_ = true;
   }
-  t_ = tout;
+  double t = t_;
+  const int flag = CVode(mem_, tout, y_, &t, CV_ONE_STEP);
+  if (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE || flag == CV_RHSFUNC_FAIL)
+    throw BlowUp(t, -1, std::string("step-size collapse: CVODE ") + CVodeGetReturnFlagName(flag));
+  if (flag < 0)
+    throw std::runtime_error("CVODE: integration failed at t = " + std::to_string(t) + ": " + CVodeGetReturnFlagName(flag));
+  double h = 0.0;
+  CVodeGetLastStep(mem_, &h);
+  after_step(t, N_VGetArrayPointer(y_), h);
+  // The CFL limit of the latest evaluation bounds the next step.
+  const double hmax = sys_->stable_step();
+  if (std::isfinite(hmax) && hmax > 0.0) check(CVodeSetMaxStep(mem_, hmax), "SetMaxStep");
+  if (flag == CV_TSTOP_RETURN) {
+    t = tout;
+    tstop_set_ = false;
+  }
+  t_ = t;
+  return t_;
 }
 
 IntegratorStats CvodeAdams::stats() const {

@@ -28,6 +28,9 @@ class CvodeAdams final : public Integrator {
   nlohmann::json describe() const override;
   void initialize(OdeSystem& sys, double t0, double* y) override;
   void advance(double tout) override;
+  // One internal CVODE step (CV_ONE_STEP) with the stop time at tout, so the run loop sees a signal
+  // after every step; advance() takes exactly these steps.
+  double step_toward(double tout) override;
   IntegratorStats stats() const override;
 
  private:
@@ -40,6 +43,8 @@ class CvodeAdams final : public Integrator {
   SUNNonlinearSolver nls_ = nullptr;
   void* mem_ = nullptr;
   double t_ = 0.0;
+  double tstop_ = 0.0;  // the stop time set in CVODE (set again only when it changes)
+  bool tstop_set_ = false;
 };
 
 }  // namespace sphmol

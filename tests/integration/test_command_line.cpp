@@ -1,0 +1,41 @@
+// The top-level command line: options of the run command given before a subcommand's name would be
+// ignored by the subcommand, so they are refused (exit 2, the option named); --threads applies to all.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support/process.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("command line: run-command options before a subcommand are refused, naming the option", "[cli][integration]") {
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-cli");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+  const std::string err = (dir / "err").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string option, sub;
+  };
+  const std::vector<Case> cases = {
+      {{"--output", (dir / "x").string(), "compare", "--config", cfg, "--integrators", "leapfrog"}, "--output", "compare"},
+      {{"--set", "time.t_end=0.01", "converge", "--config", cfg, "--refine", "time"}, "--set", "converge"},
+      {{"--config", cfg, "stability", "--config", cfg}, "--config", "stability"},
+      {{"-q", "kernels"}, "--quiet", "kernels"},
+      {{"--restart", (dir / "cp").string(), "kernels"}, "--restart", "kernels"},
+  };
+  for (const auto& c : cases) {
+    const auto r = test_support::run_process(SPHMOL_BINARY, c.args, err);
+    INFO(c.option << " before " << c.sub << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::Contains(c.option + " is an option of the run command, not of `" + c.sub + "`"));
+  }
+  CHECK_FALSE(fs::exists(dir / "x"));
+  // --threads belongs to every command.
+  const auto r = test_support::run_process(SPHMOL_BINARY, {"--threads", "1", "kernels", "--dimension", "1"}, err);
+  INFO(r.err);
+  CHECK(r.code == 0);
+}
