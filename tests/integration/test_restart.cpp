@@ -112,6 +112,9 @@ TEST_CASE("restart: a rerun keeps its own newest checkpoints beside later ones o
   const fs::path out = dir / "out";
   // First run to 0.1 leaves checkpoint-0.075 and checkpoint-0.1.
   REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.1", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
+  // As if that run had been killed before its summary (a finished run's folder is refused unless
+  // --overwrite, which deletes its checkpoints: run/output_folder.hpp).
+  fs::remove(out / "summary.json");
   // A rerun to 0.05 into the same directory: its checkpoints 0.025 and 0.05 stay, and so do the others.
   REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e2").code == 0);
   CHECK(fs::exists(out / "checkpoint-0.025"));
@@ -209,4 +212,27 @@ TEST_CASE("restart: a change of the physics is refused with the key named, unles
   r = run_bounded({"--config", kCouette, "--force-physics-change", "--output", (dir / "r3").string()}, dir / "e");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Matchers::Contains("--force-physics-change only applies to --restart"));
+}
+
+TEST_CASE("restart: a checkpoint interval that divides t_end writes a checkpoint at t_end", "[restart][integration]") {
+  // 3 x 0.025 = 0.07500000000000001 > 0.075: before, the last checkpoint was never reached.
+  const fs::path dir = scratch("restart-cp-end");
+  const fs::path out = dir / "out";
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.075", "--set", "output.checkpoint_every=0.025"}), dir / "e").code == 0);
+  CHECK(fs::is_directory(out / "checkpoint-0.075"));
+  CHECK(fs::is_directory(out / "checkpoint-0.05"));
+}
+
+TEST_CASE("restart: a malformed integrator state is bad input (exit 2)", "[restart][integration]") {
+  const fs::path dir = scratch("restart-istate");
+  const fs::path out = dir / "out";
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
+  const fs::path cp = out / "checkpoint-0.025";
+  auto j = json_file(cp / "checkpoint.json");
+  j["integrator_state"] = {{"garbage", true}};
+  std::ofstream(cp / "checkpoint.json") << j.dump();
+  const auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r").string()}, dir / "e");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("integrator_state"));
+  CHECK_FALSE(fs::exists(dir / "r"));
 }

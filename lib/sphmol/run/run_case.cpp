@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
@@ -74,9 +75,14 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   ConservationLog<D> conservation;
   conservation.record(*sys, y.data(), t);
   if (restart) {
-    integrator->restore_state(restart->integrator_state);
-    for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
-      observers[k]->restore_state(restart->observers[k], out);
+    // A malformed integrator or observer state is bad input (exit 2), like any other checkpoint field.
+    try {
+      integrator->restore_state(restart->integrator_state);
+      for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
+        observers[k]->restore_state(restart->observers[k], out);
+    } catch (const std::exception& e) {
+      throw CheckpointError(opt.restart_from + ": integrator_state / observers: " + e.what());
+    }
   }
   // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
   // now does the output directory appear, locked for this run (run/output_folder.hpp).
@@ -119,9 +125,17 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   while (next_out < times.size() && times[next_out] <= t) ++next_out;
   const double every = config.output.checkpoint_every;
   const double inf = std::numeric_limits<double>::infinity();
+  // k * every rounds off (3 x 0.025 = 0.07500000000000001): a checkpoint meant to fall on an output
+  // time or on t_end (always an output time) does, rather than being missed or forcing a 1e-17 s step.
+  const auto checkpoint_time = [&](long k) {
+    const double tc = static_cast<double>(k) * every;
+    for (const double to : times)
+      if (std::abs(tc - to) <= 1e-9 * every) return to;
+    return tc;
+  };
   long k_cp = every > 0 ? static_cast<long>(t / every) : 0;
-  while (every > 0 && static_cast<double>(k_cp) * every <= t) ++k_cp;
-  double next_cp = every > 0 ? static_cast<double>(k_cp) * every : inf;
+  while (every > 0 && checkpoint_time(k_cp) <= t) ++k_cp;
+  double next_cp = every > 0 ? checkpoint_time(k_cp) : inf;
 
   std::optional<SignalGuard> guard;
   if (opt.handle_signals) guard.emplace();
@@ -151,7 +165,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     }
     if (t >= next_cp) {
       checkpoint();
-      next_cp = static_cast<double>(++k_cp) * every;
+      next_cp = checkpoint_time(++k_cp);
     }
     if (signal) break;
   }
