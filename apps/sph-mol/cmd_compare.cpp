@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "sphmol/studies/compare.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "study_common.hpp"
 #include "subcommand.hpp"
 
@@ -54,6 +55,9 @@ int run() {
       std::cout << '\n';
     }
     std::cout << "compare: results in " << opt.output << "/comparison.csv, comparison.json, comparison.png\n";
+  } catch (const sphmol::OutputFolderError& e) {
+    std::cerr << "sph-mol compare: " << e.what() << '\n';
+    return 2;  // the folder is in use: bad input, nothing written
   } catch (const std::exception& e) {
     std::cerr << "sph-mol compare: " << e.what() << '\n';
     return 1;

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "sphmol/studies/converge.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "study_common.hpp"
 #include "subcommand.hpp"
 
@@ -43,6 +44,9 @@ int run() {
       std::cout << ", errors " << s["errors"].dump() << '\n';
     }
     std::cout << "converge: results in " << opt.output << "/convergence.csv, convergence.json, convergence.png\n";
+  } catch (const sphmol::OutputFolderError& e) {
+    std::cerr << "sph-mol converge: " << e.what() << '\n';
+    return 2;  // the folder is in use: bad input, nothing written
   } catch (const std::exception& e) {
     std::cerr << "sph-mol converge: " << e.what() << '\n';
     return 1;

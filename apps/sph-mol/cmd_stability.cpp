@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "sphmol/studies/stability.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "study_common.hpp"
 #include "subcommand.hpp"
 
@@ -30,6 +31,9 @@ int run() {
     o.log = &std::cerr;
     sphmol::run_stability(*config, o);
     std::cout << "stability: results in " << opt.output << "/stability.csv, stability.json, stability.png\n";
+  } catch (const sphmol::OutputFolderError& e) {
+    std::cerr << "sph-mol stability: " << e.what() << '\n';
+    return 2;  // the folder is in use: bad input, nothing written
   } catch (const std::exception& e) {
     std::cerr << "sph-mol stability: " << e.what() << '\n';
     return 1;

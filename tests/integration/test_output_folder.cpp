@@ -161,3 +161,25 @@ TEST_CASE("output folder: a file size limit ends the run with a message and no t
     }
   }
 }
+
+TEST_CASE("output folder: a study into a folder in use is refused", "[integration][output-folder]") {
+  const fs::path dir = scratch("study-lock");
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  const int fd = ::open((out / ".sph-mol.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+  for (const std::string study : {"compare", "converge", "stability"}) {
+    std::vector<std::string> args{study, "--config", kCouette, "--output", out.string(), "--set", "discretization.particles_across=20",
+                                  "--set", "time.t_end=0.01"};
+    if (study == "converge") args.insert(args.end(), {"--refine", "time", "--levels", "2"});
+    if (study == "compare") args.insert(args.end(), {"--integrators", "leapfrog"});
+    const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "stderr.txt").string());
+    INFO(study << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("another sph-mol run is writing there"));
+  }
+  ::close(fd);
+  CHECK(fs::is_empty(out) == false);  // only the lock file
+  for (const auto& e : fs::directory_iterator(out)) CHECK(e.path().filename() == ".sph-mol.lock");
+}

@@ -61,7 +61,7 @@ OutputFolder::OutputFolder(const std::string& directory, Options options) : dire
                                                : "output directory " + directory + ": cannot lock it: " + std::strerror(err));
   }
   const fs::path summary = fs::path(directory) / "summary.json";
-  if (options.continuing || !fs::exists(fs::symlink_status(summary))) return;
+  if (options.lock_only || options.continuing || !fs::exists(fs::symlink_status(summary))) return;
   if (!options.overwrite) {
     ::close(lock_fd_);
     lock_fd_ = -1;

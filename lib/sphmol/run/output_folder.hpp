@@ -4,7 +4,8 @@
 //   clear error instead of overwriting the first one's files;
 // - a folder that holds another run's summary.json is refused unless `overwrite`, which first deletes
 //   exactly the files that run listed in its summary (nothing else in the folder is touched);
-// - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left.
+// - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left;
+// - `lock_only` takes the lock and leaves the folder's contents alone.
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,9 @@ class OutputFolder {
   struct Options {
     bool overwrite = false;
     bool continuing = false;
+    // Only the lock: a study (compare, converge, stability) rewrites its own fixed file names, and a
+    // second study into the same folder while the first runs is what must be stopped.
+    bool lock_only = false;
   };
   // Creates the folder if needed (and its parents), locks it and checks it. Throws OutputFolderError.
   OutputFolder(const std::string& directory, Options options);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/fastest_at_error.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
@@ -77,7 +78,8 @@ nlohmann::json fastest_at_targets(const std::vector<IntegratorSpec>& specs, cons
 }  // namespace
 
 nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
-  std::filesystem::create_directories(opt.output_dir);
+  // Locked for the study's lifetime: two studies into one folder would overwrite each other's files.
+  const OutputFolder folder(opt.output_dir, OutputFolder::Options{.lock_only = true});
   nlohmann::json runs = nlohmann::json::array();
   std::ostringstream csv;
   // The header follows the runs: the error units depend on the case's error measure.

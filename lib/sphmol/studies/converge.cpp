@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
@@ -48,7 +49,8 @@ double least_squares_order(const std::vector<double>& e) {
 nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   if (opt.levels < 2) throw std::invalid_argument("--levels must be at least 2");
   if (opt.refine != "time" && opt.refine != "space") throw std::invalid_argument("--refine must be time or space");
-  std::filesystem::create_directories(opt.output_dir);
+  // Locked for the study's lifetime: two studies into one folder would overwrite each other's files.
+  const OutputFolder folder(opt.output_dir, OutputFolder::Options{.lock_only = true});
   const bool time = opt.refine == "time";
   Config cfg = base;
   cfg.output.times = {cfg.time.t_end};  // only t_end: the fixed steps land on it exactly

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sphmol/io/atomic_file.hpp"
+#include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/error_unit.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 #include "sphmol/studies/study_run.hpp"
@@ -72,7 +73,8 @@ double scale_sound_speed(Config& c, double factor) {
 }
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
-  std::filesystem::create_directories(opt.output_dir);
+  // Locked for the study's lifetime: two studies into one folder would overwrite each other's files.
+  const OutputFolder folder(opt.output_dir, OutputFolder::Options{.lock_only = true});
   const bool fixed = base.time.dt.has_value();
   std::ostringstream csv;
   std::string error_key;  // the case's error measure, for the unit in the CSV header
