@@ -2,7 +2,7 @@
 // ConfigError — no other exception, crash, hang or sanitizer report. A config that loads must also
 // survive the to_yaml round trip unchanged (what `sph-mol --restart` relies on).
 // Input layout: YAML text, optionally followed by '\0' and '\n'-separated --set overrides, so the
-// override parser is fuzzed too (the seeds are plain YAML files).
+// override parser is fuzzed too (the seed inputs are plain YAML files).
 #include <cstdint>
 #include <cstdlib>
 #include <string>

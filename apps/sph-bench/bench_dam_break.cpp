@@ -1,4 +1,4 @@
-// sph-bench, end to end: the dam break of issue 6 (verification/dam_break.yaml: 20,000 fluid + 1,002
+// sph-bench, end to end: the dam break (verification/dam_break.yaml: 20,000 fluid + 1,002
 // wall particles, Wendland C2, h = 1.414 dp, continuity + delta-SPH, artificial viscosity, dynamic
 // walls), leapfrog with one RHS evaluation per step. "us/particle-step" = wall time / (steps x all
 // particles), the number the issue holds against DualSPHysics (0.67 us on 1 thread, 0.37 on 2).

@@ -1,7 +1,7 @@
 // `sph-mol kernels`: the kernel catalogue (support, numerically integrated normalisation,
-// moments M0..M4 and M'0..M'4 per dimension, seed 000 eqs 64/69), discrete particle-consistency
-// sums (000 eqs 90-91) on three particle sets, and with `--analysis hydrostatic` the computed
-// analogue of seed 001's Table 1 (eqs 17-22) on the triangular lattice.
+// moments M0..M4 and M'0..M'4 per dimension, Vukčević 2012, eqs 64/69), discrete particle-consistency
+// sums (Vukčević 2012, eqs 90-91) on three particle sets, and with `--analysis hydrostatic` the computed
+// analogue of Potapov & Reshetnikova 2021's Table 1 (eqs 17-22) on the triangular lattice.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -35,7 +35,7 @@ struct Options {
 template <int D>
 void print_catalogue() {
   std::printf("== %dD kernels (normalisation = integral of W over R^%d by GSL quadrature; M_k in h^k, "
-              "M'_k in h^(k-1), M''_k in h^(k-2); seed 000 eqs 64, 69, 76; odd moments vanish by parity) ==\n", D, D);
+              "M'_k in h^(k-1), M''_k in h^(k-2); Vukčević 2012, eqs 64, 69, 76; odd moments vanish by parity) ==\n", D, D);
   std::printf("%-22s %7s %15s %10s %10s %10s %10s | %9s %9s %9s %9s | %9s %9s %9s\n", "kernel", "support",
               "normalisation", "M1", "M2", "M3", "M4", "M'0", "M'1", "M'2", "M'3", "M''0", "M''2", "M''4");
   for (const auto& e : sphmol::kernel_catalogue<D>()) {
@@ -57,7 +57,7 @@ void print_consistency() {
   using namespace sphmol::analysis;
   const double d = 1.0, h = 1.3 * d;  // h/d = 1.3, a common choice
   const int n = 6;                      // lattice half-width in d: covers support 3h
-  std::printf("== %dD discrete consistency at the origin particle, d = 1, h = 1.3 d (seed 000 eqs 90-91: "
+  std::printf("== %dD discrete consistency at the origin particle, d = 1, h = 1.3 d (Vukčević 2012, eqs 90-91: "
               "S0 -> 1, S1 -> 0; gradient sums G0 -> 0, G1 -> I) ==\n", D);
   std::printf("%-22s %-15s %4s %14s %12s %12s %14s %12s\n", "kernel", "set", "N", "S0-1", "|S1|", "|G0|",
               "max|G1-I|", "");
@@ -124,7 +124,7 @@ int run_hydrostatic() {
              "eps_rho_at_gradp_roots [-],condition22,best_k [-],best_max_abs_error [-]\n";
     table.precision(10);
   }
-  std::printf("Hydrostatic kernel analysis, seed 001 eqs 17-22: 2D triangular lattice edge d, h = k d, "
+  std::printf("Hydrostatic kernel analysis, Potapov & Reshetnikova 2021, eqs 17-22: 2D triangular lattice edge d, h = k d, "
               "k in [0.75, 1.25], eps = %g\n", opt.eps);
   std::printf("roots of eps_rho: k(eps_gradP there); roots of eps_gradP: k(eps_rho there); "
               "best k minimises max(|eps_rho|, |eps_gradP|); condition 22 holds iff that max <= eps\n");
@@ -197,7 +197,7 @@ int run() {
   }
   if (opt.analysis == "hydrostatic") {
     if (opt.dimension != 0 && opt.dimension != 2) {
-      std::cerr << "sph-mol kernels: the hydrostatic analysis is 2D (seed 001, triangular lattice); "
+      std::cerr << "sph-mol kernels: the hydrostatic analysis is 2D (Potapov & Reshetnikova 2021, triangular lattice); "
                    "--dimension " << opt.dimension << " is not supported\n";
       return 2;
     }
@@ -229,13 +229,13 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
     "kernels", "List SPH kernels with normalisation, moments and consistency sums; --analysis hydrostatic",
     [](CLI::App& sub) {
       sub.add_option("--dimension,-d", opt.dimension, "Restrict to dimension D (1, 2 or 3)");
-      sub.add_option("--analysis,-a", opt.analysis, "catalogue (default) or hydrostatic (seed 001 Table 1)");
+      sub.add_option("--analysis,-a", opt.analysis, "catalogue (default) or hydrostatic (Potapov & Reshetnikova 2021, Table 1)");
       sub.add_option("--output,-o", opt.output, "Directory for hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv");
       sub.add_option("--kernel,-k", opt.kernel, "Restrict to one kernel");
       sub.add_option("--eps", opt.eps, "Tolerance of condition 22 (default 0.01)");
       sub.add_option("--correction", opt.correction,
                      "none (default) or rkpm: also print the consistency sums with the RKPM / moment-matrix "
-                     "correction (seed 000 eqs 92-99), which restores linear consistency at the wall")
+                     "correction (Vukčević 2012, eqs 92-99), which restores linear consistency at the wall")
           ->check(CLI::IsMember({"none", "rkpm"}));
     },
     run}};

@@ -43,7 +43,7 @@ std::string slurp(const std::string& path) {
 // Bounds: measured e_rms at t = 1 s is 1.3e-6 (Couette) and 1.0e-3 (Poiseuille) with leapfrog;
 // the largest error over the output times is 5.9e-4 (Couette, t = 0.0225 s) and 1.0e-3 (Poiseuille).
 // Each bound is about twice the measurement (Couette's final one 8x, being near round-off of the
-// profile's slope), far below the 0.4 % of seed 000; broken physics fails them by orders of magnitude
+// profile's slope), far below the 0.4 % of Vukčević 2012; broken physics fails them by orders of magnitude
 // (see the control test below).
 TEST_CASE("Couette start-up flow reaches the exact steady profile", "[integration][couette]") {
   const auto s = run("couette.yaml", {"time.integrator=leapfrog"});

@@ -1,4 +1,4 @@
-// Dam break (issue 6) at a CI-cheap resolution: dp = 0.04 (25 x 50 fluid + 252 wall particles), until
+// Dam break at a CI-cheap resolution: dp = 0.04 (25 x 50 fluid + 252 wall particles), until
 // t = 0.5 s, before the surge reaches the right wall (t ~ 0.7 s at this resolution). About 4 s CPU.
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // Runs sph-mol on the shock tube (verification/shock_tube.yaml, full 320 x 10 resolution, leapfrog)
 // and checks the L1 errors and wave positions against the exact Riemann solution; checks that the
-// state holds only what each scene needs (SPEC §1).
+// state holds only what each scene needs.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -32,7 +32,7 @@ nlohmann::json run(const std::string& config, const std::string& tag, const std:
 // about 1.5x the measured errors.
 // Conservation with closed ends (fixed wall particles holding the initial states) and, in 2D,
 // periodic y. The total energy sum m (v^2/2 + e) is conserved (the artificial-viscosity work is put
-// into e, seed 003 eq 2.72; the walls do no work): measured relative drift at t = 0.2 with leapfrog
+// into e, Niedoba 2012, eq 2.72; the walls do no work): measured relative drift at t = 0.2 with leapfrog
 // -2.5e-6 (2D) and -6.0e-6 (1D); bound 1e-4. The x-momentum is not conserved: the end walls push
 // with the initial pressures, so P_x(t) = (p_L - p_R) A t while no wave reaches them (A = tube width
 // in 2D, 1 in 1D); measured within 0.3 %. In 2D with periodic y the y-momentum drifts at round-off;
@@ -87,7 +87,7 @@ TEST_CASE("shock tube 320x10: L1 errors and wave positions against the exact Rie
   check_conservation(s, 0.025);
 }
 
-// The virtual-particle variant of seed 003 §3.3 (verification/shock_tube_virtual.yaml). Measured
+// The virtual-particle variant of Niedoba 2012, §3.3 (verification/shock_tube_virtual.yaml). Measured
 // (leapfrog): L1_rho 0.046, L1_u 0.086, L1_p 0.054, L1_e 0.094 (mid-line 0.036/0.044/0.045/0.066);
 // shock at 0.281 (exact 0.297), rarefaction head -0.227 (exact -0.237); contact and rarefaction tail
 // not resolved by the crossing detector. As in the thesis (Figs 3.5-3.8) it is clearly worse than the

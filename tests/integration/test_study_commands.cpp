@@ -101,7 +101,7 @@ TEST_CASE("sph-mol compare --reference-dt measures the time error: second order 
 
 TEST_CASE("sph-mol stability finds the slow symmetric oscillation of a long Poiseuille run", "[integration][stability]") {
   // 10 particles across, c = 2e-2 m/s (4 x the shipped c), dt = 2e-3 s, 60 s: the mean profile error
-  // swings about its level by ~0.55 % of v0 instead of settling (seed 000 §9; README "Integrator
+  // swings about its level by ~0.55 % of v0 instead of settling (Vukčević 2012, §9; README "Integrator
   // studies", measured 3 swings past 0.2 % after the start-up). Bounded: |e_signed| stays ~1 %.
   const std::string out = "reports/stability_poiseuille_oscillating";
   REQUIRE(run("stability --config " SPHMOL_SOURCE_DIR "/verification/poiseuille.yaml --output " + out +

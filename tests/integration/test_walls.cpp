@@ -42,7 +42,7 @@ TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse
   CHECK(s["particles"]["wall"].get<int>() > 0);  // the ghosts of the last evaluation
 }
 
-// Repulsive virtual particles (seed 003 eq 2.76) with D = g H = 8.8 m^2/s^2 and r0 = dx/2, the
+// Repulsive virtual particles (Niedoba 2012, eq 2.76) with D = g H = 8.8 m^2/s^2 and r0 = dx/2, the
 // distance from the wall line to the outermost particles, so that nothing is repelled at t = 0
 // (r0 = dx blows up at t = 0.002: the particles half a spacing from the wall feel 2^12 D / r).
 // Continuity density: summation density is deficient by half a kernel next to the massless walls.

@@ -1,4 +1,4 @@
-// Tait EOS (seed 003 eq 2.75), the repulsive boundary force (003 eq 2.76) and the ghost generator
+// Tait EOS (Niedoba 2012, eq 2.75), the repulsive boundary force (Niedoba 2012, eq 2.76) and the ghost generator
 // (003 §2.2.4, §3.3, Fig 3.4): values, signs, mirror positions/velocities, corner images, counts,
 // the copied energy and h, and the hydrostatic image pressure.
 #include <catch2/catch.hpp>
@@ -35,7 +35,7 @@ TEST_CASE("Tait EOS: zero at rest density, slope c0^2, inverse, clamp", "[tait]"
   CHECK(w.p[1] == Approx(law.pressure(1.01 * rho0)));
 }
 
-TEST_CASE("repulsive force of seed 003 eq 2.76", "[repulsive]") {
+TEST_CASE("repulsive force of Niedoba 2012, eq 2.76", "[repulsive]") {
   const RepulsiveLaw law{2.0, 12.0, 4.0, 0.1};
   CHECK(law.factor(0.1) == Approx(0.0).margin(1e-12));  // (r0/r)^p1 - (r0/r)^p2 = 0 at r = r0
   CHECK(law.factor(0.1001) == 0.0);                      // outside r0
@@ -149,7 +149,7 @@ TEST_CASE("ghost generator: mirror positions, no-slip velocities, corner images,
   for (std::size_t g = 0; g < gen.count(); ++g) CHECK(s.w.rho[base + g] == s.w.rho[gen.sources()[g]]);
 }
 
-TEST_CASE("ghost generator: free slip mirrors only the normal component (003 eqs 2.77-2.78)", "[ghost]") {
+TEST_CASE("ghost generator: free slip mirrors only the normal component (Niedoba 2012, eqs 2.77-2.78)", "[ghost]") {
   auto gen = make_generator(false);
   Scene s;
   const std::size_t base = s.w.n;

@@ -1,4 +1,4 @@
-// Compressible-flow terms (seed 003 §2.2.4-2.2.5) on small particle sets: exactness on uniform and
+// Compressible-flow terms (Niedoba 2012, §2.2.4-2.2.5) on small particle sets: exactness on uniform and
 // linear fields, signs, and the pair antisymmetry that conserves momentum and total energy.
 #include <catch2/catch.hpp>
 #include <cmath>

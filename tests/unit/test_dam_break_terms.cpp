@@ -163,7 +163,7 @@ TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow; other exponen
   }
 }
 
-TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the anchor's counts", "[dam_break]") {
+TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the expected particle counts", "[dam_break]") {
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                {"discretization.spacing=0.05"});
   auto sys = case_registry().at("dam_break").d2()->build(c);

@@ -1,4 +1,4 @@
-// Hydrostatic kernel analysis (seed 001 eqs 17-22): lattice formula vs a brute-force particle
+// Hydrostatic kernel analysis (Potapov & Reshetnikova 2021, eqs 17-22): lattice formula vs a brute-force particle
 // block, closed-form sums, and the root/verdict machinery.
 #include <catch2/catch.hpp>
 
@@ -48,7 +48,7 @@ TEST_CASE("closed-form lattice sums for a kernel of radius h", "[hydrostatic]") 
   }
 }
 
-TEST_CASE("shell coefficients of seed 001 eqs 18 and 21 for R = 2", "[hydrostatic]") {
+TEST_CASE("shell coefficients of Potapov & Reshetnikova 2021, eqs 18 and 21 for R = 2", "[hydrostatic]") {
   // Wendland C2 at k = 1.1 (support 2.2 d): shells d, sqrt3 d, 2d (6 nodes each). Eq 21's bracket
   // 2 sqrt3 (W'(d) + 2 W'(2d)) + 6 W'(sqrt3 d) times Delta y/d = sqrt3/2 gives 3, 6, 3 sqrt3.
   const auto k = sphmol::kernel_info<2>("wendland_c2");

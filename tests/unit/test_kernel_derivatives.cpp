@@ -82,15 +82,15 @@ TEMPLATE_LIST_TEST_CASE("W >= 0 wherever the source says so", "[kernel]", AllKer
     double wmin = 0.0;
     for (int i = 0; i <= 3000; ++i) wmin = std::min(wmin, K::W(K::support * i / 3000.0, 1.0));
     if (K::name == "super_gaussian")
-      CHECK(wmin < 0.0);  // (3/2 - q^2) e^-q^2 has a negative lobe beyond q = sqrt(3/2) (seed 001 eq 6)
+      CHECK(wmin < 0.0);  // (3/2 - q^2) e^-q^2 has a negative lobe beyond q = sqrt(3/2) (Potapov & Reshetnikova 2021, eq 6)
     else if (K::name == "quartic_liu")
-      CHECK(wmin < 0.0);  // -5/32 (q-2)^2 (q^2 - 16/15 q - 16/15) < 0 for 1.6957 < q < 2 (001 eq 9)
+      CHECK(wmin < 0.0);  // -5/32 (q-2)^2 (q^2 - 16/15 q - 16/15) < 0 for 1.6957 < q < 2 (Potapov & Reshetnikova 2021, eq 9)
     else
       CHECK(wmin >= 0.0);
   }
 }
 
-TEST_CASE("composite kernel derivative is seed 001 eq 13b, not dW/dr of eq 13a", "[kernel]") {
+TEST_CASE("composite kernel derivative is Potapov & Reshetnikova 2021, eq 13b, not dW/dr of eq 13a", "[kernel]") {
   using K = sphmol::CompositeKernel<2>;
   const double pi = std::numbers::pi;
   // Eq 13b written out: dW/dr = -1369 k^2 / (28 pi (kd)^3 (74k - 63)) (84k/37 - 2 r/(kd)).

@@ -1,4 +1,4 @@
-// Continuous moments (seed 000 eqs 64, 69) against values derived by hand.
+// Continuous moments (Vukčević 2012, eqs 64, 69) against values derived by hand.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -53,7 +53,7 @@ TEMPLATE_LIST_TEST_CASE("every kernel integrates to its claimed mass", "[kernel]
   using K = TestType;
   if constexpr (K::available) {
     INFO(K::name << " in " << K::dimension << "D");
-    // Only the truncated exponential is (deliberately, seed 003 eq 2.43) not renormalised.
+    // Only the truncated exponential is (deliberately, Niedoba 2012, eq 2.43) not renormalised.
     if (K::name == "truncated_exponential") {
       CHECK(sphmol::kernel_mass<K>() < 1.0 - 1e-5);
       CHECK(sphmol::kernel_mass<K>() > 1.0 - 1e-3);
@@ -65,7 +65,7 @@ TEMPLATE_LIST_TEST_CASE("every kernel integrates to its claimed mass", "[kernel]
   }
 }
 
-TEST_CASE("truncated exponential keeps the untruncated Gaussian constant of seed 003 eq 2.43", "[kernel]") {
+TEST_CASE("truncated exponential keeps the untruncated Gaussian constant of Niedoba 2012, eq 2.43", "[kernel]") {
   // kappa = 3: alpha_D = 3/(sqrt(pi) kappa h), 9/(pi kappa^2 h^2), 27/(pi^1.5 kappa^3 h^3).
   const double pi = std::numbers::pi, h = 0.7;
   CHECK(sphmol::TruncatedExponentialKernel<1>::W(0.0, h) == Approx(3.0 / (std::sqrt(pi) * 3.0 * h)).epsilon(1e-14));

@@ -1,4 +1,4 @@
-// Discrete particle-consistency sums (seed 000 eqs 90-91) on lattices, perturbed lattices and
+// Discrete particle-consistency sums (Vukčević 2012, eqs 90-91) on lattices, perturbed lattices and
 // next to a wall.
 #include <catch2/catch.hpp>
 

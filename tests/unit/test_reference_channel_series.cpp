@@ -1,4 +1,4 @@
-// Start-up Couette (seed 002 eq 23) and Poiseuille (corrected seed 002 eq 19) series: checked against the
+// Start-up Couette (Vukčević et al. 2012, eq 23) and Poiseuille (corrected Vukčević et al. 2012, eq 19) series: checked against the
 // steady profiles, bounds, boundary conditions, the PDE by finite differences, and each other's
 // representations (Fourier vs images) where both converge.
 #include <catch2/catch.hpp>
@@ -110,7 +110,7 @@ TEST_CASE("Couette: steady limit, bounds, boundary values, initial condition", "
   const double t = t_of(couette, 1e-6), d = 2.0 * std::sqrt(couette.nu * t);
   CHECK(couette.velocity(l - 0.5 * d, t) == Approx(v0 * std::erfc(0.5)).epsilon(1e-13));
   CHECK(std::abs(couette.velocity(0.5 * l, t)) <= accuracy * v0);
-  // Near steady at t = 1 s (seed 002: "at about t = 1 s the fluid reaches a steady state"): the slowest
+  // Near steady at t = 1 s (Vukčević et al. 2012: "at about t = 1 s the fluid reaches a steady state"): the slowest
   // mode 2 v0/pi e^{-pi^2} sin(pi y/l) remains, about 3e-5 v0 at mid-channel.
   const double mid = couette.velocity(0.5 * l, 1.0);
   CHECK(std::abs(mid - 0.5 * v0) == Approx(2.0 * v0 / std::numbers::pi * std::exp(-std::numbers::pi * std::numbers::pi)).epsilon(1e-6));
@@ -118,7 +118,7 @@ TEST_CASE("Couette: steady limit, bounds, boundary values, initial condition", "
 
 TEST_CASE("Poiseuille: sign, steady limit, bounds, boundary values, initial condition", "[reference]") {
   const double l = poiseuille.l, F = poiseuille.F, peak = poiseuille.peak_velocity();
-  CHECK(peak == Approx(2.5e-5).epsilon(1e-15));  // F l^2/(8 nu) for seed 002 parameters
+  CHECK(peak == Approx(2.5e-5).epsilon(1e-15));  // F l^2/(8 nu) for Vukčević et al. 2012 parameters
   for (int i = 0; i <= 20; ++i) {
     const double y = l * i / 20.0;
     CHECK(std::abs(poiseuille.velocity(y, 100.0) - F / (2.0 * poiseuille.nu) * y * (l - y)) <= accuracy * peak);
@@ -176,7 +176,7 @@ TEST_CASE("Channel series reject arguments outside their domain", "[reference]")
   CHECK_THROWS_AS(poiseuille.velocity_fourier(0.5e-3, 0.0), std::domain_error);
 }
 
-TEST_CASE("Channel series match 40-digit values (mpmath, image sums) at seed 002 parameters", "[reference]") {
+TEST_CASE("Channel series match 40-digit values (mpmath, image sums) at Vukčević et al. 2012 parameters", "[reference]") {
   // Values computed independently with mpmath (dps = 40) from the image representations at the double
   // nearest each (y, t); they are reference data, not outputs of this code.
   struct Ref { double y, t, couette, poiseuille; };

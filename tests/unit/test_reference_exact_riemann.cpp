@@ -1,5 +1,5 @@
 // Exact Riemann solver (Toro ch. 4): published star states, Rankine-Hugoniot across shocks, isentropy
-// and the Riemann invariant through rarefactions, seed 003 §3 shock tube.
+// and the Riemann invariant through rarefactions, Niedoba 2012, §3 shock tube.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -130,8 +130,8 @@ TEST_CASE("Exact Riemann: vacuum generation and bad data are errors", "[referenc
   CHECK_THROWS_AS(ExactRiemannSolver({1.0, 0.0, 1.0}, {1.0, 0.0, 1.0}, 1.0), std::invalid_argument);
 }
 
-TEST_CASE("Exact Riemann: seed 003 §3 shock tube gives a right-moving shock", "[reference][riemann]") {
-  // Seed 003 §3.2 (after Hernquist 1989): rho 1 / 0.25, p 1 / 0.1795, u = 0, gamma = 1.4; e_L = 2.5, e_R = 1.795.
+TEST_CASE("Exact Riemann: Niedoba 2012, §3 shock tube gives a right-moving shock", "[reference][riemann]") {
+  // Niedoba 2012, §3.2 (after Hernquist 1989): rho 1 / 0.25, p 1 / 0.1795, u = 0, gamma = 1.4; e_L = 2.5, e_R = 1.795.
   const ExactRiemannSolver r({1.0, 0.0, 1.0}, {0.25, 0.0, 0.1795}, g14);
   CHECK(r.sample(-5.0).e == Approx(2.5).epsilon(1e-15));
   CHECK(r.sample(5.0).e == Approx(1.795).epsilon(1e-15));
@@ -143,7 +143,7 @@ TEST_CASE("Exact Riemann: seed 003 §3 shock tube gives a right-moving shock", "
   CHECK(r.p_star() > 0.1795);
   CHECK(r.p_star() < 1.0);
   check_rankine_hugoniot(r, r.wave_speeds().right_head);
-  // Seed 003 §3.4 reads off its figures at t = 0.2: shock near x = 0.3, rarefaction within [-0.3, 0],
+  // Niedoba 2012, §3.4 reads off its figures at t = 0.2: shock near x = 0.3, rarefaction within [-0.3, 0],
   // contact between 0.1 and 0.2.
   CHECK(w.right_head == Approx(0.3).margin(0.03));
   CHECK(w.left_head >= -0.3);

@@ -1,4 +1,4 @@
-// RKPM / moment-matrix correction (seed 000 eqs 92-99, seed 003 eqs 2.80-2.86): reproduces linear
+// RKPM / moment-matrix correction (Vukčević 2012, eqs 92-99, Niedoba 2012, eqs 2.80-2.86): reproduces linear
 // fields and their gradients exactly on a support truncated by a wall.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The resolved, validated configuration of one run (SPEC §3). Produced only by load_config(),
+// The resolved, validated configuration of one run . Produced only by load_config(),
 // which rejects unknown keys, wrong types, missing required values and non-physical values
 // with a ConfigError naming the key, the file and the line. Every field here is used by the
 // solver: nothing is parsed and then ignored.
@@ -16,12 +16,12 @@ struct ConfigError : std::runtime_error {
 };
 
 struct EosConfig {
-  std::string type = "linear";  // "linear": p = c^2 rho (Morris, seed 002 eq 20); "linear_relative": p = c^2 (rho - rho0)
+  std::string type = "linear";  // "linear": p = c^2 rho (Morris, Vukčević et al. 2012, eq 20); "linear_relative": p = c^2 (rho - rho0)
   double sound_speed = 0.0;     // c [m/s], required, > 0
   double background_pressure = 0.0;  // [Pa] added to every particle's pressure after the EOS, >= 0
   bool clamp_negative = false;       // "tait": p = max(p, 0) (free surfaces with summation density)
-  // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (seed 003 eq 2.75), gamma > 0, default 7.
-  // "ideal_gas": p = (gamma - 1) rho e (seed 003 eq 2.73), gamma > 1, default 1.4; needs
+  // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (Niedoba 2012, eq 2.75), gamma > 0, default 7.
+  // "ideal_gas": p = (gamma - 1) rho e (Niedoba 2012, eq 2.73), gamma > 1, default 1.4; needs
   // discretization.energy: true and takes no sound_speed (c = sqrt(gamma p / rho) per particle).
   // The loader sets the default of the chosen type when gamma is not given.
   double gamma = 7.0;
@@ -47,14 +47,14 @@ struct GeometryConfig {
   std::vector<double> column;   // dam_break: the water column [width, height] at x = 0 of the tank `box`
 };
 
-struct RepulsiveConfig {  // seed 003 eq 2.76, for boundary: virtual_repulsive
+struct RepulsiveConfig {  // Niedoba 2012, eq 2.76, for boundary: virtual_repulsive
   double strength = 0.0;  // D [m^2/s^2], required there, > 0
   double p1 = 12.0;       // > p2
   double p2 = 4.0;        // > 0
   double r0 = 1.0;        // cut-off radius in particle spacings, > 0 and inside the kernel support
 };
 
-// Monaghan artificial viscosity (seed 003 eq 2.70); absent from the YAML = off.
+// Monaghan artificial viscosity (Niedoba 2012, eq 2.70); absent from the YAML = off.
 struct ArtificialViscosityConfig {
   bool enabled = false;
   double alpha = 1.0;  // >= 0
@@ -70,7 +70,7 @@ struct TransportVelocityConfig {
   bool extra_stress = true;          // the A = rho v (v~ - v) term in the momentum equation
 };
 
-// The two initial states of the shock tube (seed 003 §3.2), left for x < 0, right for x >= 0.
+// The two initial states of the shock tube (Niedoba 2012, §3.2), left for x < 0, right for x >= 0.
 struct ShockTubeState {
   double density = 0.0, pressure = 0.0, velocity = 0.0;
 };
@@ -83,10 +83,10 @@ struct DiscretizationConfig {
   double spacing = 0.0;             // particle spacing dx [m]; exactly one of the two is given
   std::string kernel = "cubic_spline";
   double smoothing_ratio = 1.3;     // h / dx, > 0
-  std::string density = "summation";             // summation | normalised_summation (003 eq 2.58) | continuity (003 eq 2.61)
-  std::string momentum = "symmetric_117";          // symmetric_117 (seed 000 eq 117) | symmetric_116 (000 eq 116)
-  std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (000 eqs 117/122) | none (inviscid)
-  double xsph = 0.0;                // XSPH epsilon (seed 002 eq 21), 0 <= eps <= 1; 0 = off
+  std::string density = "summation";             // summation | normalised_summation (Niedoba 2012, eq 2.58) | continuity (Niedoba 2012, eq 2.61)
+  std::string momentum = "symmetric_117";          // symmetric_117 (Vukčević 2012, eq 117) | symmetric_116 (Vukčević 2012, eq 116)
+  std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (Vukčević 2012, eqs 117/122) | none (inviscid)
+  double xsph = 0.0;                // XSPH epsilon (Vukčević et al. 2012, eq 21), 0 <= eps <= 1; 0 = off
   double position_noise = 0.0;      // box scenes: seeded random displacement of the initial lattice [spacings], [0, 0.25]
   std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive
   std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
@@ -113,8 +113,8 @@ struct DiscretizationConfig {
   bool combine_terms = true;
   ArtificialViscosityConfig artificial_viscosity;
   TransportVelocityConfig transport_velocity;
-  bool energy = false;              // energy equation (seed 003 eq 2.66/2.65), e in the state
-  std::string smoothing_length = "constant";  // constant | density (003 eq 2.67) | ode (003 eq 2.68)
+  bool energy = false;              // energy equation (Niedoba 2012, eq 2.66/2.65), e in the state
+  std::string smoothing_length = "constant";  // constant | density (Niedoba 2012, eq 2.67) | ode (Niedoba 2012, eq 2.68)
 };
 
 struct CflConfig {

@@ -19,9 +19,9 @@ template <int D>
 struct CompositeKernel {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "composite";
-  static constexpr std::string_view source = "seed 001 eqs 13a (value) and 13b (separate derivative), 2D only";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eqs 13a (value) and 13b (separate derivative), 2D only";
   static constexpr std::string_view unavailable_reason =
-      "seed 001 gives the composite kernel (eq 13a value, eq 13b separate derivative) only for 2D";
+      "Potapov & Reshetnikova 2021 gives the composite kernel (eq 13a value, eq 13b separate derivative) only for 2D";
   static constexpr double support = 1.0;
   static constexpr bool available = D == 2;
   static constexpr bool derivative_is_exact = false;

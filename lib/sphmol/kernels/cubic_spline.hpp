@@ -14,7 +14,7 @@ template <int D>
 struct CubicSpline : KernelFromEval<CubicSpline<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "cubic_spline";
-  static constexpr std::string_view source = "seed 000 eq 58 / seed 001 eq 8 / seed 003 eq 2.40";
+  static constexpr std::string_view source = "Vukčević 2012, eq 58 / Potapov & Reshetnikova 2021, eq 8 / Niedoba 2012, eq 2.40";
   static constexpr double support = 2.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 1.0 : D == 2 ? 15.0 / (7.0 * std::numbers::pi) : 3.0 / (2.0 * std::numbers::pi);

@@ -16,7 +16,7 @@ template <int D>
 struct DesbrunSpikyKernel : KernelFromEval<DesbrunSpikyKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "desbrun_spiky";
-  static constexpr std::string_view source = "seed 001 eq 11 read as (2-q)^3 (Desbrun & Cani 1996); 1D constant from the integral";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 11 read as (2-q)^3 (Desbrun & Cani 1996); 1D constant from the integral";
   static constexpr double support = 2.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 1.0 / 8.0 : D == 2 ? 5.0 / (16.0 * std::numbers::pi) : 15.0 / (64.0 * std::numbers::pi);

@@ -28,7 +28,7 @@ template <int D>
 struct GaussianKernel : KernelFromEval<GaussianKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "gaussian";
-  static constexpr std::string_view source = "seed 000 eq 57, truncated at 3h and renormalised";
+  static constexpr std::string_view source = "Vukčević 2012, eq 57, truncated at 3h and renormalised";
   static constexpr double support = 3.0;
   static constexpr bool available = true;
   static inline const double sigma = 1.0 / gaussian_ball_mass<D>();

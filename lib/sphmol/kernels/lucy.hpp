@@ -12,7 +12,7 @@ template <int D>
 struct LucyKernel : KernelFromEval<LucyKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "lucy";
-  static constexpr std::string_view source = "seed 000 eq 55 (Lucy 1977)";
+  static constexpr std::string_view source = "Vukčević 2012, eq 55 (Lucy 1977)";
   static constexpr double support = 1.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 5.0 / 4.0 : D == 2 ? 5.0 / std::numbers::pi : 105.0 / (16.0 * std::numbers::pi);

@@ -14,7 +14,7 @@ template <int D>
 struct MullerPoly6Kernel : KernelFromEval<MullerPoly6Kernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "muller_poly6";
-  static constexpr std::string_view source = "seed 001 eq 12 (1D constant from the integral)";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 12 (1D constant from the integral)";
   static constexpr double support = 1.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 35.0 / 32.0 : D == 2 ? 4.0 / std::numbers::pi : 315.0 / (64.0 * std::numbers::pi);

@@ -15,7 +15,7 @@ template <int D>
 struct QuadraticJohnsonKernel : KernelFromEval<QuadraticJohnsonKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quadratic_johnson";
-  static constexpr std::string_view source = "seed 001 eq 10 / seed 003 eq 2.44";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 10 / Niedoba 2012, eq 2.44";
   static constexpr double support = 2.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 1.0 : D == 2 ? 2.0 / std::numbers::pi : 5.0 / (4.0 * std::numbers::pi);

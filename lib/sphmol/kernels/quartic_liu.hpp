@@ -16,7 +16,7 @@ template <int D>
 struct QuarticLiuKernel : KernelFromEval<QuarticLiuKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quartic_liu";
-  static constexpr std::string_view source = "seed 001 eq 9 / seed 003 eq 2.41";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 9 / Niedoba 2012, eq 2.41";
   static constexpr double support = 2.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 1.0 : D == 2 ? 15.0 / (7.0 * std::numbers::pi) : 315.0 / (208.0 * std::numbers::pi);

@@ -18,7 +18,7 @@ template <int D>
 struct QuinticMorrisKernel : KernelFromEval<QuinticMorrisKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "quintic_morris";
-  static constexpr std::string_view source = "seed 001 eq 7 / seed 003 eq 2.42 (constants from the integral)";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 7 / Niedoba 2012, eq 2.42 (constants from the integral)";
   static constexpr double support = 3.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 1.0 / 120.0 : D == 2 ? 7.0 / (478.0 * std::numbers::pi) : 1.0 / (120.0 * std::numbers::pi);

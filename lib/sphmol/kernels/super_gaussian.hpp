@@ -29,7 +29,7 @@ template <int D>
 struct SuperGaussianKernel : KernelFromEval<SuperGaussianKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "super_gaussian";
-  static constexpr std::string_view source = "seed 001 eq 6, renormalised over q < 3 (printed constants wrong)";
+  static constexpr std::string_view source = "Potapov & Reshetnikova 2021, eq 6, renormalised over q < 3 (printed constants wrong)";
   static constexpr double support = 3.0;
   static constexpr bool available = true;
   static inline const double sigma = 1.0 / super_gaussian_ball_mass<D>();

@@ -19,7 +19,7 @@ template <int D>
 struct TruncatedExponentialKernel : KernelFromEval<TruncatedExponentialKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "truncated_exponential";
-  static constexpr std::string_view source = "seed 003 eq 2.43 (kappa = 3), printed constant, not renormalised";
+  static constexpr std::string_view source = "Niedoba 2012, eq 2.43 (kappa = 3), printed constant, not renormalised";
   static constexpr double support = 3.0;
   static constexpr bool available = true;
   static inline const double sigma = std::pow(std::numbers::pi, -0.5 * D);

@@ -16,7 +16,7 @@ template <int D>
 struct WendlandC2Kernel : KernelFromEval<WendlandC2Kernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "wendland_c2";
-  static constexpr std::string_view source = "Wendland 1995 psi_3,1 (not in the seeds)";
+  static constexpr std::string_view source = "Wendland 1995 psi_3,1 ";
   static constexpr double support = 2.0;
   static constexpr bool available = true;
   static constexpr double sigma = D == 1 ? 0.75 : D == 2 ? 7.0 / (4.0 * std::numbers::pi) : 21.0 / (16.0 * std::numbers::pi);

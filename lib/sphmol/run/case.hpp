@@ -45,7 +45,7 @@ class Case {
   virtual std::unique_ptr<SphSystem<D>> build(const Config& config) = 0;
   // Name of the reference solution (for the summary).
   virtual std::string reference() const = 0;
-  // Error measures at an output time, under the SPEC §3 keys of the case (e.g. e_rms, e_max).
+  // Error measures at an output time, under the documented keys of the case (e.g. e_rms, e_max).
   // May write per-time files (profiles) through `out`.
   virtual nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   // The summary's final_errors; by default the last measurement without its "t".

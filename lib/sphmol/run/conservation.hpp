@@ -1,12 +1,12 @@
 #pragma once
 // Conserved quantities of the fluid at output times: total momentum sum_i m_i v_i per component,
 // kinetic energy sum_i m_i |v_i|^2 / 2 and, when the state holds the specific internal energy e
-// (energy equation, seed 003 eq 2.66), the total energy sum_i m_i (|v_i|^2 / 2 + e_i) (fluid
+// (energy equation, Niedoba 2012, eq 2.66), the total energy sum_i m_i (|v_i|^2 / 2 + e_i) (fluid
 // particles only; walls are prescribed). Momentum is conserved only in periodic directions without
 // walls or body forces acting along them, so the summary lists which directions are periodic and
 // the drift P(t) - P(0) per component, also relative to the momentum scale sum_i m_i |v_i| (its
 // maximum over the records). The total energy is conserved by the compressible formulation with
-// fixed walls (the artificial-viscosity work, seed 003 eq 2.72, goes into e): its drift E(t) - E(0)
+// fixed walls (the artificial-viscosity work, Niedoba 2012, eq 2.72, goes into e): its drift E(t) - E(0)
 // and relative drift / E(0) are reported.
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #pragma once
 // Runs one verification case from a validated config: builds the scene, assembles the RHS,
 // integrates to every output time, measures the error against the case's reference and writes
-// DIR/summary.json (SPEC §3), DIR/config.yaml (the resolved config) and profile CSVs.
+// DIR/summary.json , DIR/config.yaml (the resolved config) and profile CSVs.
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>

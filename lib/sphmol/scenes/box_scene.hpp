@@ -6,8 +6,8 @@
 //     (corner regions included; a corner particle belongs to the top wall if that wall is present, so
 //     a moving lid spans the corners, else to the wall it lies deeper behind);
 //   virtual_repulsive: one row of massless particles on each wall line at spacing dx/2 (the wall line
-//     is dx/2 outside the outermost fluid particles, the placement of seed 003 Fig 3.3); they act only
-//     through the repulsive force of seed 003 eq 2.76;
+//     is dx/2 outside the outermost fluid particles, the placement of Niedoba 2012, Fig 3.3); they act only
+//     through the repulsive force of Niedoba 2012, eq 2.76;
 //   ghost: no particles here: mirror images are generated at every RHS evaluation from `walls`.
 // Walls with a nonzero velocity are belts: their particles stay put and carry the velocity.
 #include "sphmol/boundary/ghost_particles.hpp"

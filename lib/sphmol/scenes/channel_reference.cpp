@@ -16,12 +16,12 @@ ChannelReference make_channel_reference(const Config& config) {
     CouetteSeries s{l, nu, config.geometry.wall_velocity};
     ref.velocity = [s](double y, double t) { return s.velocity(y, t); };
     ref.v0 = config.geometry.wall_velocity;
-    ref.name = "Couette start-up series (seed 002 eq 23)";
+    ref.name = "Couette start-up series (Vukčević et al. 2012, eq 23)";
   } else if (config.case_name == "poiseuille") {
     PoiseuilleSeries s{l, nu, config.fluid.body_force.at(0)};
     ref.velocity = [s](double y, double t) { return s.velocity(y, t); };
     ref.v0 = s.peak_velocity();
-    ref.name = "Poiseuille start-up series (seed 002 eq 19)";
+    ref.name = "Poiseuille start-up series (Vukčević et al. 2012, eq 19)";
   } else {
     throw std::invalid_argument("no channel reference for case '" + config.case_name + "'");
   }

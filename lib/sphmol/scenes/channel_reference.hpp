@@ -1,6 +1,6 @@
 #pragma once
 // The exact start-up solution a channel case is measured against, and its error measure
-// (SPEC §2): e_rms(t) = sqrt(mean_i (u_i - u_exact(y_i, t))^2) / v0, e_max = max_i |...| / v0,
+// : e_rms(t) = sqrt(mean_i (u_i - u_exact(y_i, t))^2) / v0, e_max = max_i |...| / v0,
 // over fluid particles; v0 is the Couette plate speed or the Poiseuille peak speed.
 #include <functional>
 #include <string>

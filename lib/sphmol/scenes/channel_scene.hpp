@@ -1,5 +1,5 @@
 #pragma once
-// Plane channel between walls at y = 0 and y = l, periodic in x over channel_length (seed 002 §4):
+// Plane channel between walls at y = 0 and y = l, periodic in x over channel_length (Vukčević et al. 2012, §4):
 // fluid on a square lattice at ((i+1/2) dx, (j+1/2) dx); wall particles continue the lattice
 // outside, in enough layers to fill the kernel support. The top wall moves with wall_velocity.
 #include "sphmol/config/config.hpp"

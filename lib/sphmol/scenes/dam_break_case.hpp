@@ -1,5 +1,5 @@
 #pragma once
-// Dam break (issue 6): a water column of width a and height H collapses into an open tank of width Lx
+// Dam break: a water column of width a and height H collapses into an open tank of width Lx
 // (scenes/dam_break_scene.hpp). Measured at output times, over fluid particles:
 //   x_front     surge-front position: the largest x of any fluid particle plus dx/2 (the edge of its
 //               lattice cell, so x_front(0) = a);

@@ -2,7 +2,7 @@
 // 2D dam break: a water column [0, a] x [0, H] (geometry.column) at the left end of an open tank
 // [0, Lx] x [0, Ly] (geometry.box), on the square lattice ((i+1/2) dx, (j+1/2) dx). Walls left, right
 // and below, as wall particles on the lattice continued outside the tank (discretization.wall_layers
-// layers; the anchor of issue 6 uses one), the side walls up to the tank height; open top.
+// layers; the DualSPHysics comparison uses one), the side walls up to the tank height; open top.
 // Particle mass m = rho0 dx^2 (continuity density: the volume of a lattice cell). The column starts in
 // hydrostatic equilibrium: rho from the EOS inverted at p = rho0 g (H - y), as DualSPHysics does;
 // wall particles next to and under the column get the hydrostatic density of their height too (others

@@ -1,5 +1,5 @@
 #pragma once
-// Water column at rest in a tank (seed 001 §5): fluid [0, width] x [0, depth] starting at uniform
+// Water column at rest in a tank (Potapov & Reshetnikova 2021, §5): fluid [0, width] x [0, depth] starting at uniform
 // density, walls left, right and below (the side walls reach 1.2 x depth), gravity body force ramped
 // in (fluid.body_force_ramp). Reference p = rho0 g (depth - y). At output times t >= settle time
 // (2 x body_force_ramp), over fluid particles:

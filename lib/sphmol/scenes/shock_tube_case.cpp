@@ -172,7 +172,7 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
   summary["y_walls"] = D == 1 ? "none (1D)"
                        : boundary_ == "ghost"       ? "ghost (mirror) walls at y = 0 and y = W"
                        : boundary_ == "virtual_repulsive"
-                           ? "virtual particles with the repulsive force (seed 003 eq 2.76) on y = -dx and y = W + dx"
+                           ? "virtual particles with the repulsive force (Niedoba 2012, eq 2.76) on y = -dx and y = W + dx"
                            : "none: y periodic";
   summary["exact"] = {{"p_star", exact_->p_star()},
                       {"u_star", exact_->u_star()},

@@ -1,5 +1,5 @@
 #pragma once
-// The shock tube of seed 003 §3 against the exact Riemann solution (Toro): L1 errors of rho, u, p, e
+// The shock tube of Niedoba 2012, §3 against the exact Riemann solution (Toro): L1 errors of rho, u, p, e
 // over all fluid particles and over the mid-line particles (|y - W/2| < dx; with y periodic every row is
 // a mid-line, with walls the rows next to them differ), wave positions detected on the x-binned SPH profile, and a CSV of the binned profile with the exact
 // solution at each output time.

@@ -53,7 +53,7 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
       s.domain.hi[1] = Wd + layers * dx;
       s.domain.periodic[1] = false;
     }
-    // Free-slip (or, if configured, no-slip) ghost walls at y = 0 and y = W (seed 003 §3.2: "fixed
+    // Free-slip (or, if configured, no-slip) ghost walls at y = 0 and y = W (Niedoba 2012, §3.2: "fixed
     // free-slip wall, v_n = 0"); the x ends stay closed by wall particles, so x has no ghost walls.
     for (int side = 0; side < 2; ++side) {
       auto& w = s.walls[1][side];
@@ -89,7 +89,7 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
       place(Kind::Wall, 0.5 * L + depth, (j + 0.5) * dx, Rs, -1.0, depth);
     }
   if (D == 2 && boundary == "virtual_repulsive") {
-    // Seed 003 §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
+    // Niedoba 2012, §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
     // rectangle enlarged by dx/2 beyond the domain boundary (which lies dx/2 outside the outermost
     // rows), so that with r0 = dx no particle is repelled in the initial state. Spacing dx/2 along
     // the wall. As in the textbook code the thesis builds on (Liu & Liu 2003, whose virtual particles

@@ -35,7 +35,7 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
     return c;
   }
   // Skip the start-up (first tenth of the samples); count swings of e_signed about its mean over
-  // the rest. The oscillation of seed 000 §9 is about the run's own (slightly biased) level, not
+  // the rest. The oscillation of Vukčević 2012, §9 is about the run's own (slightly biased) level, not
   // about the exact solution, so the sign is taken relative to that mean.
   const std::size_t first = s.size() / 10;
   double mean = 0.0;

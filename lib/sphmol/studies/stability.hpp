@@ -8,7 +8,7 @@
 //                 / v0; channel cases), sampled at `samples` equally spaced times, swings about its own
 //                 mean after the start-up (the first tenth of the samples is skipped): at least two
 //                 sign changes of e_signed - mean while |e_signed - mean| > osc_threshold. This is the
-//                 symmetric oscillation about the channel centre of seed 000 §9 / seed 002 §5: the
+//                 symmetric oscillation about the channel centre of Vukčević 2012, §9 / Vukčević et al. 2012, §5: the
 //                 profile error stays mirror-symmetric and breathes in time instead of settling
 //                 (measured at 10 particles across with c >= 1e-2 m/s, period ~8 s; README);
 //                 A run whose max |e_signed| exceeds 1 (error larger than v0: unbounded growth that

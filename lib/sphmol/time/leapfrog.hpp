@@ -18,7 +18,7 @@ class Leapfrog final : public LeapfrogBase {
   std::string name() const override { return "leapfrog"; }
 
  private:
-  const char* scheme() const override { return "drift-kick-drift (seed 002 eq 22)"; }
+  const char* scheme() const override { return "drift-kick-drift (Vukčević et al. 2012, eq 22)"; }
   void step(double dt) override;
   void initialized() override;
   // The XSPH correction is checkpointed too: it was evaluated relative to the predicted velocity.
