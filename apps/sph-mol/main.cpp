@@ -99,6 +99,9 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);  // prints the message (or --help / --version)
     return code == 0 ? 0 : 2;      // a bad command line is bad input, like a bad config
   }
+  if (threads > omp_get_num_procs())  // oversubscribed threads only wait for each other
+    std::cerr << "sph-mol: warning: --threads " << threads << " is more than the " << omp_get_num_procs()
+              << " cores of this machine\n";
   if (threads > 0) omp_set_num_threads(threads);
   for (auto& s : sphmol::app::subcommands())
     if (app.got_subcommand(s.name)) return s.run();

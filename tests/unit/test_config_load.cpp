@@ -120,7 +120,7 @@ time:
   table: ARKODE_VERNER_8_5_6
   rtol: 1e-9
   atol: 1e-14
-  cfl: {acoustic: 1, force: 0.5, viscous: 2}
+  cfl: {acoustic: 1, force: 0.5, viscous: 0.1}
   dt: 1e-4
   max_steps: 1e7
 output: {directory: "res/run 1", times: [2], profiles: no}
@@ -147,7 +147,7 @@ output: {directory: "res/run 1", times: [2], profiles: no}
   CHECK(c.time.atol == 1e-14);
   CHECK(c.time.cfl.acoustic == 1.0);
   CHECK(c.time.cfl.force == 0.5);
-  CHECK(c.time.cfl.viscous == 2.0);
+  CHECK(c.time.cfl.viscous == 0.1);
   REQUIRE(c.time.dt.has_value());
   CHECK(*c.time.dt == 1e-4);
   CHECK(c.time.max_steps == 10'000'000);

@@ -9,6 +9,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/config/erk_tables.hpp"
+#include "sphmol/config/scene_checks.hpp"
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/kernels/registry.hpp"
 
@@ -438,12 +439,18 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = time.real("atol")) t.atol = *v;
     check(time, "atol", t.atol > 0, t.atol, "> 0");
     MapReader cfl = time.section("cfl", {"acoustic", "force", "viscous"});
+    // Stability ranges of the explicit schemes (config/README.md, "CFL coefficients"): a larger
+    // coefficient lets the integrator take steps past the limit of its own stability region.
     if (const auto v = cfl.real("acoustic")) t.cfl.acoustic = *v;
-    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic, "(0, 1]");
+    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic,
+          "(0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4)");
     if (const auto v = cfl.real("force")) t.cfl.force = *v;
-    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force, "(0, 1]");
+    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force,
+          "(0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25)");
     if (const auto v = cfl.real("viscous")) t.cfl.viscous = *v;
-    check(cfl, "viscous", t.cfl.viscous > 0, t.cfl.viscous, "> 0");
+    check(cfl, "viscous", t.cfl.viscous > 0 && t.cfl.viscous <= 0.125, t.cfl.viscous,
+          "(0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; "
+          "the leapfrog Couette flow diverges at 0.15");
     if (const auto v = time.real("dt")) {
       check(time, "dt", *v > 0, *v, "> 0 s");
       if (t.integrator == "cvode_adams")
@@ -501,6 +508,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
+  SectionReaders readers{top, fluid, geo, disc, time, out};
+  check_scene(c, readers);
   return c;
 }
 

@@ -22,6 +22,7 @@ class ChannelCase final : public Case<2> {
   bool profiles_ = true;
   int wall_layers_ = 0;
   double spacing_ = 0.0;
+  double height_ = 0.0;  // channel height l: fluid particles outside [0, l] are inside a wall
 };
 
 }  // namespace sphmol
