@@ -100,7 +100,7 @@ TEST_CASE("config: a valid config loads with its values and the defaults", "[con
 TEST_CASE("config: every key given explicitly", "[config]") {
   const std::string yaml = R"(case: poiseuille
 dimension: 2
-fluid: {density: 998.2, kinematic_viscosity: 0, eos: {type: linear, sound_speed: 3}, body_force: [2e-4, -1]}
+fluid: {density: 998.2, kinematic_viscosity: 1e-6, eos: {type: linear, sound_speed: 3}, body_force: [2e-4, -1]}
 geometry: {channel_height: 2, channel_length: 1, wall_velocity: 0}
 discretization:
   spacing: 0.05
@@ -129,7 +129,7 @@ output: {directory: "res/run 1", times: [2], profiles: no}
   CHECK(c.source == "<string>");
   CHECK(c.case_name == "poiseuille");
   CHECK(c.fluid.density == 998.2);
-  CHECK(c.fluid.kinematic_viscosity == 0.0);
+  CHECK(c.fluid.kinematic_viscosity == 1e-6);
   CHECK(c.fluid.eos.sound_speed == 3.0);
   CHECK(c.fluid.body_force == std::vector<double>{2e-4, -1.0});
   CHECK(c.geometry.channel_height == 2.0);

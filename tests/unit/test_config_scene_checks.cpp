@@ -56,12 +56,12 @@ TEST_CASE("scene checks: inputs the scene or the assembly used to reject at run 
         "(got 'ghost'; allowed: wall_particles)");
   CHECK(load_error("hydrostatic", {"fluid.body_force=[0.5, -9.81]"}).find("fluid.body_force: case 'hydrostatic' needs gravity") !=
         std::string::npos);
-  CHECK(load_error("dam_break", {"fluid.eos.type=linear"}).find("fluid.eos: case 'dam_break' needs eos.type 'tait' or 'linear_relative'") !=
+  CHECK(load_error("dam_break", {"fluid.eos={type: linear, sound_speed: 88.6}"}).find("fluid.eos: case 'dam_break' needs eos.type 'tait' or 'linear_relative'") !=
         std::string::npos);
   CHECK(load_error("taylor_green", {"geometry.box=[1, 0.5]"}).find("geometry.box[1]: 0.5 differs from box[0] = 1") != std::string::npos);
-  CHECK(load_error("cavity", {"discretization.boundary=virtual_repulsive", "discretization.repulsive={strength: 1}"})
+  CHECK(load_error("cavity", {"discretization.boundary=virtual_repulsive", "discretization.wall_model=prescribed", "discretization.repulsive={strength: 1}"})
             .find("discretization.boundary: virtual_repulsive walls exert no shear") != std::string::npos);
-  CHECK(load_error("taylor_green", {"discretization.energy=true"}).find("discretization.energy: case 'taylor_green' provides no initial") !=
+  CHECK(load_error("taylor_green", {"fluid.kinematic_viscosity=0", "discretization.energy=true"}).find("discretization.energy: case 'taylor_green' provides no initial") !=
         std::string::npos);
   CHECK(load_error("cavity", {"discretization.pair_passes=fused", "discretization.viscosity=strain_rate"})
             .find("discretization.pair_passes: 'fused' is not available with viscosity: strain_rate") != std::string::npos);
