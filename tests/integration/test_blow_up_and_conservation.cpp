@@ -130,7 +130,7 @@ TEST_CASE("--threads above the core count warns in one line", "[integration][hea
   const std::string dir = "reports/health_threads";
   const std::string threads = std::to_string(std::thread::hardware_concurrency() + 1);
   const auto r = sph_mol(dir, {"--threads", threads, "--config", couette, "--set", "discretization.particles_across=20", "--set",
-                               "time.t_end=0.001", "--set", "output.plots=false"});
+                               "time.t_end=0.001", "--set", "output.times=[]", "--set", "output.plots=false"});
   INFO(r.err);
   CHECK(r.code == 0);
   CHECK(r.err.find("sph-mol: warning: --threads " + threads + " is more than the ") == 0);
