@@ -73,6 +73,14 @@ TEST_CASE("scene checks: inputs the scene or the assembly used to reject at run 
   CHECK(load_error("dam_break", {"discretization.spacing=0.03"}).find("geometry.column[0] (1 m) is not a whole number") != std::string::npos);
 }
 
+TEST_CASE("scene checks: every shipped case loads as it is", "[config][scene]") {
+  for (const char* name : {"couette", "poiseuille", "taylor_green", "cavity", "hydrostatic", "dam_break", "shock_tube",
+                           "shock_tube_1d", "shock_tube_virtual"}) {
+    INFO(name);
+    CHECK(load_error(name, {}) == "<no error>");
+  }
+}
+
 TEST_CASE("scene checks: a periodic length shorter than two neighbour radii names the length and its line", "[config][scene]") {
   // 10 particles across: dx = 1e-4 m, h = 1.3e-4 m, radius (2 + 0.3) h = 3e-4 m > half of 5e-4 m.
   const std::string e = load_error("couette", {"discretization.particles_across=10"});
