@@ -67,6 +67,8 @@ TEST_CASE("scene checks: inputs the scene or the assembly used to reject at run 
             .find("discretization.pair_passes: 'fused' is not available with viscosity: strain_rate") != std::string::npos);
   CHECK(load_error("shock_tube_virtual", {"discretization.repulsive.r0=3"})
             .find("discretization.repulsive: r0 = 3 spacings must lie inside the kernel support (3 spacings") != std::string::npos);
+  CHECK(load_error("shock_tube_1d", {"shock_tube.right.velocity=12"}).find(": shock_tube: the states separate into a vacuum") !=
+        std::string::npos);
   // Whole numbers of the spacing, named by the length that is not one.
   CHECK(load_error("couette", {"geometry.channel_length=0.51e-3"}).find("geometry.channel_length: geometry.channel_length (0.00051 m) is not a "
                                                                        "whole number of the particle spacing 2.5e-05 m") != std::string::npos);
@@ -183,6 +185,7 @@ TEST_CASE("scene checks: every config the loader accepts builds (random search o
       {"geometry.wall_velocity=0", "geometry.wall_velocity=1"},
       {"geometry.column=[1, 2]", "geometry.column=[0.5, 0.5]", "geometry.column=[0.45, 1]"},
       {"geometry.tube_width=0.0125", "geometry.tube_width=0.05", "geometry.tube_length=0.5"},
+      {"shock_tube.right.velocity=5", "shock_tube.right.velocity=12", "shock_tube.left.velocity=-12"},
       {"time.integrator=leapfrog", "time.integrator=arkode_erk", "time.integrator=cvode_adams", "time.integrator=leapfrog_kdk"},
       {"dimension=1", "dimension=2"},
   };

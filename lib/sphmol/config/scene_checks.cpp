@@ -109,6 +109,16 @@ SceneSize check_scene(const Config& c, SectionReaders& r) {
     if (!stored.empty())
       disc.fail("pair_passes", "'fused' is not available with " + stored + " (it needs the stored pair list; allowed: auto, stored)");
   }
+  if (shock) {
+    // The exact solution (the reference) exists only without a vacuum: Toro (2009) eq 4.40.
+    const auto& L = c.shock_tube.left;
+    const auto& R = c.shock_tube.right;
+    const double gm = f.eos.gamma, aL = std::sqrt(gm * L.pressure / L.density), aR = std::sqrt(gm * R.pressure / R.density);
+    if (2.0 / (gm - 1.0) * (aL + aR) <= R.velocity - L.velocity)
+      r.top.fail("shock_tube", "the states separate into a vacuum (right.velocity - left.velocity = " +
+                                   shown(R.velocity - L.velocity) + " >= 2 (aL + aR) / (gamma - 1) = " +
+                                   shown(2.0 / (gm - 1.0) * (aL + aR)) + " m/s), which the exact Riemann solver does not cover");
+  }
   if (shock && c.dimension == 1 && d.particles_across > 0)
     disc.fail("particles_across", "counts particles across the tube width, which the 1D shock tube does not have; give discretization.spacing");
 
