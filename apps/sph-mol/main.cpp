@@ -86,6 +86,9 @@ int main(int argc, char** argv) {
       s.setup(*sub);
     }
     if (const auto code = sphmol::app::parse_command_line(app, argc, argv, std::cout, std::cerr)) return *code;
+    if (cmd.threads > omp_get_num_procs())  // oversubscribed threads only wait for each other
+      std::cerr << "sph-mol: warning: --threads " << cmd.threads << " is more than the " << omp_get_num_procs()
+                << " cores of this machine\n";
     if (cmd.threads > 0) omp_set_num_threads(cmd.threads);
     for (auto& s : sphmol::app::subcommands())
       if (app.got_subcommand(s.name)) return s.run();

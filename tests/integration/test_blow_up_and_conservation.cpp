@@ -2,20 +2,139 @@
 // conservation diagnostics, and the new integrators on a short Couette run.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/run_case.hpp"
+#include "support/process.hpp"
 
 using namespace sphmol;
 
 namespace {
 const std::string couette = SPHMOL_SOURCE_DIR "/verification/couette.yaml";
+
+std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name + ".yaml"; }
+
+// Runs sph-mol with `args` (no shell) writing into a fresh `dir`; returns the exit code and stderr.
+test_support::ProcessResult sph_mol(const std::string& dir, std::vector<std::string> args) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories("reports");
+  args.insert(args.end(), {"--output", dir, "-q"});
+  return test_support::run_process(SPHMOL_BINARY, args, dir + ".log");
+}
+
+nlohmann::json summary_of(const std::string& dir) {
+  std::ifstream f(dir + "/summary.json");
+  return f.good() ? nlohmann::json::parse(f) : nlohmann::json();
+}
+}  // namespace
+
+TEST_CASE("physical health checks: unstable runs that completed with wrong answers end as blown_up", "[integration][blowup][health]") {
+  // Each of these exited 0 with status "completed" before the physical checks (run/health_limits.hpp).
+  SECTION("Taylor-Green with a fixed step 10x the acoustic CFL step gains kinetic energy with no input") {
+    // Measured before: kinetic energy 0.25 J at t = 0 and 67 J at t = 0.25 s (L1 velocity error 12).
+    const std::string dir = "reports/health_tg_dt";
+    const auto r = sph_mol(dir, {"--config", verification("taylor_green"), "--set", "time.dt=0.01", "--set", "time.t_end=0.25",
+                                 "--set", "output.times=[0.25]", "--set", "output.plots=false"});
+    INFO(r.err);
+    CHECK(r.code == 3);
+    const auto s = summary_of(dir);
+    REQUIRE(s.is_object());
+    CHECK(s["status"] == "blown_up");
+    const std::string cause = s["blow_up"]["cause"];
+    CHECK((cause.find("kinetic energy") == 0 || cause.find("speed") == 0));
+  }
+  SECTION("Couette with a fixed leapfrog step past the viscous limit: speeds far above the plate speed") {
+    // dt = 2.1e-4 s = 0.2 h^2/nu at 40 across; measured before: completed, e_rms 356 v0 at t = 0.1 s.
+    const std::string dir = "reports/health_couette_dt";
+    const auto r = sph_mol(dir, {"--config", couette, "--set", "time.integrator=leapfrog", "--set", "time.dt=2.1e-4", "--set",
+                                 "time.t_end=0.1", "--set", "output.times=[0.1]", "--set", "output.plots=false"});
+    INFO(r.err);
+    CHECK(r.code == 3);
+    const auto s = summary_of(dir);
+    REQUIRE(s.is_object());
+    CHECK(s["status"] == "blown_up");
+    // The plate speed bounds the fluid's (maximum principle): the kinetic energy budget M v0^2 / 2
+    // or the speed bound 10 v0, whichever is crossed first.
+    const std::string cause = s["blow_up"]["cause"];
+    INFO(cause);
+    CHECK((cause.find("kinetic energy ") == 0 || cause.find("speed ") == 0));
+    CHECK(s["blow_up"]["t"].get<double>() < 0.05);
+  }
+}
+
+TEST_CASE("physical health checks: every shipped verification case completes at a CI resolution", "[integration][health]") {
+  struct Run {
+    const char* name;
+    std::vector<std::string> set;
+  };
+  const std::vector<Run> runs = {
+      {"couette", {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.3"}},
+      {"poiseuille", {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.3"}},
+      {"taylor_green", {"discretization.particles_across=20", "time.t_end=0.5"}},
+      {"cavity", {"discretization.particles_across=12", "time.t_end=2"}},
+      {"hydrostatic", {"discretization.particles_across=10", "time.t_end=2"}},
+      {"dam_break", {"discretization.spacing=0.05", "time.t_end=0.5"}},
+      {"shock_tube", {"discretization.spacing=0.0125"}},
+      {"shock_tube_1d", {}},
+      {"shock_tube_virtual", {"discretization.spacing=0.0125"}},
+  };
+  for (const auto& run : runs) {
+    INFO(run.name);
+    const std::string dir = std::string("reports/health_shipped_") + run.name;
+    std::vector<std::string> args{"--config", verification(run.name), "--set", "output.plots=false", "--set", "output.times=[]"};
+    for (const auto& s : run.set) args.insert(args.end(), {"--set", s});
+    const auto r = sph_mol(dir, args);
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(summary_of(dir).value("status", "") == "completed");
+  }
+}
+
+TEST_CASE("input errors found by the scene or the size estimate are exit 2 with the key, and write nothing", "[integration][health]") {
+  struct Bad {
+    std::string config;
+    std::vector<std::string> set;
+    std::string message;
+  };
+  const std::vector<Bad> bad = {
+      {"dam_break", {"fluid.body_force=[0, 0]"}, "fluid.body_force: case 'dam_break' needs gravity"},
+      {"dam_break", {"discretization.wall_pressure=rest", "discretization.boundary=ghost"}, "discretization.boundary: case 'dam_break' builds its tank from wall particles"},
+      {"couette", {"discretization.particles_across=10"}, ": geometry.channel_length: the periodic length"},
+      {"couette", {"fluid.kinematic_viscosity=0"}, "fluid.kinematic_viscosity: case 'couette' is driven by viscosity"},
+      {"couette", {"discretization.particles_across=1000000000"}, "discretization.particles_across: the run needs about"},
+      {"hydrostatic", {"time.max_steps=1000"}, "time.dt: t_end / dt = 20 / 0.00025 = 80000 steps, more than time.max_steps = 1000"},
+  };
+  for (const auto& b : bad) {
+    INFO(b.message);
+    const std::string dir = "reports/health_bad";
+    std::vector<std::string> args{"--config", verification(b.config)};
+    for (const auto& s : b.set) args.insert(args.end(), {"--set", s});
+    const auto r = sph_mol(dir, args);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("sph-mol: config error: ") == 0);
+    CHECK(r.err.find(b.message) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir));
+  }
+}
+
+TEST_CASE("--threads above the core count warns in one line", "[integration][health]") {
+  const std::string dir = "reports/health_threads";
+  const std::string threads = std::to_string(std::thread::hardware_concurrency() + 1);
+  const auto r = sph_mol(dir, {"--threads", threads, "--config", couette, "--set", "discretization.particles_across=20", "--set",
+                               "time.t_end=0.001", "--set", "output.times=[]", "--set", "output.plots=false"});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(r.err.find("sph-mol: warning: --threads " + threads + " is more than the ") == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
 
 TEST_CASE("an unstable run ends cleanly as blown_up with exit code 3", "[integration][blowup]") {

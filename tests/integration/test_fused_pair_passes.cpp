@@ -119,12 +119,12 @@ TEST_CASE("fused pair passes: the dam break runs as one pass, and 'fused' is ref
                                                             "pressure_gradient_117", "artificial_viscosity"});
   CHECK(apart->pair_passes_keep_skin_pairs() == std::vector<bool>{false});
   // The hydrostatic tank's extrapolated wall pressure sums over the stored list: auto falls back to it,
-  // and asking for fused passes is an error that names the term.
+  // and asking for fused passes is a config error that names the setting.
   auto tank = build(load_config(dir + "hydrostatic.yaml", {}));
   CHECK(tank->pair_passes().empty());
   CHECK(tank->terms_needing_stored_pairs() == std::vector<std::string>{"wall_pressure_extrapolated"});
   CHECK_THROWS_WITH(build(load_config(dir + "hydrostatic.yaml", {"discretization.pair_passes=fused"})),
-                    Catch::Contains("wall_pressure_extrapolated") && Catch::Contains("pair_passes"));
+                    Catch::Contains("wall_pressure: extrapolated") && Catch::Contains("discretization.pair_passes"));
 }
 
 TEST_CASE("the combined weakly compressible row equals its four separate terms to round-off", "[integration][fused]") {

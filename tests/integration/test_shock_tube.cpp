@@ -92,7 +92,7 @@ TEST_CASE("shock tube 320x10: L1 errors and wave positions against the exact Rie
 // shock at 0.281 (exact 0.297), rarefaction head -0.227 (exact -0.237); contact and rarefaction tail
 // not resolved by the crossing detector. As in the thesis (Figs 3.5-3.8) it is clearly worse than the
 // ghost walls: it misses the ghost bounds. Bounds here at ~1.5x the measured errors.
-TEST_CASE("shock tube with virtual particles (003 §3.3): runs, worse than ghost walls", "[shock_tube]") {
+TEST_CASE("shock tube with virtual particles (Niedoba 2012, §3.3): runs, worse than ghost walls", "[shock_tube]") {
   const auto s = run("verification/shock_tube_virtual.yaml", "shock-virtual", "--set time.integrator=leapfrog");
   REQUIRE_FALSE(s.is_null());
   INFO(s["final_errors"].dump());

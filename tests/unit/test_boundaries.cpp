@@ -1,5 +1,5 @@
 // Tait EOS (Niedoba 2012, eq 2.75), the repulsive boundary force (Niedoba 2012, eq 2.76) and the ghost generator
-// (003 §2.2.4, §3.3, Fig 3.4): values, signs, mirror positions/velocities, corner images, counts,
+// (Niedoba 2012, §2.2.4, §3.3, Fig 3.4): values, signs, mirror positions/velocities, corner images, counts,
 // the copied energy and h, and the hydrostatic image pressure.
 #include <catch2/catch.hpp>
 
@@ -112,7 +112,7 @@ TEST_CASE("ghost generator: mirror positions, no-slip velocities, corner images,
   for (std::size_t g = 0; g < gen.count(); ++g) {
     const std::size_t k = base + g, i = src[g];
     CHECK(s.pt.kind[k] == Kind::Wall);
-    CHECK(s.pt.mass[k] == s.pt.mass[i]);  // 003 §3.3: m_f = m
+    CHECK(s.pt.mass[k] == s.pt.mass[i]);  // Niedoba 2012, §3.3: m_f = m
     if (i == 0 && mask[g] == 0b0101) {    // mirrored through left and bottom walls: the corner image
       ++corner;
       CHECK(s.w.x[0][k] == Approx(-0.05));

@@ -37,7 +37,7 @@ TEST_CASE("config: box cases, Tait and boundary keys load and round-trip", "[con
   CHECK(c.discretization.wall_slip == "free_slip");
   const auto back = sphmol::load_config_string(sphmol::to_yaml(c));
   CHECK(sphmol::to_yaml(back) == sphmol::to_yaml(c));
-  const auto r = sphmol::load_config_string(cavity, {"case=hydrostatic", "discretization.boundary=virtual_repulsive",
+  const auto r = sphmol::load_config_string(cavity, {"case=hydrostatic", "fluid.body_force=[0, -9.81]", "discretization.boundary=virtual_repulsive",
                                                      "discretization.repulsive.strength=8.8", "discretization.repulsive.p1=9.5"});
   CHECK(r.discretization.repulsive.strength == 8.8);
   CHECK(r.discretization.repulsive.p1 == 9.5);
@@ -51,7 +51,7 @@ TEST_CASE("config: nonsense boundary / EOS combinations are errors", "[config]")
   CHECK_THAT(set(cavity, {"discretization.wall_slip=free_slip"}), Contains("applies to boundary: ghost only"));
   CHECK_THAT(set(cavity, {"discretization.boundary=virtual_repulsive"}), Contains("discretization.repulsive.strength"));
   CHECK_THAT(set(cavity, {"discretization.repulsive.strength=1"}), Contains("apply to boundary: virtual_repulsive only"));
-  CHECK_THAT(set(cavity, {"case=hydrostatic", "discretization.boundary=virtual_repulsive", "discretization.repulsive.strength=1",
+  CHECK_THAT(set(cavity, {"case=hydrostatic", "fluid.body_force=[0, -9.81]", "discretization.boundary=virtual_repulsive", "discretization.repulsive.strength=1",
                           "discretization.repulsive.p1=3"}),
              Contains("discretization.repulsive.p1: 3 is out of range"));
   CHECK_THAT(set(cavity, {"discretization.boundary=ghost", "discretization.wall_pressure=extrapolated"}),

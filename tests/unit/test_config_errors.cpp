@@ -131,11 +131,11 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
       {"t_end: 0.5", "t_end: 0.5\n  rtol: 0", "case.yaml:16: time.rtol: 0 is out of range (allowed: > 0)"},
       {"t_end: 0.5", "t_end: 0.5\n  atol: -1e-9", "case.yaml:16: time.atol: -1e-09 is out of range (allowed: > 0)"},
       {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    acoustic: 1.5",
-       "case.yaml:17: time.cfl.acoustic: 1.5 is out of range (allowed: (0, 1])"},
-      {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    force: 0", "case.yaml:17: time.cfl.force: 0 is out of range (allowed: (0, 1])"},
+       "case.yaml:17: time.cfl.acoustic: 1.5 is out of range (allowed: (0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4))"},
+      {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    force: 0", "case.yaml:17: time.cfl.force: 0 is out of range (allowed: (0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25))"},
       {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    force: 1.01",
-       "case.yaml:17: time.cfl.force: 1.01 is out of range (allowed: (0, 1])"},
-      {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    viscous: 0", "case.yaml:17: time.cfl.viscous: 0 is out of range (allowed: > 0)"},
+       "case.yaml:17: time.cfl.force: 1.01 is out of range (allowed: (0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25))"},
+      {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    viscous: 0", "case.yaml:17: time.cfl.viscous: 0 is out of range (allowed: (0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; the leapfrog Couette flow diverges at 0.15)"},
       {"t_end: 0.5", "t_end: 0.5\n  dt: 0", "case.yaml:16: time.dt: 0 is out of range (allowed: > 0 s)"},
       {"t_end: 0.5", "t_end: 0.5\n  max_steps: 0", "case.yaml:16: time.max_steps: 0 is out of range (allowed: > 0)"},
       {"kinematic_viscosity: 1.0e-6", "kinematic_viscosity: 1.0e-6\n  body_force: [1, 0, 0]",
@@ -150,8 +150,9 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
     INFO(b.to);
     CHECK(error_of(with(b.from, b.to)) == b.message);
   }
-  // The viscous CFL coefficient has no upper bound.
-  CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  cfl:\n    viscous: 2")) == "<no error>");
+  // The viscous CFL coefficient is bounded by the explicit viscous limit.
+  CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  cfl:\n    viscous: 2")) == "case.yaml:17: time.cfl.viscous: 2 is out of range " "(allowed: (0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; the leapfrog Couette flow diverges at 0.15)");
+  CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  cfl:\n    viscous: 0.125")) == "<no error>");
 }
 
 TEST_CASE("config errors: enumerations list the allowed values", "[config]") {

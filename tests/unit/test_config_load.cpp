@@ -100,7 +100,7 @@ TEST_CASE("config: a valid config loads with its values and the defaults", "[con
 TEST_CASE("config: every key given explicitly", "[config]") {
   const std::string yaml = R"(case: poiseuille
 dimension: 2
-fluid: {density: 998.2, kinematic_viscosity: 0, eos: {type: linear, sound_speed: 3}, body_force: [2e-4, -1]}
+fluid: {density: 998.2, kinematic_viscosity: 1e-6, eos: {type: linear, sound_speed: 3}, body_force: [2e-4, -1]}
 geometry: {channel_height: 2, channel_length: 1, wall_velocity: 0}
 discretization:
   spacing: 0.05
@@ -120,7 +120,7 @@ time:
   table: ARKODE_VERNER_8_5_6
   rtol: 1e-9
   atol: 1e-14
-  cfl: {acoustic: 1, force: 0.5, viscous: 2}
+  cfl: {acoustic: 1, force: 0.5, viscous: 0.1}
   dt: 1e-4
   max_steps: 1e7
 output: {directory: "res/run 1", times: [2], profiles: no}
@@ -129,7 +129,7 @@ output: {directory: "res/run 1", times: [2], profiles: no}
   CHECK(c.source == "<string>");
   CHECK(c.case_name == "poiseuille");
   CHECK(c.fluid.density == 998.2);
-  CHECK(c.fluid.kinematic_viscosity == 0.0);
+  CHECK(c.fluid.kinematic_viscosity == 1e-6);
   CHECK(c.fluid.eos.sound_speed == 3.0);
   CHECK(c.fluid.body_force == std::vector<double>{2e-4, -1.0});
   CHECK(c.geometry.channel_height == 2.0);
@@ -147,7 +147,7 @@ output: {directory: "res/run 1", times: [2], profiles: no}
   CHECK(c.time.atol == 1e-14);
   CHECK(c.time.cfl.acoustic == 1.0);
   CHECK(c.time.cfl.force == 0.5);
-  CHECK(c.time.cfl.viscous == 2.0);
+  CHECK(c.time.cfl.viscous == 0.1);
   REQUIRE(c.time.dt.has_value());
   CHECK(*c.time.dt == 1e-4);
   CHECK(c.time.max_steps == 10'000'000);

@@ -16,7 +16,7 @@ using sphmol::CouetteSeries;
 using sphmol::PoiseuilleSeries;
 
 namespace {
-// Seed 002 section 4: l = 1e-3 m, nu = 1e-6 m^2/s, F = 2e-4 m/s^2, v0 = 2.5e-5 m/s.
+// Vukčević et al. 2012, section 4: l = 1e-3 m, nu = 1e-6 m^2/s, F = 2e-4 m/s^2, v0 = 2.5e-5 m/s.
 const CouetteSeries couette{1e-3, 1e-6, 2.5e-5};
 const PoiseuilleSeries poiseuille{1e-3, 1e-6, 2e-4};
 constexpr double accuracy = 1e-14;  // relative to v0 resp. peak velocity

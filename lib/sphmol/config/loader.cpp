@@ -10,6 +10,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/io/input_file.hpp"
 #include "sphmol/config/erk_tables.hpp"
+#include "sphmol/config/scene_checks.hpp"
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/kernels/registry.hpp"
 
@@ -321,7 +322,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (shock && c.dimension == 1 && d.boundary != "wall_particles")
       disc.fail("boundary", "the 1D shock tube has no side walls; '" + d.boundary + "' needs dimension 2");
-    if (shock) d.wall_slip = "free_slip";  // the tube's walls are free-slip (seed 003 §3.2); an inviscid gas
+    if (shock) d.wall_slip = "free_slip";  // the tube's walls are free-slip (Niedoba 2012, §3.2); an inviscid gas
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
@@ -332,11 +333,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         disc.fail("wall_pressure", "applies to boundary: wall_particles only");
     }
     if (disc.has("repulsive") && d.boundary != "virtual_repulsive")
-      disc.fail("repulsive", "parameters of seed 003 eq 2.76 apply to boundary: virtual_repulsive only");
+      disc.fail("repulsive", "parameters of Niedoba 2012, eq 2.76 apply to boundary: virtual_repulsive only");
     if (d.boundary == "virtual_repulsive") {
       MapReader rep = disc.section("repulsive", {"strength", "p1", "p2", "r0"});
       auto& r = d.repulsive;
-      r.strength = rep.required(rep.real("strength"), "strength", "D of seed 003 eq 2.76 in m^2/s^2, > 0");
+      r.strength = rep.required(rep.real("strength"), "strength", "D of Niedoba 2012, eq 2.76 in m^2/s^2, > 0");
       check(rep, "strength", r.strength > 0, r.strength, "> 0 m^2/s^2");
       if (const auto v = rep.real("p1")) r.p1 = *v;
       if (const auto v = rep.real("p2")) r.p2 = *v;
@@ -439,12 +440,18 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = time.real("atol")) t.atol = *v;
     check(time, "atol", t.atol > 0, t.atol, "> 0");
     MapReader cfl = time.section("cfl", {"acoustic", "force", "viscous"});
+    // Stability ranges of the explicit schemes (config/README.md, "CFL coefficients"): a larger
+    // coefficient lets the integrator take steps past the limit of its own stability region.
     if (const auto v = cfl.real("acoustic")) t.cfl.acoustic = *v;
-    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic, "(0, 1]");
+    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic,
+          "(0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4)");
     if (const auto v = cfl.real("force")) t.cfl.force = *v;
-    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force, "(0, 1]");
+    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force,
+          "(0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25)");
     if (const auto v = cfl.real("viscous")) t.cfl.viscous = *v;
-    check(cfl, "viscous", t.cfl.viscous > 0, t.cfl.viscous, "> 0");
+    check(cfl, "viscous", t.cfl.viscous > 0 && t.cfl.viscous <= 0.125, t.cfl.viscous,
+          "(0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; "
+          "the leapfrog Couette flow diverges at 0.15");
     if (const auto v = time.real("dt")) {
       check(time, "dt", *v > 0, *v, "> 0 s");
       if (t.integrator == "cvode_adams")
@@ -502,6 +509,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
+  SectionReaders readers{top, fluid, geo, disc, time, out};
+  check_scene(c, readers);
   return c;
 }
 

@@ -1,14 +1,21 @@
 #pragma once
 // Blow-up detection after every accepted step: NaN/Inf in the state, a fluid particle outside the
 // domain in a non-periodic direction, density <= 0 in the latest RHS evaluation, or the CFL step
-// collapsing below kCollapse times its initial value. Throws BlowUp naming the time, the particle
-// and the cause; keeps a copy of the last state that passed, for the run to write.
+// collapsing below kCollapse times its initial value; then the physical bounds of the scene
+// (run/health_limits.hpp): a speed above the scene's velocity scale or the sound speed, a density
+// outside the EOS's weakly compressible range, kinetic energy beyond what the scene puts in. Throws
+// BlowUp naming the time, the particle and the cause; keeps a copy of the last state that passed,
+// for the run to write.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/health_limits.hpp"
+#include "sphmol/physics/body_force.hpp"
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/particle_split.hpp"
 
@@ -19,11 +26,13 @@ class HealthCheck {
  public:
   static constexpr double kCollapse = 1e-6;
 
-  HealthCheck(const SphSystem<D>& sys, const double* y0, double t0)
-      : sys_(sys), last_good_(y0, y0 + sys.size()), last_good_t_(t0), initial_cfl_(sys.stable_step()) {}
+  HealthCheck(const SphSystem<D>& sys, const double* y0, double t0, HealthLimits limits = {})
+      : sys_(sys), last_good_(y0, y0 + sys.size()), last_good_t_(t0), initial_cfl_(sys.stable_step()),
+        limits_(std::move(limits)), power_t_(t0), power_(body_force_power(y0, t0)) {}
 
   void operator()(double t, const double* y, double /*h*/) {
     if (!healthy(y)) report(t, y);
+    physical(t, y);
     const double cfl = sys_.stable_step();
     if (std::isfinite(initial_cfl_) && !(cfl >= kCollapse * initial_cfl_))
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial_cfl_) + " s to " +
@@ -38,8 +47,86 @@ class HealthCheck {
 
   const std::vector<double>& last_good_state() const { return last_good_; }
   double last_good_time() const { return last_good_t_; }
+  // Work done on the fluid by the body force since t0 (trapezoidal rule over the accepted steps).
+  double body_force_work() const { return work_; }
 
  private:
+  double body_force_power(const double* y, double t) const {
+    const auto& L = sys_.layout();
+    const auto& m = sys_.particles().mass;
+    const double f = body_force_ramp_factor(t, limits_.g_ramp);
+    double p = 0.0;
+    for (int d = 0; d < D; ++d) {
+      if (limits_.g[d] == 0.0) continue;
+      const double* v = y + L.velocity(d);
+      double s = 0.0;  // serial: a sum must not depend on the thread count
+      for (std::size_t i = 0; i < L.n; ++i) s += m[i] * v[i];
+      p += f * limits_.g[d] * s;
+    }
+    return p;
+  }
+
+  // The scene's physical bounds (run/health_limits.hpp), after the state is known to be finite.
+  void physical(double t, const double* y) {
+    const auto& L = sys_.layout();
+    const auto& m = sys_.particles().mass;
+    const long n = static_cast<long>(L.n);
+    // Serial: the kinetic energy (and so the message) must not depend on the thread count.
+    double vmax2 = 0.0, ke = 0.0;
+    for (long i = 0; i < n; ++i) {
+      double v2 = 0.0;
+      for (int d = 0; d < D; ++d) v2 += y[L.velocity(d) + i] * y[L.velocity(d) + i];
+      vmax2 = std::max(vmax2, v2);
+      ke += 0.5 * m[i] * v2;
+    }
+    if (vmax2 > limits_.max_speed * limits_.max_speed)
+      for (long i = 0; i < n; ++i) {
+        double v2 = 0.0;
+        for (int d = 0; d < D; ++d) v2 += y[L.velocity(d) + i] * y[L.velocity(d) + i];
+        if (v2 > limits_.max_speed * limits_.max_speed)
+          throw BlowUp(t, i, "speed " + shown(std::sqrt(v2)) + " m/s above " + shown(limits_.max_speed) + " m/s, " +
+                                 limits_.speed_reason);
+      }
+    if (limits_.rho0 > 0.0) {
+      const auto& rho = sys_.workspace_density();
+      const long nrho = std::min(n, static_cast<long>(rho.size()));
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+#pragma omp parallel for reduction(min : lo) reduction(max : hi) schedule(static)
+      for (long i = 0; i < nrho; ++i) {
+        lo = std::min(lo, rho[i]);
+        hi = std::max(hi, rho[i]);
+      }
+      const double r0 = limits_.rho0;
+      if (hi / r0 - 1.0 > limits_.max_compression || 1.0 - lo / r0 > limits_.max_expansion) {
+        const auto& rs = sys_.density();  // state order, to name the particle
+        for (std::size_t i = 0; i < L.n && i < rs.size(); ++i)
+          if (rs[i] / r0 - 1.0 > limits_.max_compression || 1.0 - rs[i] / r0 > limits_.max_expansion)
+            throw BlowUp(t, static_cast<long>(i), "density ratio rho/rho0 = " + shown(rs[i] / r0) +
+                                                      " outside the weakly compressible range " + limits_.density_reason);
+      }
+    }
+    const double p = body_force_power(y, t);
+    work_ += 0.5 * (p + power_) * (t - power_t_);
+    power_ = p;
+    power_t_ = t;
+    if (limits_.energy) {
+      const double budget = limits_.energy_budget + std::max(0.0, work_);
+      const double allowed = (1.0 + HealthLimits::kEnergySlack) * budget + limits_.energy_floor;
+      // Energies of a D-dimensional model: per unit depth in 2D, per unit area in 1D.
+      const char* unit = D == 3 ? " J" : D == 2 ? " J/m" : " J/m^2";
+      if (ke > allowed)
+        throw BlowUp(t, -1, "kinetic energy " + shown(ke) + unit + " exceeds what the scene puts in (" + shown(budget) + unit +
+                                ": initial kinetic and internal energy, body-force work, moving-wall bound M V^2/2; "
+                                "allowed " + shown(allowed) + unit + ")");
+    }
+  }
+
+  static std::string shown(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+  }
+
   // The per-particle tests of report() as one parallel pass (run after every step); report() then
   // finds the first failure in its order, so the message does not depend on the thread count.
   bool healthy(const double* y) const {
@@ -98,6 +185,8 @@ class HealthCheck {
   std::vector<double> last_good_;
   double last_good_t_;
   double initial_cfl_;
+  HealthLimits limits_;
+  double power_t_, power_, work_ = 0.0;
 };
 
 }  // namespace sphmol

@@ -1,5 +1,5 @@
 #pragma once
-// Couette and Poiseuille start-up flows (seed 002 §4): the channel scene, the series reference and
+// Couette and Poiseuille start-up flows (Vukčević et al. 2012, §4): the channel scene, the series reference and
 // the e_rms / e_max error of u / v0 over fluid particles, with a profile CSV per output time.
 #include "sphmol/run/case.hpp"
 #include "sphmol/scenes/channel_reference.hpp"
@@ -22,6 +22,7 @@ class ChannelCase final : public Case<2> {
   bool profiles_ = true;
   int wall_layers_ = 0;
   double spacing_ = 0.0;
+  double height_ = 0.0;  // channel height l: fluid particles outside [0, l] are inside a wall
 };
 
 }  // namespace sphmol

@@ -123,7 +123,7 @@ void DamBreakCase::annotate(nlohmann::json& summary) const {
                     "and Oka (1996) scaled to a (x_mm, x_ko; nan outside their time range)"},
       {"front_martin_moyce_1952.csv", "Martin and Moyce (1952, n^2 = 2) surge front scaled to a and g of this run"},
       {"front_koshizuka_oka_1996.csv", "Koshizuka and Oka (1996) surge front scaled to a and g of this run"}};
-  // The anchor counts all particles (fluid and wall) per step.
+  // Per particle-step with all particles (fluid and wall), as DualSPHysics reports its cost.
   const long steps = summary.value("steps", 0L);
   const double wall = summary.value("wall_seconds", 0.0);
   if (steps > 0)

@@ -60,7 +60,7 @@ nlohmann::json HydrostaticCase::measure(const SphSystem<2>& sys, const double* y
           {"max_drift", *drift_ / spacing_}};
 }
 
-// Worst over the settled output times (the issue asks that errors stay bounded, not only end small).
+// Worst over the settled output times: the errors must stay bounded, not only end small.
 nlohmann::json HydrostaticCase::final_errors(const nlohmann::json& errors) const {
   double prms = 0.0, pmax = 0.0;
   int settled = 0;

@@ -4,7 +4,7 @@
 // sides), the particle masses carry the density jump: m = rho dx^D with the left or right density.
 // y walls follow discretization.boundary (2D only):
 //   ghost: free-slip mirror walls at y = 0 and y = W (Niedoba 2012, §3.2-3.3, eqs 2.77-2.78; `walls`);
-//   virtual_repulsive: fixed virtual particles on y = -dx and y = W + dx at spacing dx/2 (003 §3.3,
+//   virtual_repulsive: fixed virtual particles on y = -dx and y = W + dx at spacing dx/2 (Niedoba 2012, §3.3,
 //     Fig 3.3) with the repulsive force of eq 2.76 and, as in the textbook code, mass rho dx^2;
 //   wall_particles: y periodic, physically the same as free-slip walls for this 1D problem (no flow
 //     across y, no y-gradients), without any wall error.

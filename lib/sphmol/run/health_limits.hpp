@@ -1,0 +1,117 @@
+#pragma once
+// Physical bounds for the per-step health check (run/health_check.hpp), derived from the scene so
+// that an unstable run ends as a blow-up instead of completing with a wrong answer:
+//  - speed: |v| <= kSpeedFactor U, with U the scene's velocity scale (wall or lid speed, Taylor-Green
+//    amplitude, Poiseuille centre-line speed F l^2 / (8 nu), free-fall speed sqrt(2 g H) of a column),
+//    and |v| < c (Mach 1) in a weakly compressible fluid, whose EOS models a liquid at Mach << 1;
+//  - density: |rho/rho0 - 1| <= max(kDensityFloor, kDensityFactor delta), delta = (U/c)^2 the expected
+//    compressibility (Monaghan 1994: delta rho / rho ~ M^2). Only compression is bounded where a free
+//    surface is (summation density is short of rho0 there, and a splash is free to expand);
+//  - kinetic energy: with no energy input the fluid cannot gain kinetic energy. The inputs are the
+//    initial kinetic energy, the internal energy (energy equation), the work of the body force
+//    (accumulated per step from sum_i m_i g(t) . v_i) and moving walls, whose speed V bounds the
+//    fluid's by the maximum principle (KE <= M V^2 / 2). KE(t) may exceed this budget by
+//    kEnergySlack of it plus kEnergyFloor M U^2 / 2 (the elastic energy of the initial state and
+//    the time discretisation of the work integral).
+// Ideal-gas scenes (shock tubes) skip the speed and density bounds: supersonic flow and 4:1
+// compression are the physics there.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/rhs/sph_system.hpp"
+
+namespace sphmol {
+
+struct HealthLimits {
+  static constexpr double kSpeedFactor = 10.0;
+  static constexpr double kDensityFactor = 10.0;
+  static constexpr double kDensityFloor = 0.2;
+  static constexpr double kEnergySlack = 0.1;
+  static constexpr double kEnergyFloor = 1e-3;
+
+  double max_speed = std::numeric_limits<double>::infinity();  // |v| above this is a blow-up
+  std::string speed_reason;                                     // what max_speed is, for the message
+  double rho0 = 0.0;                                            // 0: no density bound
+  double max_compression = std::numeric_limits<double>::infinity();  // on rho/rho0 - 1
+  double max_expansion = std::numeric_limits<double>::infinity();    // on 1 - rho/rho0
+  std::string density_reason;
+  bool energy = false;          // bound the kinetic energy
+  double energy_budget = 0.0;   // initial kinetic + internal energy and the moving-wall bound [J (per unit depth)]
+  double energy_floor = 0.0;    // absolute slack [J]
+  std::array<double, 3> g{};    // body force per unit mass, for its work
+  double g_ramp = 0.0;
+};
+
+// The scene's velocity scale U [m/s] (0 for the shock tube, whose speeds are not bounded).
+inline double scene_velocity_scale(const Config& c) {
+  const double g = [&] {
+    double s = 0.0;
+    for (double x : c.fluid.body_force) s += x * x;
+    return std::sqrt(s);
+  }();
+  if (c.case_name == "couette" || c.case_name == "cavity") return std::abs(c.geometry.wall_velocity);
+  if (c.case_name == "taylor_green") return c.geometry.velocity_amplitude;
+  if (c.case_name == "poiseuille") {
+    const double l = c.geometry.channel_height, nu = c.fluid.kinematic_viscosity;
+    return nu > 0.0 ? g * l * l / (8.0 * nu) : 0.0;
+  }
+  if (c.case_name == "hydrostatic" && c.geometry.box.size() == 2) return std::sqrt(2.0 * g * c.geometry.box[1]);
+  if (c.case_name == "dam_break" && c.geometry.column.size() == 2) return std::sqrt(2.0 * g * c.geometry.column[1]);
+  return 0.0;
+}
+
+template <int D>
+HealthLimits health_limits(const Config& c, const SphSystem<D>& sys, const double* y0) {
+  HealthLimits lim;
+  const auto& L = sys.layout();
+  const auto& m = sys.particles().mass;
+  double mass = 0.0, ke0 = 0.0, e0 = 0.0, v0max = 0.0;
+  for (std::size_t i = 0; i < L.n; ++i) {
+    double v2 = 0.0;
+    for (int d = 0; d < D; ++d) v2 += y0[L.velocity(d) + i] * y0[L.velocity(d) + i];
+    mass += m[i];
+    ke0 += 0.5 * m[i] * v2;
+    v0max = std::max(v0max, std::sqrt(v2));
+    if (L.has_energy) e0 += m[i] * y0[L.energy() + i];
+  }
+  const bool ideal_gas = c.fluid.eos.type == "ideal_gas";
+  const double U = std::max(scene_velocity_scale(c), v0max);
+  const double V_wall = std::abs(c.geometry.wall_velocity);
+  if (!ideal_gas && U > 0.0) {
+    const double cs = c.fluid.eos.sound_speed;
+    char buf[160];
+    if (HealthLimits::kSpeedFactor * U < cs) {
+      lim.max_speed = HealthLimits::kSpeedFactor * U;
+      std::snprintf(buf, sizeof buf, "%g times the scene's velocity scale U = %g m/s", HealthLimits::kSpeedFactor, U);
+    } else {
+      lim.max_speed = cs;
+      std::snprintf(buf, sizeof buf, "the sound speed c = %g m/s (Mach 1; the weakly compressible EOS needs Mach << 1)", cs);
+    }
+    lim.speed_reason = buf;
+    const double delta = (U / cs) * (U / cs);
+    const double bound = std::max(HealthLimits::kDensityFloor, HealthLimits::kDensityFactor * delta);
+    lim.rho0 = c.fluid.density;
+    lim.max_compression = bound;
+    const bool free_surface = c.case_name == "hydrostatic" || c.case_name == "dam_break";
+    const bool short_support = c.discretization.density != "continuity" && c.discretization.boundary == "virtual_repulsive";
+    if (!free_surface && !short_support) lim.max_expansion = bound;
+    std::snprintf(buf, sizeof buf, "|rho/rho0 - 1| <= %g (max(%g, %g (U/c)^2), U = %g m/s, c = %g m/s)", bound,
+                  HealthLimits::kDensityFloor, HealthLimits::kDensityFactor, U, cs);
+    lim.density_reason = buf;
+  }
+  lim.energy = true;
+  lim.energy_budget = ke0 + e0 + 0.5 * mass * V_wall * V_wall;
+  // Zero-budget scenes: measured against the scene's velocity scale, or the sound speed without one.
+  const double scale = U > 0.0 ? U : (ideal_gas ? 0.0 : 0.01 * c.fluid.eos.sound_speed);
+  lim.energy_floor = HealthLimits::kEnergyFloor * 0.5 * mass * scale * scale;
+  for (int d = 0; d < D && d < static_cast<int>(c.fluid.body_force.size()); ++d) lim.g[d] = c.fluid.body_force[d];
+  lim.g_ramp = c.fluid.body_force_ramp;
+  return lim;
+}
+
+}  // namespace sphmol
