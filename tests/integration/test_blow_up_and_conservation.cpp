@@ -126,7 +126,7 @@ TEST_CASE("input errors found by the scene or the size estimate are exit 2 with 
   }
 }
 
-TEST_CASE("--threads above the core count warns in one line", "[integration][health]") {
+TEST_CASE("threads: --threads above the core count warns in one line", "[integration][health]") {
   const std::string dir = "reports/health_threads";
   const std::string threads = std::to_string(std::thread::hardware_concurrency() + 1);
   const auto r = sph_mol(dir, {"--threads", threads, "--config", couette, "--set", "discretization.particles_across=20", "--set",

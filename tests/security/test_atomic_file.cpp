@@ -13,23 +13,11 @@
 
 #include "sphmol/io/atomic_file.hpp"
 
+#include "support/files.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sphmol-sec-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::size_t entries(const fs::path& dir) {
   std::size_t n = 0;
@@ -40,31 +28,31 @@ std::size_t entries(const fs::path& dir) {
 }  // namespace
 
 TEST_CASE("atomic write: a link planted at the old predictable temporary name is not followed", "[security][io]") {
-  const fs::path dir = fresh_dir("tmp-link");
+  const fs::path dir = test_support::fresh_dir("tmp-link");
   const fs::path victim = dir / "victim.txt";
   { std::ofstream(victim) << "precious"; }
   fs::create_symlink(victim, dir / "summary.json.tmp");
   sphmol::write_file_atomically((dir / "summary.json").string(), "{}\n");
-  CHECK(slurp(victim) == "precious");
-  CHECK(slurp(dir / "summary.json") == "{}\n");
+  CHECK(test_support::slurp(victim) == "precious");
+  CHECK(test_support::slurp(dir / "summary.json") == "{}\n");
   CHECK(fs::is_symlink(dir / "summary.json.tmp"));  // left as it was: not ours
   fs::remove_all(dir);
 }
 
 TEST_CASE("atomic write: a link at the final name is replaced, its target untouched", "[security][io]") {
-  const fs::path dir = fresh_dir("final-link");
+  const fs::path dir = test_support::fresh_dir("final-link");
   const fs::path victim = dir / "victim.txt";
   { std::ofstream(victim) << "precious"; }
   fs::create_symlink(victim, dir / "summary.json");
   sphmol::write_file_atomically((dir / "summary.json").string(), "new");
-  CHECK(slurp(victim) == "precious");
+  CHECK(test_support::slurp(victim) == "precious");
   CHECK(!fs::is_symlink(dir / "summary.json"));
-  CHECK(slurp(dir / "summary.json") == "new");
+  CHECK(test_support::slurp(dir / "summary.json") == "new");
   fs::remove_all(dir);
 }
 
 TEST_CASE("atomic write: a file size limit leaves the old file and no temporary", "[security][io]") {
-  const fs::path dir = fresh_dir("fsize");
+  const fs::path dir = test_support::fresh_dir("fsize");
   const fs::path target = dir / "big.csv";
   { std::ofstream(target) << "old"; }
   // In a child, so the limit and the ignored signal do not reach the test process.
@@ -85,13 +73,13 @@ TEST_CASE("atomic write: a file size limit leaves the old file and no temporary"
   ::waitpid(pid, &status, 0);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);
-  CHECK(slurp(target) == "old");
+  CHECK(test_support::slurp(target) == "old");
   CHECK(entries(dir) == 1);  // no temporary left behind
   fs::remove_all(dir);
 }
 
 TEST_CASE("atomic write: a missing directory is an error naming the file", "[security][io]") {
-  const fs::path dir = fresh_dir("missing");
+  const fs::path dir = test_support::fresh_dir("missing");
   try {
     sphmol::write_file_atomically((dir / "no" / "such" / "file.txt").string(), "x");
     FAIL("no error");

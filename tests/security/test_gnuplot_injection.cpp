@@ -13,18 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "support/files.hpp"
 #include "support/process.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sphmol-sec-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
 
 // Every path under `root` whose name starts with "pwned": the marker a command injection would create.
 std::vector<std::string> markers(const fs::path& root) {
@@ -77,7 +71,7 @@ bool have_gnuplot() {
 }  // namespace
 
 TEST_CASE("gnuplot: hostile --output names run no command and keep the files inside the folder", "[security][gnuplot]") {
-  const fs::path base = fresh_dir("gnuplot-injection");
+  const fs::path base = test_support::fresh_dir("gnuplot-injection");
   for (const auto& cmd : commands()) {
     for (std::size_t k = 0; k < kHostileNames.size(); ++k) {
       const std::string& name = kHostileNames[k];
@@ -108,7 +102,7 @@ TEST_CASE("gnuplot: hostile --output names run no command and keep the files ins
 }
 
 TEST_CASE("gnuplot: a file planted in the output folder under a profile name never enters a plot script", "[security][gnuplot]") {
-  const fs::path base = fresh_dir("gnuplot-planted");
+  const fs::path base = test_support::fresh_dir("gnuplot-planted");
   const fs::path out = base / "out";
   fs::create_directories(out);
   // Matches the profile_t*.csv pattern the Couette plot reads, with a pipe that a quoted name would open.

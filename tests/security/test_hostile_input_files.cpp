@@ -14,17 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "support/files.hpp"
 #include "support/process.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-fs::path scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sphmol-sec-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
 
 // Killed after 60 s: reading /dev/zero or a FIFO must not hang the test.
 test_support::ProcessResult sph_mol(const std::vector<std::string>& args, const fs::path& err) {
@@ -35,7 +30,7 @@ test_support::ProcessResult sph_mol(const std::vector<std::string>& args, const 
 }  // namespace
 
 TEST_CASE("config files that never end or are huge are refused before reading (exit 2)", "[security][input]") {
-  const fs::path dir = scratch("config-files");
+  const fs::path dir = test_support::fresh_dir("config-files");
   // 3 GiB, sparse (no disk used): larger than the 16 MiB limit.
   const fs::path huge = dir / "huge.yaml";
   std::ofstream(huge) << "case: couette\n";
@@ -62,7 +57,7 @@ TEST_CASE("config files that never end or are huge are refused before reading (e
 }
 
 TEST_CASE("a checkpoint.json that is /dev/zero or deeply nested is refused (exit 2)", "[security][input]") {
-  const fs::path dir = scratch("checkpoint-files");
+  const fs::path dir = test_support::fresh_dir("checkpoint-files");
   const std::string couette = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
   REQUIRE(sph_mol({"--config", couette, "--set", "discretization.particles_across=20", "--set", "output.plots=false", "-q",
                    "--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.05", "--output", (dir / "run").string()},
@@ -99,7 +94,7 @@ TEST_CASE("a checkpoint.json that is /dev/zero or deeply nested is refused (exit
 TEST_CASE("running out of memory is a message and exit 1, not an abort", "[security][input]") {
   // A config under the size limit whose parse needs more memory than the address-space limit allows
   // (a 15 MiB list: about a million YAML nodes).
-  const fs::path dir = scratch("out-of-memory");
+  const fs::path dir = test_support::fresh_dir("out-of-memory");
   const fs::path cfg = dir / "big.yaml";
   {
     std::ofstream out(cfg);

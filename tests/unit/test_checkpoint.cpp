@@ -15,17 +15,12 @@
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/run/checkpoint.hpp"
 
+#include "support/files.hpp"
+
 using namespace sphmol;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sphmol-unit-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return fs::canonical(p);
-}
 
 Checkpoint sample(double t) {
   Checkpoint cp;
@@ -59,7 +54,7 @@ std::string error_of(const fs::path& checkpoint_dir) {
 }  // namespace
 
 TEST_CASE("checkpoint pruning keeps the last two this run wrote, not the two latest times", "[checkpoint]") {
-  const fs::path dir = fresh_dir("prune");
+  const fs::path dir = test_support::fresh_dir("prune");
   // An earlier run left checkpoints at later times.
   std::vector<std::string> other;
   write_checkpoint(dir.string(), sample(0.075), "case: couette\n", other);
@@ -87,7 +82,7 @@ TEST_CASE("checkpoint pruning keeps the last two this run wrote, not the two lat
 }
 
 TEST_CASE("checkpoint pruning continues over a restart into the same directory only", "[checkpoint]") {
-  const fs::path dir = fresh_dir("prune-restart");
+  const fs::path dir = test_support::fresh_dir("prune-restart");
   std::vector<std::string> written;
   write_checkpoint(dir.string(), sample(0.025), "case: couette\n", written);
   write_checkpoint(dir.string(), sample(0.05), "case: couette\n", written);
@@ -102,7 +97,7 @@ TEST_CASE("checkpoint pruning continues over a restart into the same directory o
   CHECK(fs::exists(dir / "checkpoint-0.075"));
 
   // Into another directory: the first directory is never touched.
-  const fs::path dir2 = fresh_dir("prune-restart-2");
+  const fs::path dir2 = test_support::fresh_dir("prune-restart-2");
   std::vector<std::string> elsewhere = read_checkpoint((dir / "checkpoint-0.075").string()).written;
   for (double t : {0.1, 0.125, 0.15}) write_checkpoint(dir2.string(), sample(t), "case: couette\n", elsewhere);
   CHECK(fs::exists(dir / "checkpoint-0.05"));
@@ -113,7 +108,7 @@ TEST_CASE("checkpoint pruning continues over a restart into the same directory o
 }
 
 TEST_CASE("checkpoint written again at the same time replaces the old one and counts once", "[checkpoint]") {
-  const fs::path dir = fresh_dir("same-time");
+  const fs::path dir = test_support::fresh_dir("same-time");
   std::vector<std::string> written;
   write_checkpoint(dir.string(), sample(0.025), "a\n", written);
   write_checkpoint(dir.string(), sample(0.05), "a\n", written);
@@ -124,7 +119,7 @@ TEST_CASE("checkpoint written again at the same time replaces the old one and co
 }
 
 TEST_CASE("read_checkpoint refuses values a restart cannot continue from, naming file and field", "[checkpoint]") {
-  const fs::path dir = fresh_dir("read-bad");
+  const fs::path dir = test_support::fresh_dir("read-bad");
   std::vector<std::string> written;
   const fs::path cp = write_checkpoint(dir.string(), sample(0.05), "case: couette\n", written);
   const nlohmann::json good = json_of(cp);
@@ -166,7 +161,7 @@ TEST_CASE("read_checkpoint refuses values a restart cannot continue from, naming
 }
 
 TEST_CASE("read_checkpoint refuses deeply nested JSON without exhausting the stack", "[checkpoint]") {
-  const fs::path dir = fresh_dir("read-deep");
+  const fs::path dir = test_support::fresh_dir("read-deep");
   std::vector<std::string> written;
   const fs::path cp = write_checkpoint(dir.string(), sample(0.05), "case: couette\n", written);
   std::string text = json_of(cp).dump();
@@ -180,7 +175,7 @@ TEST_CASE("read_checkpoint refuses deeply nested JSON without exhausting the sta
 }
 
 TEST_CASE("read_checkpoint refuses a checkpoint.json that is not a regular file", "[checkpoint]") {
-  const fs::path dir = fresh_dir("read-fifo");
+  const fs::path dir = test_support::fresh_dir("read-fifo");
   fs::create_directories(dir / "checkpoint-1");
   fs::create_symlink("/dev/zero", dir / "checkpoint-1" / "checkpoint.json");
   CHECK_THAT(error_of(dir / "checkpoint-1"), Catch::Matchers::Contains("not a regular file"));

@@ -14,24 +14,12 @@
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/studies/gnuplot_chart.hpp"
 
+#include "support/files.hpp"
+
 namespace fs = std::filesystem;
 using namespace sphmol;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sphmol-unit-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A stand-in for gnuplot: a /bin/sh script (the test's own text) made executable.
 std::string fake_gnuplot(const fs::path& dir, const std::string& body) {
@@ -94,14 +82,14 @@ TEST_CASE("gnuplot scripts of the studies and the cases hold only relative, gene
 }
 
 TEST_CASE("gnuplot driver: the PNG appears under its final name only when gnuplot succeeded", "[gnuplot]") {
-  const fs::path dir = fresh_dir("gnuplot-ok");
+  const fs::path dir = test_support::fresh_dir("gnuplot-ok");
   const std::string ok = fake_gnuplot(dir, kFindOutput + "\n" + kPng + "\necho drawn >&2");
   const GnuplotOutcome r = run_gnuplot(ok, dir.string(), "plot_x.gp", kScript, "x.png");
   INFO(r.problem);
   CHECK(r.ok);
-  CHECK(slurp(dir / "x.png").substr(1, 3) == "PNG");
-  CHECK(slurp(dir / "plot_x.gp") == kScript);  // kept, naming the final PNG
-  CHECK(slurp(dir / "plot_x.gnuplot.log") == "drawn\n");
+  CHECK(test_support::slurp(dir / "x.png").substr(1, 3) == "PNG");
+  CHECK(test_support::slurp(dir / "plot_x.gp") == kScript);  // kept, naming the final PNG
+  CHECK(test_support::slurp(dir / "plot_x.gnuplot.log") == "drawn\n");
   CHECK(hidden_files(dir).empty());
 
   // gnuplot fails: no PNG (the earlier one is removed: it would show other data), no temporaries.
@@ -110,7 +98,7 @@ TEST_CASE("gnuplot driver: the PNG appears under its final name only when gnuplo
   CHECK_FALSE(f.ok);
   CHECK(f.problem.find("exit status 1") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "x.png"));
-  CHECK(slurp(dir / "plot_x.gnuplot.log") == "broken\n");
+  CHECK(test_support::slurp(dir / "plot_x.gnuplot.log") == "broken\n");
   CHECK(hidden_files(dir).empty());
 
   // gnuplot exits 0 but the PNG is truncated (a full disk): not renamed to x.png.
@@ -125,12 +113,12 @@ TEST_CASE("gnuplot driver: the PNG appears under its final name only when gnuplo
 }
 
 TEST_CASE("gnuplot driver: gnuplot runs in the output directory and is stopped when interrupted", "[gnuplot]") {
-  const fs::path dir = fresh_dir("gnuplot-cwd dir;'x'");
+  const fs::path dir = test_support::fresh_dir("gnuplot-cwd dir;'x'");
   // The working directory is the output directory, and the script is named relative to it.
   const std::string where = fake_gnuplot(dir, "pwd > where.txt; printf '%s' \"$1\" > arg.txt; exit 1");
   run_gnuplot(where, dir.string(), "plot_x.gp", kScript, "x.png");
-  CHECK(fs::equivalent(slurp(dir / "where.txt").substr(0, slurp(dir / "where.txt").size() - 1), dir));
-  CHECK(slurp(dir / "arg.txt").find('/') == std::string::npos);
+  CHECK(fs::equivalent(test_support::slurp(dir / "where.txt").substr(0, test_support::slurp(dir / "where.txt").size() - 1), dir));
+  CHECK(test_support::slurp(dir / "arg.txt").find('/') == std::string::npos);
 
   const std::string slow = fake_gnuplot(dir, "exec sleep 20");
   const auto t0 = std::chrono::steady_clock::now();
@@ -145,7 +133,7 @@ TEST_CASE("gnuplot driver: gnuplot runs in the output directory and is stopped w
 }
 
 TEST_CASE("gnuplot is looked up on absolute PATH entries only", "[gnuplot]") {
-  const fs::path dir = fresh_dir("gnuplot-path");
+  const fs::path dir = test_support::fresh_dir("gnuplot-path");
   fake_gnuplot(dir, "exit 0");
   fs::rename(dir / "fake-gnuplot", dir / "gnuplot");
   const std::string old = std::getenv("PATH") ? std::getenv("PATH") : "";

@@ -57,6 +57,11 @@ class Case {
   }
   // The final_errors key that studies (compare, converge, stability) use as "the error".
   virtual std::string primary_error() const { return "e_rms"; }
+  // The scene's velocity scale U [m/s] that the health check bounds speeds and densities by (0: none,
+  // e.g. a shock tube, whose supersonic speeds are the physics), and whether the fluid has a free
+  // surface (its density may then fall below rho0 freely). Read after build().
+  virtual double velocity_scale(const Config& config) const { return 0.0; }
+  virtual bool free_surface() const { return false; }
   // Anything else the case adds to the summary (reference parameters, wave positions, ...).
   virtual void annotate(nlohmann::json& summary) const {}
   // Plots made after the run (run/plots.hpp): gnuplot scripts, each writing one PNG in the output

@@ -110,14 +110,20 @@ class HealthCheck {
     power_ = p;
     power_t_ = t;
     if (limits_.energy) {
+      double el = 0.0;  // serial, as the kinetic energy
+      if (limits_.elastic.kind != HealthLimits::Elastic::Kind::none) {
+        const auto& rho = sys_.density();  // state order, as the masses
+        for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el += m[i] * limits_.elastic.per_mass(rho[i]);
+      }
       const double budget = limits_.energy_budget + std::max(0.0, work_);
       const double allowed = (1.0 + HealthLimits::kEnergySlack) * budget + limits_.energy_floor;
       // Energies of a D-dimensional model: per unit depth in 2D, per unit area in 1D.
       const char* unit = D == 3 ? " J" : D == 2 ? " J/m" : " J/m^2";
-      if (ke > allowed)
-        throw BlowUp(t, -1, "kinetic energy " + shown(ke) + unit + " exceeds what the scene puts in (" + shown(budget) + unit +
-                                ": initial kinetic and internal energy, body-force work, moving-wall bound M V^2/2; "
-                                "allowed " + shown(allowed) + unit + ")");
+      if (ke + el > allowed)
+        throw BlowUp(t, -1, "kinetic energy " + shown(ke) + unit + " plus elastic energy " + shown(el) + unit +
+                                " exceeds what the scene puts in (" + shown(budget) + unit +
+                                ": initial kinetic, elastic and internal energy, body-force work, moving-wall bound "
+                                "M V^2/2; allowed " + shown(allowed) + unit + ")");
     }
   }
 

@@ -70,7 +70,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   integrator->initialize(*sys, t, y.data());
   // Blow-up detection after every accepted step (run/health_check.hpp), and conservation diagnostics.
-  HealthCheck<D> health(*sys, y.data(), t, health_limits<D>(config, *sys, y.data()));
+  HealthCheck<D> health(*sys, y.data(), t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
   integrator->set_step_hook([&health](double tt, const double* yy, double hh) { health(tt, yy, hh); });
   ConservationLog<D> conservation;
   conservation.record(*sys, y.data(), t);

@@ -80,4 +80,12 @@ std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
   return {{"profiles.png", s.str()}};
 }
 
+double ChannelCase::velocity_scale(const Config& config) const {
+  if (config.case_name == "couette") return std::abs(config.geometry.wall_velocity);
+  double g = 0.0;
+  for (double x : config.fluid.body_force) g += x * x;
+  const double l = config.geometry.channel_height, nu = config.fluid.kinematic_viscosity;
+  return nu > 0.0 ? std::sqrt(g) * l * l / (8.0 * nu) : 0.0;
+}
+
 }  // namespace sphmol

@@ -10,6 +10,8 @@ class ChannelCase final : public Case<2> {
  public:
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override { return ref_.name; }
+  // Couette: the plate speed; Poiseuille: the centre-line speed F l^2 / (8 nu) of the steady profile.
+  double velocity_scale(const Config& config) const override;
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
   // profiles.png: SPH velocity (points) and the exact series (lines) across the channel at every

@@ -12,6 +12,7 @@
 //               wall_penetration_monitor.hpp), min_wall_gap the closest approach to a wall surface [dx].
 // A front at the right wall (x_front >= Lx - dx) is "impacted": later times are not compared with the
 // free-surge references. Writes front.csv (all output times so far) and the reference points.
+#include <cmath>
 #include <memory>
 
 #include "sphmol/analysis/wall_penetration_monitor.hpp"
@@ -25,6 +26,9 @@ class DamBreakCase final : public Case<2> {
   std::string reference() const override {
     return "surge front vs Ritter 2 sqrt(gH) t (upper bound), Martin & Moyce 1952, Koshizuka & Oka 1996";
   }
+  // The free-fall speed sqrt(2 g H) of the column.
+  double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * H_); }
+  bool free_surface() const override { return true; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "front_rms_martin_moyce"; }

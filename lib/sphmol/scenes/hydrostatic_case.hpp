@@ -7,6 +7,7 @@
 // max_drift = largest displacement of any fluid particle from its start, over every RHS evaluation of
 // the whole run (analysis/drift_monitor.hpp), in particle spacings.
 // p_i is the pressure of the RHS evaluation that ended the last step (within one step of t).
+#include <cmath>
 #include <memory>
 
 #include "sphmol/run/case.hpp"
@@ -17,6 +18,9 @@ class HydrostaticCase final : public Case<2> {
  public:
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override { return "hydrostatic p = rho0 g (depth - y)"; }
+  // The free-fall speed sqrt(2 g H) of the column.
+  double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * depth_); }
+  bool free_surface() const override { return true; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "p_rms"; }

@@ -16,6 +16,7 @@ class TaylorGreenCase final : public Case<2> {
  public:
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override { return "taylor_green_vortex (exact)"; }
+  double velocity_scale(const Config& config) const override { return config.geometry.velocity_amplitude; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "L1_velocity"; }
