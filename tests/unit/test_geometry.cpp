@@ -198,3 +198,29 @@ time: {t_end: 0.1, integrator: leapfrog}
     }
   }
 }
+
+TEST_CASE("geometry: triangle mesh (CGAL) read from an ASCII STL, triangles in any orientation", "[geometry][cgal]") {
+  // The cube [0, 2]^3 as 12 triangles, half of them listed clockwise: the reader orients the soup.
+  const auto path = std::filesystem::temp_directory_path() / ("sphmol-geom-" + std::to_string(::getpid()) + "-cube.stl");
+  {
+    const double v[8][3] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 2}, {2, 0, 2}, {2, 2, 2}, {0, 2, 2}};
+    const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+    std::ofstream f(path);
+    f << "solid cube\n";
+    for (int q = 0; q < 6; ++q)
+      for (const auto& tri : {std::array<int, 3>{quads[q][0], quads[q][1], quads[q][2]},
+                              q % 2 ? std::array<int, 3>{quads[q][0], quads[q][3], quads[q][2]}  // reversed
+                                    : std::array<int, 3>{quads[q][0], quads[q][2], quads[q][3]}}) {
+        f << "facet normal 0 0 0\n outer loop\n";
+        for (int k : tri) f << "  vertex " << v[k][0] << ' ' << v[k][1] << ' ' << v[k][2] << '\n';
+        f << " endloop\nendfacet\n";
+      }
+    f << "endsolid cube\n";
+  }
+  const TriangleMeshShape mesh(path.string());
+  CHECK(mesh.triangles() == 12u);
+  const BoxShape<3> box({0, 0, 0}, {2, 2, 2});
+  for (const Vec<3> p : {Vec<3>{1, 1, 1}, Vec<3>{0.3, 1.9, 1.2}, Vec<3>{2.5, 1, 1}, Vec<3>{-1, -1, -1}})
+    CHECK(mesh.signed_distance(p) == Approx(box.signed_distance(p)).margin(1e-12));
+  std::filesystem::remove(path);
+}

@@ -52,7 +52,7 @@ TEST_CASE("Ghia 1982: Re 100 centre lines with no-slip and lid values", "[refere
 TEST_CASE("Ghia 1982: other Reynolds numbers and missing columns", "[reference][ghia]") {
   const auto t400 = load_ghia(path_u, path_v, 400.0);
   REQUIRE(t400);
-  CHECK(t400->v[11] == -0.23827);  // x = 0.9063, kept as printed (see /work/shared/reference/README.md)
+  CHECK(t400->v[11] == -0.23827);  // x = 0.9063, kept as printed (see verification/README.md)
   const auto t1000 = load_ghia(path_u, path_v, 1000.0 * (1.0 + 5e-10));
   REQUIRE(t1000);
   CHECK(t1000->u[1] == -0.18109);
