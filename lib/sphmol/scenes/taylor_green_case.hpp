@@ -4,7 +4,9 @@
 // (c^2 rho0)), so that summation density gives rho ~ rho0 + p/c^2 and the gauge EOS p = c^2 (rho - rho0)
 // returns the exact pressure (up to kernel smoothing). Errors, normalised by the exact amplitude U e^{bt}:
 //   L1_velocity = mean_i |v_i - v_exact(x_i, t)| / (U e^{bt}),  maxv_rel_error = |max_i |v_i| - U e^{bt}| / (U e^{bt}),
-// and decay_rate = least-squares slope of ln max_i |v_i| over the output times, against b = -8 pi^2 nu / L^2.
+// mode_amplitude_rel_error of the vortex mode's amplitude (the mass-weighted projection of the velocities on
+// the mode shape), and decay_rate = least-squares slope of ln(mode amplitude) over the output times, against
+// b = -8 pi^2 nu / L^2 (decay_rate_maxv: the same fit of ln max_i |v_i|).
 #include <vector>
 
 #include "sphmol/reference/taylor_green.hpp"
@@ -27,7 +29,7 @@ class TaylorGreenCase final : public Case<2> {
  private:
   TaylorGreenVortex ref_;
   double L_ = 1.0, spacing_ = 0.0;
-  std::vector<double> t_, ln_vmax_, vmax_;
+  std::vector<double> t_, vmax_, mode_;
 };
 
 }  // namespace sphmol
