@@ -48,8 +48,12 @@ TEST_CASE("hydrostatic: pressure and drift stay bounded (coarse, 4 s)", "[integr
   const auto& f = s["final_errors"];
   INFO(f.dump());
   CHECK(f["settled_outputs"].get<int>() == 3);
-  CHECK(f["p_rms"].get<double>() < 0.1);
-  CHECK(f["max_drift"].get<double>() < 2.0);
+  // Measured with the shipped settings at 20 across: p_rms 0.0073, p_max 0.025, max_drift 0.31. Checked
+  // by hand: walls at rest pressure (p_rms 0.51), the cubic spline at h = 1.3 dx with summation density
+  // (0.037) and the wall extrapolation with gravity reversed all fail these bounds.
+  CHECK(f["p_rms"].get<double>() < 0.012);
+  CHECK(f["p_max"].get<double>() < 0.04);
+  CHECK(f["max_drift"].get<double>() < 0.5);
 }
 
 TEST_CASE("cavity: steady centre lines near Ghia et al. (20 x 20, t = 16 s)", "[integration][cavity]") {
