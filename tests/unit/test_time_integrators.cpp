@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "config_test_base.hpp"
+#include "sphmol/config/erk_tables.hpp"
 #include "sphmol/time/arkode_erk.hpp"
+#include <arkode/arkode_butcher_erk.h>
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/cvode_adams.hpp"
 #include "sphmol/time/leapfrog.hpp"
@@ -149,4 +151,60 @@ TEST_CASE("cvode_adams steps one internal step at a time toward the stop time, w
   CHECK(ya[0] == yb[0]);  // bit for bit
   CHECK(ya[1] == yb[1]);
   CHECK(B.step_toward(3.0) == 3.0);  // already there: no step
+}
+
+namespace {
+// y' = lambda y: a Runge-Kutta step multiplies y by the stability function R(h lambda) = 1 + z b^T (I - z A)^-1 1.
+struct Decay final : OdeSystem {
+  double lambda = -1.0;
+  std::size_t size() const override { return 1; }
+  void rhs(double, const double* y, double* f) override { f[0] = lambda * y[0]; }
+  double stable_step() const override { return 1.0; }
+  std::size_t velocities_begin() const override { return 0; }
+  std::size_t velocities_end() const override { return 1; }
+  long rhs_evaluations() const override { return 0; }
+};
+
+double stability_function(const std::string& table, double z) {
+  ARKodeButcherTable B = ARKodeButcherTable_LoadERKByName(table.c_str());
+  const int s = B->stages;
+  std::vector<double> k(s);  // explicit: stage i from stages < i
+  double r = 1.0;
+  for (int i = 0; i < s; ++i) {
+    double yi = 1.0;
+    for (int j = 0; j < i; ++j) yi += z * B->A[i][j] * k[j];
+    k[i] = yi;  // f = lambda y, scaled by 1/lambda (z = h lambda)
+    r += z * B->b[i] * k[i];
+  }
+  ARKodeButcherTable_Free(B);
+  return r;
+}
+}  // namespace
+
+TEST_CASE("ARKODE ERK: every table's fixed steps on y' = -y multiply y by the table's stability function", "[time][erk_tables]") {
+  // ERKStep reuses the last stage of a step as the next step's first whenever c_s = 1; for tables that
+  // are not first-same-as-last (Verner 8(5)6, Heun-Euler, the ARK explicit tables) that stage is f at a
+  // wrong state, which made Verner 8(5)6 grow by 1.27 per step at h = 0.5.
+  for (const std::string& table : erk_table_names()) {
+    for (double h : {0.1, 0.5, 1.0}) {
+      Decay sys;
+      std::vector<double> y{1.0};
+      ArkodeErk I({table, 1e-6, 1e-12, h, 1'000'000});
+      I.initialize(sys, 0.0, y.data());
+      I.advance(4 * h);
+      const double expected = std::pow(stability_function(table, -h), 4);
+      INFO(table << " h = " << h << ": y = " << y[0] << ", R(-h)^4 = " << expected);
+      CHECK(y[0] == Approx(expected).epsilon(1e-12));
+    }
+  }
+}
+
+TEST_CASE("ARKODE ERK: Verner 8(5)6 is sixth order at fixed steps on the damped oscillator", "[time][erk_tables]") {
+  std::vector<double> e;
+  for (double dt : {0.1, 0.05}) {
+    ArkodeErk I({"ARKODE_VERNER_8_5_6", 1e-6, 1e-12, dt, 1'000'000});
+    e.push_back(final_error(I, 2.0));
+  }
+  INFO("errors " << e[0] << " " << e[1]);
+  CHECK(std::log2(e[0] / e[1]) > 5.5);
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/erk_table.hpp"
 
 namespace sphmol {
 
@@ -70,8 +71,12 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   mem_ = ERKStepCreate(&ArkodeErk::rhs_callback, t0, y_, ctx_);
   if (!mem_) throw std::runtime_error("ERKStepCreate failed");
   check(ERKStepSetUserData(mem_, this), "SetUserData");
-  if (ERKStepSetTableName(mem_, opt_.table.c_str()) < 0)
-    throw std::runtime_error("ARKODE: unknown or non-explicit Butcher table '" + opt_.table + "'");
+  // The table with a true last stage where ERKStep would reuse a wrong one (time/erk_table.hpp).
+  ARKodeButcherTable table = load_erk_table(opt_.table);
+  if (!table) throw std::runtime_error("ARKODE: unknown or non-explicit Butcher table '" + opt_.table + "'");
+  const int set = ERKStepSetTable(mem_, table);  // ERKStep keeps a copy
+  ARKodeButcherTable_Free(table);
+  check(set, "SetTable");
   check(ERKStepSetMaxNumSteps(mem_, opt_.max_steps), "SetMaxNumSteps");
   if (opt_.fixed_step) {
     check(ERKStepSetFixedStep(mem_, *opt_.fixed_step), "SetFixedStep");
