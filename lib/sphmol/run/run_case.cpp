@@ -175,7 +175,6 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()}, {"last_good_t", health.last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
     if (out.enabled) {
-      if (!folder) folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
       write_last_good_state<D>(*sys, health.last_good_state().data(), out.path("last_good_state.csv"));
       out.record("last_good_state.csv");
       blow_up["state_file"] = "last_good_state.csv";
@@ -297,7 +296,9 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const auto home = std::filesystem::weakly_canonical(std::filesystem::path(options.restart_from).lexically_normal().parent_path());
     opt.continuing = here == home;
   }
-  std::optional<OutputFolder> folder;  // locked from the first file written until the summary is
+  // Claimed by run_with before its first step (so before any file is written) and held until the
+  // summary is written.
+  std::optional<OutputFolder> folder;
   const CaseFactory& f = it->second;
   nlohmann::json summary;
   switch (config.dimension) {
@@ -310,7 +311,6 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   summary["version"] = version();
   summary["git_commit"] = git_commit();
   if (out.enabled) {
-    if (!folder) folder.emplace(out.directory, OutputFolder::Options{opt.overwrite, opt.continuing});
     out.write("config.yaml", to_yaml(resolved));
     out.record("summary.json");
     summary["output_directory"] = out.directory;
