@@ -4,6 +4,7 @@
 // with a ConfigError naming the key, the file and the line. Every field here is used by the
 // solver: nothing is parsed and then ignored.
 #include <array>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,14 @@ namespace sphmol {
 
 struct ConfigError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A case's own settings: the sections its module reads (cases/case_module.hpp), kept by Config and
+// written back by to_yaml. Each case module derives its own.
+struct CaseSettings {
+  virtual ~CaseSettings() = default;
+  // The sections as resolved YAML, top-level keys at column 0, every default filled in.
+  virtual std::string to_yaml() const = 0;
 };
 
 struct EosConfig {

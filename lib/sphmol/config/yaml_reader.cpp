@@ -222,6 +222,39 @@ MapReader MapReader::section(const std::string& key, std::vector<std::string> ke
   return MapReader(*origin_, e->value, key_path(key), e->mark, std::move(keys));
 }
 
+std::vector<MapReader> MapReader::section_list(const std::string& key, std::vector<std::string> keys) {
+  const Entry* e = find(key);
+  std::vector<MapReader> out;
+  if (!e) return out;
+  if (!e->value.IsSequence()) wrong_type(key, e->value, "a list of maps (one '- ' entry per item)");
+  for (std::size_t i = 0; i < e->value.size(); ++i) {
+    const YAML::Node item = e->value[i];
+    const YAML::Mark m = item.Mark().line >= 0 ? item.Mark() : e->mark;
+    if (!item.IsMap()) fail_element(key, i, "expected a map of keys (" + join(keys) + "), got " + describe(item));
+    out.emplace_back(*origin_, item, key_path(key) + "[" + std::to_string(i) + "]", m, keys);
+  }
+  return out;
+}
+
+MapReader MapReader::with_keys(std::vector<std::string> keys) const {
+  MapReader r(*origin_, YAML::Node(), path_, mark_, std::move(keys));
+  for (const auto& [name, entry] : entries_) {
+    if (std::find(r.keys_.begin(), r.keys_.end(), name) == r.keys_.end()) {
+      const std::string near = closest_match(name, r.keys_);
+      throw ConfigError(origin_->locate(key_path(name), entry.mark) + ": " + key_path(name) + ": unknown key (" +
+                        (near.empty() ? "" : "did you mean '" + near + "'? ") + "allowed here: " + join(r.keys_) + ")");
+    }
+    r.entries_.emplace(name, entry);
+  }
+  return r;
+}
+
+std::vector<std::string> MapReader::keys_present() const {
+  std::vector<std::string> out;
+  for (const auto& [name, entry] : entries_) out.push_back(name);
+  return out;
+}
+
 std::string MapReader::choice(const std::string& key, const std::string& value,
                               const std::vector<std::string>& allowed) const {
   if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return value;

@@ -55,6 +55,14 @@ class MapReader {
   std::optional<std::string> string(const std::string& key);
   std::optional<std::vector<double>> reals(const std::string& key);  // list of finite numbers
   MapReader section(const std::string& key, std::vector<std::string> keys);
+  // A list of maps under `key` (e.g. the bodies of a scene), each read with `keys`; element i has the
+  // path "key[i]". Absent: empty. Not a list of maps: an error at the key.
+  std::vector<MapReader> section_list(const std::string& key, std::vector<std::string> keys);
+  // This same map read again with a narrower key list, for maps whose keys depend on one of their
+  // values (read `type` with the union of every type's keys, then narrow to that type's keys).
+  MapReader with_keys(std::vector<std::string> keys) const;
+  // The keys this map holds, in name order.
+  std::vector<std::string> keys_present() const;
 
   // The value, or a "required value missing" error located at this section.
   template <class T>

@@ -1,0 +1,72 @@
+#pragma once
+// A case module: one folder under cases/ that owns everything about one kind of run: its config
+// sections (read, checked against the shared settings, written back by to_yaml), its scene builder,
+// its reference check and its plots. The loader reads the shared sections (dimension, fluid,
+// discretization, time, output) and hands the top-level keys the module names to the module; the
+// run loop and the studies reach the case only through Case<D> (run/case.hpp) and this record.
+// Adding a case: a folder cases/<name>/ with a function returning its CaseModule, and one line in
+// cases/registry.cpp.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/config/scene_checks.hpp"
+#include "sphmol/config/yaml_reader.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+// The shared sections, already read, for the module to read its own keys from (`top`) and to
+// report a conflict with a shared key at that key's line.
+struct CaseReaders {
+  MapReader& top;
+  MapReader& fluid;
+  MapReader& discretization;
+  MapReader& time;
+  MapReader& output;
+};
+
+struct CaseModule {
+  std::string name;
+  std::string description;             // one line: the flow and its reference
+  std::vector<int> dimensions;         // the dimensions the case is built in
+  std::vector<std::string> sections;   // top-level keys the case owns (e.g. "geometry")
+  bool uses_fluid_density = true;      // false: the case's own states give the densities
+  bool provides_energy = false;        // the scene sets an initial internal energy (discretization.energy)
+  bool position_noise = false;         // the scene applies discretization.position_noise
+
+  // Case-specific defaults of shared keys, applied before the shared sections are read. May be empty.
+  std::function<void(Config&)> defaults;
+  // Reads the case's own sections from r.top and checks them, and the shared settings the case
+  // depends on, failing through the readers (key and line). Returns the settings Config keeps.
+  std::function<std::shared_ptr<const CaseSettings>(CaseReaders& r, const Config& c)> read;
+  // The scene's particle counts, spacing and periodic lengths, as the builder will compute them,
+  // checking that lengths are whole numbers of the spacing (errors through the readers).
+  std::function<SceneSize(CaseReaders& r, const Config& c)> size;
+  // Scales every sound speed of the scene by `factor` (stability maps) and returns the sound speed
+  // to report. Empty: fluid.eos.sound_speed is scaled.
+  std::function<double(Config& c, double factor)> scale_sound_speed;
+
+  // The case in each dimension it supports (empty in the others).
+  std::function<std::unique_ptr<Case<1>>()> make1;
+  std::function<std::unique_ptr<Case<2>>()> make2;
+  std::function<std::unique_ptr<Case<3>>()> make3;
+
+  bool supports(int dimension) const {
+    for (int d : dimensions)
+      if (d == dimension) return true;
+    return false;
+  }
+  std::string dimensions_text() const;  // "2", "1 or 2", "2 or 3"
+};
+
+// Every registered case, in registration order (cases/registry.cpp).
+const std::vector<CaseModule>& case_modules();
+// The case named `name`, or nullptr.
+const CaseModule* find_case_module(const std::string& name);
+// The names of every registered case, for messages and documentation checks.
+std::vector<std::string> case_names();
+
+}  // namespace sphmol
