@@ -27,6 +27,9 @@ struct Particles {
   // 1 for a wall that stays at x_ref while carrying the velocity v (a belt, such as the lid of a
   // driven cavity: its surface moves, its particles must not leave the box). 0 otherwise.
   std::vector<std::uint8_t> stationary;
+  // The solid body a wall particle belongs to (an index into the scene's list of wall bodies, for
+  // force probes and per-body motion); -1 for fluid particles and for walls of no named body.
+  std::vector<std::int32_t> body;
 
   std::size_t size() const { return mass.size(); }
   // Where wall particle i is at time t: the one rule the solver and every writer share.
@@ -43,6 +46,7 @@ struct Particles {
     }
     wall_depth.push_back(depth);
     stationary.push_back(0);
+    body.push_back(-1);
     mass.push_back(m);
     rho.push_back(density);
     kind.push_back(k);

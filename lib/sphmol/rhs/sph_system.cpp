@@ -319,6 +319,7 @@ void SphSystem<D>::reorder_workspace() {
   std::vector<double> td;
   std::vector<std::uint32_t> tu;
   std::vector<std::uint8_t> tb;
+  std::vector<std::int32_t> ti;
   std::vector<Kind> tk;
   auto both = [&](auto& v, auto& tmp) {
     permute_range(v, fluid, 0, tmp);
@@ -337,6 +338,7 @@ void SphSystem<D>::reorder_workspace() {
   if (!h_ref_.empty()) both(h_ref_, td);
   if (!rho_ref_.empty()) both(rho_ref_, td);
   both(wp_.stationary, tb);
+  both(wp_.body, ti);
   both(wp_.kind, tk);
   both(perm_, tu);
   for (std::size_t i = 0; i < nb; ++i) inv_[perm_[i]] = static_cast<std::uint32_t>(i);
