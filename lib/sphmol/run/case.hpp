@@ -57,6 +57,11 @@ class Case {
   }
   // The final_errors key that studies (compare, converge, stability) use as "the error".
   virtual std::string primary_error() const { return "e_rms"; }
+  // Whether primary_error() is an error against an exact reference (true), or a quantity of the
+  // flow (a probe value, a conserved quantity) that the studies compare with a finer run: against a
+  // reference run at a small step (compare, converge --refine time) or the next finer spacing
+  // (converge --refine space).
+  virtual bool has_exact_reference() const { return true; }
   // The scene's velocity scale U [m/s] that the health check bounds speeds and densities by (0: none,
   // e.g. a shock tube, whose supersonic speeds are the physics), and whether the fluid has a free
   // surface (its density may then fall below rho0 freely). Read after build().

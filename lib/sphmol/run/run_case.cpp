@@ -221,6 +221,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["errors"] = errors;
   j["final_errors"] = c.final_errors(errors);
   j["primary_error"] = c.primary_error();
+  j["primary_error_kind"] = c.has_exact_reference() ? "exact_reference" : "quantity";
   j["conservation"] = conservation.to_json(*sys);
   j["reference"] = c.reference();
   j["discretization"] = {{"kernel", std::string(sys->kernel_name())},

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -85,18 +86,30 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   // The header follows the runs: the error units depend on the case's error measure.
   std::vector<double> ref_state;
   nlohmann::json reference = nullptr;
-  if (opt.reference_dt) {
+  // A case without an exact reference (a user scene) has a quantity as its primary error: every run
+  // is measured against a reference run, at a quarter of the CFL step at t = 0 unless given.
+  const bool exact = case_has_exact_reference(base);
+  std::optional<double> reference_dt = opt.reference_dt;
+  if (!exact && !reference_dt) {
+    reference_dt = 0.25 * initial_stable_step(base);
+    if (opt.log)
+      *opt.log << "compare: case '" << base.case_name << "' has no exact reference; its runs are measured against a reference run "
+               << "at dt = " << fmt(*reference_dt) << " s (a quarter of the CFL step at t = 0; --reference-dt sets it)\n";
+  }
+  double ref_value = 0.0;
+  if (reference_dt) {
     Config rc = base;
     rc.time.integrator = "arkode_erk";
     rc.time.table = kReferenceTable;
-    rc.time.dt = *opt.reference_dt;
+    rc.time.dt = *reference_dt;
     const StudyRun ref = run_study_case(rc);
     if (ref.blown_up) throw std::runtime_error("compare: the reference run blew up: " + ref.summary["blow_up"].dump());
     ref_state = ref.final_state;
-    reference = {{"table", kReferenceTable}, {"dt", *opt.reference_dt}, {"wall_seconds", ref.summary["wall_seconds"]},
+    ref_value = ref.error;
+    reference = {{"table", kReferenceTable}, {"dt", *reference_dt}, {"wall_seconds", ref.summary["wall_seconds"]},
                  {"exact_error", ref.error}};
     if (opt.log)
-      *opt.log << "compare: reference " << kReferenceTable << " dt = " << fmt(*opt.reference_dt) << ": exact error "
+      *opt.log << "compare: reference " << kReferenceTable << " dt = " << fmt(*reference_dt) << ": exact error "
                << fmt(ref.error) << " (" << fmt(ref.summary["wall_seconds"].get<double>()) << " s)\n";
   }
   Chart chart{"error vs wall time: " + base.case_name, "wall time [s]", "", true, true, {}};
@@ -131,18 +144,21 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
       const auto& S = r.summary;
       const double wall = S["wall_seconds"].get<double>();
       const double inf = std::numeric_limits<double>::infinity();
-      const double error = !opt.reference_dt ? r.error
+      const double error = !reference_dt ? r.error
                            : r.blown_up    ? inf
                                            : relative_velocity_error(r.final_state, ref_state, base.dimension,
                                                                      S["particles"]["fluid"].get<std::size_t>());
-      exact_key = S.value("primary_error", "e_rms");
-      error_key = opt.reference_dt ? "relative velocity error vs reference run" : exact_key;
-      points.back().push_back({setting, wall, r.cpu_seconds, S["rhs_evals"].get<double>(), error, r.error});
+      if (exact) exact_key = S.value("primary_error", "e_rms");
+      error_key = reference_dt ? "relative velocity error vs reference run" : exact_key;
+      // Without an exact reference, the "exact" column is the quantity's difference from the reference run's.
+      const double exact_error = exact ? r.error : r.blown_up ? inf : relative_difference(r.error, ref_value);
+      if (!exact) exact_key = S.value("primary_error", "e_rms") + " relative to the reference run";
+      points.back().push_back({setting, wall, r.cpu_seconds, S["rhs_evals"].get<double>(), error, exact_error});
       csv << spec.label << ',' << setting << ',' << fmt(wall) << ',' << fmt(r.cpu_seconds) << ',' << S["rhs_evals"] << ','
-          << S["steps"] << ',' << fmt(error) << ',' << fmt(r.error) << ',' << S["status"].get<std::string>() << '\n';
+          << S["steps"] << ',' << fmt(error) << ',' << fmt(exact_error) << ',' << S["status"].get<std::string>() << '\n';
       const auto num = [&](double x) { return r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(x); };
       runs.push_back({{"integrator", spec.label}, {"setting", setting}, {"wall_seconds", wall}, {"cpu_seconds", r.cpu_seconds},
-                      {"rhs_evals", S["rhs_evals"]}, {"steps", S["steps"]}, {"error", num(error)}, {"exact_error", num(r.error)},
+                      {"rhs_evals", S["rhs_evals"]}, {"steps", S["steps"]}, {"error", num(error)}, {"exact_error", num(exact_error)},
                       {"status", S["status"]}});
       if (opt.log)
         *opt.log << "compare: " << spec.label << ' ' << setting << ": error " << fmt(error) << ", wall " << fmt(wall) << " s, CPU "
@@ -162,11 +178,11 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   const nlohmann::json fastest = fastest_at_targets(opt.integrators, points, false, error_key, opt.targets, opt.log);
   // With a reference run, the same summary for the exact-reference error (time + space error).
   const nlohmann::json fastest_exact =
-      opt.reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
+      reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
   write_file_atomically(opt.output_dir + "/comparison.csv",
                         "integrator,setting,wall_seconds [s],cpu_seconds [s],rhs_evals [-],steps [-],error [" +
-                            (opt.reference_dt ? std::string("-") : error_unit(exact_key)) + "],exact_error [" +
-                            error_unit(exact_key) + "],status\n" + csv.str());
+                            (reference_dt ? std::string("-") : error_unit(exact_key)) + "],exact_error [" +
+                            (exact ? error_unit(exact_key) : std::string("-")) + "],status\n" + csv.str());
   const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");
   // The same against CPU time: on a shared machine other jobs stretch the wall time.
   draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");

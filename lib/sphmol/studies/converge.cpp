@@ -111,11 +111,18 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
                               : nlohmann::json{{"level", k}, {"spacing", dx0 / std::pow(2.0, k)}});
   }
 
+  // A case without an exact reference (a user scene) has a quantity as its primary error: in space,
+  // each level is measured against one more level at half the finest spacing.
+  const bool quantity = !time && !case_has_exact_reference(base);
+  if (quantity && opt.log)
+    *opt.log << "converge: case '" << base.case_name << "' has no exact reference; each level's primary quantity is compared with a "
+             << "reference run at half the finest spacing\n";
   for (const auto& spec : specs) {
     if (time && spec.adaptive() && spec.integrator == "cvode_adams")
       throw std::invalid_argument("converge --refine time: cvode_adams has no fixed step");
     std::vector<double> errors, dts, walls;
-    for (int k = 0; k < opt.levels; ++k) {
+    const int runs = quantity ? opt.levels + 1 : opt.levels;
+    for (int k = 0; k < runs; ++k) {
       Config c = cfg;
       spec.apply(c.time);
       double xk;
@@ -151,7 +158,16 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
       errors.push_back(e);
       dts.push_back(xk);
       walls.push_back(r.summary["wall_seconds"].get<double>());
-      if (opt.log) *opt.log << "converge: " << spec.label << " level " << k << " (" << fmt(xk) << "): error " << fmt(e) << '\n';
+      if (opt.log)
+        *opt.log << "converge: " << spec.label << (k == opt.levels ? " reference level " : " level ") << k << " (" << fmt(xk)
+                 << "): " << (quantity ? series_error_key + " " : "error ") << fmt(e) << '\n';
+    }
+    if (quantity) {
+      const double ref = errors.back();
+      errors.pop_back();
+      dts.pop_back();
+      walls.pop_back();
+      for (double& e : errors) e = relative_difference(e, ref);
     }
     const auto orders = pairwise_orders(errors);
     const double slope = least_squares_order(errors);
@@ -167,16 +183,18 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
     if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
   }
-  if (!time) chart.ylabel = "final " + series_error_key;
+  if (!time) chart.ylabel = quantity ? "relative difference of " + series_error_key + " from the finest run" : "final " + series_error_key;
   write_file_atomically(opt.output_dir + "/convergence.csv",
                         std::string("refine,integrator,level [-],") + (time ? "dt [s]" : "dx [m]") + ",error [" +
-                            (time ? std::string("-") : error_unit(series_error_key)) +
+                            (time || quantity ? std::string("-") : error_unit(series_error_key)) +
                             "],observed_order [-],expected_order [-],wall_seconds [s]\n" + csv.str());
   const std::string problem = draw_chart(chart, opt.output_dir, "convergence");
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +
                                   std::string(kReferenceTable) + " at dt_finest/" + std::to_string(kReferenceRefinement)
-                            : "the case's primary final error " + series_error_key + " against its reference";
+                  : quantity ? "|q - q_ref| / |q_ref| of the case's primary quantity " + series_error_key +
+                                   ", q_ref from a run at half the finest spacing"
+                             : "the case's primary final error " + series_error_key + " against its reference";
   if (!problem.empty()) j["chart_problem"] = problem;
   write_file_atomically(opt.output_dir + "/convergence.json", j.dump(2) + "\n");
   return j;

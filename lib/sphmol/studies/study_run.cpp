@@ -76,6 +76,20 @@ double initial_stable_step(const Config& config) {
   }
 }
 
+bool case_has_exact_reference(const Config& config) {
+  switch (config.dimension) {
+    case 1: return make_case<1>(config)->has_exact_reference();
+    case 2: return make_case<2>(config)->has_exact_reference();
+    default: return make_case<3>(config)->has_exact_reference();
+  }
+}
+
+double relative_difference(double value, double reference) {
+  if (!std::isfinite(value)) return std::numeric_limits<double>::infinity();
+  const double d = std::abs(value - reference);
+  return reference != 0.0 ? d / std::abs(reference) : d;
+}
+
 double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n) {
   // The velocity blocks follow the D position blocks: y = [x_0..x_{D-1} | v_0..v_{D-1} | ...].
   if (y.size() != yref.size() || y.size() < 2 * dimension * n || n == 0) return std::numeric_limits<double>::infinity();

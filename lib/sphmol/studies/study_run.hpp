@@ -24,6 +24,14 @@ struct StudyRun {
 
 StudyRun run_study_case(const Config& config);
 
+// Whether the case's primary error is against an exact reference (Case::has_exact_reference); a case
+// without one has a quantity there, which the studies compare with a finer run.
+bool case_has_exact_reference(const Config& config);
+
+// |value - reference| / |reference| (|value - reference| when the reference is 0); +inf for a
+// non-finite value.
+double relative_difference(double value, double reference);
+
 // The case's CFL step at t = 0: the built system's stable_step after one RHS evaluation of the
 // initial state (time.cfl coefficients of the config). Throws like run_case on an unknown case.
 double initial_stable_step(const Config& config);
