@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/probes/probe_config.hpp"
+
 namespace sphmol {
 
 struct ConfigError : std::runtime_error {
@@ -147,6 +149,7 @@ struct OutputConfig {
   std::string directory = "out";
   std::vector<double> times;  // output times (> 0, increasing); t_end is always added, later
                               // times are dropped with a notice
+  std::optional<double> every;  // given instead of `times`: times = every, 2 every, ... and t_end
   bool profiles = true;       // write profile CSVs at output times
   bool vtk = false;           // VTK XML PolyData particle files (.vtp) at output times + a .pvd collection
   bool vtk_walls = true;      // include wall particles in the .vtp files
@@ -165,6 +168,7 @@ struct Config {
   TimeConfig time;
   OutputConfig output;
   ShockTubeConfig shock_tube;  // case shock_tube only
+  std::vector<ProbeConfig> probes;  // probes/probe_config.hpp
   // One-line remarks from loading that are not errors (e.g. output times past t_end dropped),
   // "LOCATION: key.path: text"; the caller prints them. Not part of to_yaml().
   std::vector<std::string> notices;

@@ -215,6 +215,18 @@ std::optional<std::vector<double>> MapReader::reals(const std::string& key) {
   return out;
 }
 
+std::optional<std::vector<std::string>> MapReader::strings(const std::string& key) {
+  const Entry* e = find(key);
+  if (!e) return std::nullopt;
+  if (!e->value.IsSequence()) wrong_type(key, e->value, "a list of names such as [p, rho]");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < e->value.size(); ++i) {
+    if (!e->value[i].IsScalar()) fail_element(key, i, "expected a name, got " + describe(e->value[i]));
+    out.push_back(e->value[i].Scalar());
+  }
+  return out;
+}
+
 MapReader MapReader::section(const std::string& key, std::vector<std::string> keys) {
   const Entry* e = find(key);
   // An absent section keeps this section's mark: "missing" errors point at the nearest parent.
