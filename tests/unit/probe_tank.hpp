@@ -25,7 +25,7 @@ inline Config tank_config() {
   auto& d = c.discretization;
   d.spacing = kDx;
   d.kernel = "wendland_c2";
-  d.smoothing_ratio = 1.0;  // support 2 h = 2 dx: within the kLayers wall layers
+  d.smoothing_ratio = 2.0;  // support 2 h = 4 dx: the kLayers wall layers fill it
   d.density = "continuity";
   d.viscosity = "morris";
   d.boundary = "wall_particles";

@@ -70,9 +70,9 @@ struct Fixture {
     auto pt = probe("p_mid", "point");
     pt.at = {0.5 * kW, 0.5 * kH};
     auto above = probe("above", "point");
-    above.at = {0.5 * kW, kH + 2.5 * kDx};
+    above.at = {0.5 * kW, kH + 4 * kDx};  // 4.5 dx above the top row: beyond the support 4 dx
     auto line = probe("depth_line", "line");
-    line.from = {0.5 * kW, 0.1};
+    line.from = {0.5 * kW, 0.2};  // the kernel (support 0.2 m) stays inside the water
     line.to = {0.5 * kW, 0.4};
     line.points = {4};
     line.fields = {"p"};
@@ -116,7 +116,7 @@ TEST_CASE("probe observer: CSV files of points, lines, gauges and forces", "[pro
   CHECK(line[0] == "t [s],x [m],y [m],p [Pa]");
   for (int k = 0; k < 4; ++k) {
     const auto r = cells(line[1 + k]);
-    const double yk = 0.1 + 0.1 * k;
+    const double yk = 0.2 + 0.2 / 3 * k;
     CHECK(std::stod(r[2]) == Approx(yk));
     CHECK(std::stod(r[3]) == Approx(kRho0 * kG * (kH - yk)).epsilon(2e-3));
   }
