@@ -1,6 +1,7 @@
 #pragma once
 // A 2D tank of water at hydrostatic density for the probe tests: fluid [0, W] x [0, H], walls
-// kLayers deep, the floor (and its corners) wall body 0, the left wall body 1, the right wall body 2.
+// kLayers deep: the floor is wall body 0, the left wall body 1, the right wall body 2, the corners
+// below the left and right walls bodies 3 and 4.
 #include <array>
 
 #include "sphmol/config/config.hpp"
@@ -10,9 +11,9 @@ namespace probe_tank {
 
 using namespace sphmol;
 
-constexpr double kRho0 = 1000.0, kG = 9.81, kC = 20.0;
-constexpr int kNx = 20, kNy = 12, kLayers = 4;
-constexpr double kDx = 0.05, kW = kNx * kDx, kH = kNy * kDx;
+constexpr double kRho0 = 1000.0, kG = 9.81, kC = 60.0;
+constexpr int kNx = 40, kNy = 24, kLayers = 4;
+constexpr double kDx = 0.025, kW = kNx * kDx, kH = kNy * kDx;
 
 inline Config tank_config() {
   Config c;
@@ -49,7 +50,8 @@ inline Particles<2> tank() {
     P.body.back() = body;
   };
   for (int k = 1; k <= kLayers; ++k)
-    for (int i = -kLayers; i < kNx + kLayers; ++i) wall((i + 0.5) * kDx, -(k - 0.5) * kDx, {0, 1}, (k - 0.5) * kDx, 0);
+    for (int i = -kLayers; i < kNx + kLayers; ++i)
+      wall((i + 0.5) * kDx, -(k - 0.5) * kDx, {0, 1}, (k - 0.5) * kDx, i < 0 ? 3 : i >= kNx ? 4 : 0);
   for (int k = 1; k <= kLayers; ++k)
     for (int j = 0; j < kNy + 4; ++j) {
       wall(-(k - 0.5) * kDx, (j + 0.5) * kDx, {1, 0}, (k - 0.5) * kDx, 1);

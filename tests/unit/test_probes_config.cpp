@@ -23,7 +23,7 @@ TEST_CASE("probes config: each type reads its keys", "[probes][config]") {
   const Config c = load_config_string(with_probes(R"(  - {name: p_front, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity, p]}
   - {name: u_line, type: line, from: [0, 1.0e-4], to: [5.0e-4, 1.0e-4], points: 11, every: 0.01}
   - {name: gauge-1, type: height_gauge, at: [2.5e-4], range: [0, 1.0e-3]}
-)"));
+)"), {}, "case.yaml");
   REQUIRE(c.probes.size() == 3);
   CHECK(c.probes[0].type == "point");
   CHECK(c.probes[0].at == std::vector<double>{2.0e-4, 5.0e-4});
@@ -37,7 +37,7 @@ TEST_CASE("probes config: each type reads its keys", "[probes][config]") {
   CHECK(c.probes[1].sample_points()[10][0] == Approx(5.0e-4));
   CHECK(c.probes[2].range == std::vector<double>{0, 1.0e-3});
   // Written back and read again: the same probes.
-  const Config again = load_config_string(to_yaml(c));
+  const Config again = load_config_string(to_yaml(c), {}, "case.yaml");
   CHECK(to_yaml(again) == to_yaml(c));
   REQUIRE(again.probes.size() == 3);
   CHECK(again.probes[0].fields == c.probes[0].fields);
