@@ -337,7 +337,11 @@ std::vector<PlotScript> ProbeObserver<D>::plots(const OutputSink&) const {
     }
     std::ostringstream g;
     g << std::setprecision(12);
-    g << gnuplot_csv_preamble("probe " + c.name + " (" + c.type + ") from " + file_name(c.name), 900, 640, 11, png);
+    // Stacked panels get their own height; names keep their underscores (no enhanced text).
+    const std::size_t panels = c.type == "point" ? cols.size() - 1 : c.type == "line" ? cols.size() - 1 - D : 1;
+    g << gnuplot_csv_preamble("probe " + c.name + " (" + c.type + ") from " + file_name(c.name), 900,
+                              static_cast<int>(std::max<std::size_t>(640, 300 * panels)), 11, png)
+      << "set termoption noenhanced\n";
     if (c.type == "point" || c.type == "height_gauge" || c.type == "force") {
       // Each column against t: one panel per quantity (p, rho and speeds differ by orders of magnitude).
       const std::size_t n = cols.size() - 1;
