@@ -119,3 +119,29 @@ TEST_CASE("probes: probes the scene cannot hold are config errors", "[probes][in
     CHECK(!fs::exists(dir / "far"));
   }
 }
+
+TEST_CASE("probes: a restart from a checkpoint continues each series", "[probes][integration][restart]") {
+  const fs::path dir = scratch("probes-restart");
+  const fs::path cfg = write_config(dir, R"(probes:
+  - {name: p_mid, type: point, at: [0.5, 0.45]}
+  - {name: gauge, type: height_gauge, at: [0.5], every: 0.5}
+)");
+  const auto whole = test_support::run_process(
+      SPHMOL_BINARY,
+      {"--config", cfg.string(), "--output", (dir / "whole").string(), "-q", "--set", "discretization.particles_across=20",
+       "--set", "time.t_end=2.0", "--set", "output.checkpoint_every=1.0"},
+      (dir / "whole.log").string());
+  INFO(whole.err);
+  REQUIRE(whole.code == 0);
+  // Into another folder: the rows before the checkpoint come from the checkpoint itself.
+  const auto again = test_support::run_process(
+      SPHMOL_BINARY, {"--restart", (dir / "whole" / "checkpoint-1").string(), "--output", (dir / "again").string(), "-q"},
+      (dir / "again.log").string());
+  INFO(again.err);
+  REQUIRE(again.code == 0);
+  for (const char* f : {"probe_p_mid.csv", "probe_gauge.csv"}) {
+    INFO(f);
+    CHECK(slurp(dir / "again" / f) == slurp(dir / "whole" / f));
+  }
+  CHECK(read_csv(dir / "again" / "probe_gauge.csv").size() == 6);
+}
