@@ -7,6 +7,8 @@
 
 #include "config_test_base.hpp"
 #include "sphmol/config/config.hpp"
+#include "sphmol/config/yaml_reader.hpp"
+#include "sphmol/probes/probe_config.hpp"
 
 using namespace sphmol;
 using config_test::base;
@@ -82,4 +84,35 @@ TEST_CASE("output.every: evenly spaced output times instead of a list", "[probes
   CHECK(error_of(config_test::with("  times: [0.1, 0.2]\n", "  times: [0.1, 0.2]\n  every: 0.1\n")) ==
         "case.yaml:18: output.every: give either output.times or output.every, not both");
   CHECK(error_of(config_test::with("  times: [0.1, 0.2]\n", "  every: 0\n")).rfind("case.yaml:17: output.every: 0 is out of range", 0) == 0);
+}
+
+TEST_CASE("probes config: a plane in 3D, its grid and its checks", "[probes][config]") {
+  const auto read = [](const std::string& yaml) {
+    const YAML::Node root = YAML::Load(yaml);
+    const YamlOrigin origin("case.yaml");
+    MapReader top(origin, root, "", root.Mark(), {"probes"});
+    Config c;
+    c.dimension = 3;
+    c.time.t_end = 1.0;
+    return read_probes(top, c, {});
+  };
+  const auto p = read("probes:\n  - {name: mid, type: plane, origin: [0, 0, 0.5], edge_1: [1, 0, 0], edge_2: [0, 2, 0], points: [3, 2]}\n");
+  REQUIRE(p.size() == 1);
+  const auto pts = p[0].sample_points();
+  REQUIRE(pts.size() == 6);
+  CHECK(pts[1] == std::vector<double>{0.5, 0, 0.5});  // edge_1 varies fastest
+  CHECK(pts[3] == std::vector<double>{0, 2, 0.5});
+  CHECK(pts[5] == std::vector<double>{1, 2, 0.5});
+  try {
+    (void)read("probes:\n  - {name: mid, type: plane, origin: [0, 0, 0], edge_1: [1, 0, 0], edge_2: [2, 0, 0], points: [3, 2]}\n");
+    FAIL("no error");
+  } catch (const ConfigError& e) {
+    CHECK(std::string(e.what()) == "case.yaml:2: probes[0].edge_2: is parallel to edge_1 (or one of them is zero): they must span a plane");
+  }
+  try {
+    (void)read("probes:\n  - {name: g, type: height_gauge, at: [0.1]}\n");
+    FAIL("no error");
+  } catch (const ConfigError& e) {
+    CHECK(std::string(e.what()) == "case.yaml:2: probes[0].at: expected 2 coordinates (x and y of the vertical line), got 1");
+  }
 }

@@ -195,3 +195,47 @@ TEST_CASE("probe observer: a probe outside the scene is a config error at its li
   f.c.probes[0].body_index = 5;  // no wall particle carries it
   CHECK_THROWS_AS(ProbeObserver<2>(f.c, *f.sys), ConfigError);
 }
+
+TEST_CASE("probe observer: a plane in 3D writes every grid point with its coordinates", "[probes][observer]") {
+  // A block of 8^3 fluid particles, no walls, at hydrostatic density in z.
+  Config c = tank_config();
+  c.dimension = 3;
+  c.fluid.body_force = {0.0, 0.0, -kG};
+  c.time.t_end = 1.0;
+  c.output.times = {1.0};
+  const int n = 8;
+  const double top = n * kDx;
+  Particles<3> P;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double z = (k + 0.5) * kDx;
+        const double rho = kRho0 + kRho0 * kG * (top - z) / (kC * kC);
+        P.add(Kind::Fluid, {(i + 0.5) * kDx, (j + 0.5) * kDx, z}, {0, 0, 0}, rho * kDx * kDx * kDx, rho);
+      }
+  Domain<3> dom;
+  dom.lo = {-1, -1, -1};
+  dom.hi = {2, 2, 2};
+  ProbeConfig plane = probe("mid", "plane");
+  plane.origin = {0.075, 0.075, 0.1};
+  plane.edge_1 = {0.05, 0, 0};
+  plane.edge_2 = {0, 0.05, 0};
+  plane.points = {3, 2};
+  plane.fields = {"p"};
+  c.probes = {plane};
+  auto sys = assemble_system<3>(c, std::move(P), dom, kDx);
+  std::vector<double> y = sys->initial_state(), scratch;
+  sys->refresh_fields(0.0, y.data(), scratch);
+  TempDir dir;
+  OutputSink out{dir.path.string(), true};
+  ProbeObserver<3> obs(c, *sys);
+  obs.at_output(*sys, y.data(), 0.0, out);
+  const auto rows = lines_of(dir.path / "probe_mid.csv");
+  REQUIRE(rows.size() == 7);
+  CHECK(rows[0] == "t [s],x [m],y [m],z [m],p [Pa]");
+  const auto second = cells(rows[2]);  // edge_1 fastest: (0.1, 0.075, 0.1)
+  CHECK(std::stod(second[1]) == Approx(0.1));
+  CHECK(std::stod(second[2]) == Approx(0.075));
+  // p is linear in z and the particles within the support (0.1 m) lie symmetrically about z = 0.1.
+  for (int r = 1; r <= 6; ++r) CHECK(std::stod(cells(rows[r])[4]) == Approx(kRho0 * kG * (top - 0.1)).epsilon(1e-6));
+}
