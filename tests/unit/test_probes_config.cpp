@@ -72,6 +72,12 @@ TEST_CASE("probes config: errors name the key and its line", "[probes][config]")
   CHECK(error_of(with_probes("  name: a\n")).rfind("case.yaml:18: probes: ", 0) == 0);  // not a list
 }
 
+TEST_CASE("probes config: a list given with --set is named in its errors", "[probes][config]") {
+  // The element paths (probes[0].at) belong to the override of the whole list.
+  CHECK(error_of(base, {"probes=[{name: a, type: point, at: [1]}]"}) ==
+        "--set probes=[{name: a, type: point, at: [1]}]: probes[0].at: expected 2 coordinates (the point's position in 2D), got 1");
+}
+
 TEST_CASE("output.every: evenly spaced output times instead of a list", "[probes][config]") {
   const std::string every = config_test::with("  times: [0.1, 0.2]\n", "  every: 0.1\n");
   const Config c = load_config_string(every);

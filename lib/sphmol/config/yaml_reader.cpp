@@ -70,8 +70,9 @@ std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) 
   const std::string* best = nullptr;
   std::size_t best_len = 0;
   for (const auto& [p, text] : overrides_) {
+    // "probes" owns "probes.x" and the list elements "probes[0].at".
     const bool covers = path == p || (path.size() > p.size() && path.compare(0, p.size(), p) == 0 &&
-                                      path[p.size()] == '.');
+                                      (path[p.size()] == '.' || path[p.size()] == '['));
     if (covers && p.size() >= best_len) best = &text, best_len = p.size();
   }
   if (best) return "--set " + *best;
