@@ -53,6 +53,10 @@ int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd) {
               << s["rhs_evals"] << ", neighbour rebuilds " << s["neighbor_rebuilds"] << ", wall time "
               << s["wall_seconds"].get<double>() << " s\n  final errors " << s["final_errors"].dump()
               << "\n  results in " << dir << "/summary.json\n";
+  } catch (const sphmol::ConfigError& e) {
+    // Config checks that need the built scene (a probe outside it): bad input, before any file.
+    std::cerr << "sph-mol: config error: " << e.what() << '\n';
+    return 2;
   } catch (const sphmol::CheckpointError& e) {
     std::cerr << "sph-mol: restart error: " << e.what() << '\n';
     return 2;

@@ -39,8 +39,9 @@ TEST_CASE("output: VTK collection and gnuplot profile plot", "[vtk][plots][integ
   REQUIRE(r.code == 0);
   const auto pvd = mini_xml::parse(slurp(dir / "a" / "particles.pvd"));
   const auto sets = pvd->child("Collection")->all("DataSet");
-  REQUIRE(sets.size() == 3);  // 0.0225, 0.045, 0.05: fluid only
-  CHECK(std::stod(sets[2]->attr.at("timestep")) == 0.05);
+  REQUIRE(sets.size() == 4);  // the initial state, 0.0225, 0.045, 0.05: fluid only
+  CHECK(std::stod(sets[0]->attr.at("timestep")) == 0.0);
+  CHECK(std::stod(sets[3]->attr.at("timestep")) == 0.05);
   for (const auto* s : sets) {
     CHECK(s->attr.at("part") == "0");
     CHECK(s->attr.at("name") == "fluid");
@@ -50,7 +51,7 @@ TEST_CASE("output: VTK collection and gnuplot profile plot", "[vtk][plots][integ
     CHECK(poly->child("Piece")->attr.at("NumberOfPoints") == "200");
     CHECK(vtp.of(vtk_appended::array_named(*poly->child("FieldData"), "TimeValue"))[0] == std::stod(s->attr.at("timestep")));
   }
-  CHECK(fs::exists(dir / "a" / "fluid_0002.vtp"));
+  CHECK(fs::exists(dir / "a" / "fluid_0003.vtp"));
   CHECK_FALSE(fs::exists(dir / "a" / "walls_0000.vtp"));
   const auto summary = json_file(dir / "a" / "summary.json");
   const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;

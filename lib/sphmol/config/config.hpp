@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/probes/probe_config.hpp"
+
 namespace sphmol {
 
 struct ConfigError : std::runtime_error {
@@ -22,6 +24,8 @@ struct CaseSettings {
   virtual ~CaseSettings() = default;
   // The sections as resolved YAML, top-level keys at column 0, every default filled in.
   virtual std::string to_yaml() const = 0;
+  // The names of the scene's wall bodies, in body-index order (Particles::body), for force probes.
+  virtual std::vector<std::string> wall_bodies() const { return {}; }
 };
 
 struct EosConfig {
@@ -127,6 +131,7 @@ struct OutputConfig {
   std::string directory = "out";
   std::vector<double> times;  // output times (> 0, increasing); t_end is always added, later
                               // times are dropped with a notice
+  std::optional<double> every;  // given instead of `times`: times = every, 2 every, ... and t_end
   bool profiles = true;       // write profile CSVs at output times
   bool vtk = false;           // VTK XML PolyData particle files (.vtp) at output times + a .pvd collection
   bool vtk_walls = true;      // include wall particles in the .vtp files
@@ -152,6 +157,7 @@ struct Config {
     if (!s) throw std::logic_error("config: case '" + case_name + "' has no settings of the requested type");
     return *s;
   }
+  std::vector<ProbeConfig> probes;  // probes/probe_config.hpp
   // One-line remarks from loading that are not errors (e.g. output times past t_end dropped),
   // "LOCATION: key.path: text"; the caller prints them. Not part of to_yaml().
   std::vector<std::string> notices;

@@ -2,6 +2,7 @@
 // here, read section by section with MapReader (yaml_reader.hpp), so each key's type, default,
 // range and message are in one place; config/README.md documents the same rules.
 #include <cerrno>
+#include <cmath>
 #include <charconv>
 #include <cstring>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/core/join.hpp"
 #include "sphmol/kernels/registry.hpp"
+#include "sphmol/probes/probe_config.hpp"
 
 namespace sphmol {
 
@@ -105,7 +107,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   if (root_mark.line < 0) root_mark = YAML::Mark();  // empty document: point at line 1
   // The shared sections, and every section some case module owns; once the case is known, only
   // its own sections are allowed.
-  const std::vector<std::string> shared = {"case", "dimension", "fluid", "discretization", "time", "output"};
+  const std::vector<std::string> shared = {"case", "dimension", "fluid", "discretization", "time", "output", "probes"};
   std::vector<std::string> all_keys = shared;
   for (const auto& m : case_modules())
     for (const auto& k : m.sections)
@@ -385,7 +387,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
 
   // output
   MapReader out = top.section("output", {"directory", "times", "profiles", "vtk", "vtk_walls", "vtk_ghosts", "plots",
-                                         "checkpoint_every"});
+                                         "checkpoint_every", "every"});
   {
     auto& o = c.output;
     if (const auto v = out.string("directory")) {
@@ -413,6 +415,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         c.notices.push_back(out.where("times") + ": dropped " + std::to_string(ndropped) +
                             " output time(s) past time.t_end = " + shown(c.time.t_end) + ": " + dropped);
     }
+    // --- output.every (an evenly spaced alternative to output.times) ---
+    if (const auto v = out.real("every")) {
+      if (out.has("times")) out.fail("every", "give either output.times or output.every, not both");
+      check(out, "every", *v > 0 && *v <= c.time.t_end, *v, "> 0 s and at most time.t_end");
+      const double n = std::floor(c.time.t_end / *v * (1 + 1e-12));
+      if (n > 1e6) out.fail("every", shown(*v) + " s gives " + shown(n) + " output times (at most 1e6)");
+      // k * every rounds off: a time within 1e-9 every of t_end is t_end.
+      for (long k = 1; k <= static_cast<long>(n) && k * *v < c.time.t_end - 1e-9 * *v; ++k) o.times.push_back(k * *v);
+      o.every = *v;
+    }
+    // --- end output.every ---
     if (o.times.empty() || o.times.back() < c.time.t_end) o.times.push_back(c.time.t_end);
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
     if (const auto v = out.boolean("vtk")) o.vtk = *v;
@@ -431,6 +444,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
+  // Probes (probes/probe_config.hpp) after the case: a force probe names one of its wall bodies.
+  c.probes = read_probes(top, c, c.case_settings->wall_bodies());
   check_scene(c, readers, own.size);
   return c;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/probes/probe_config.hpp"
 
 namespace sphmol {
 
@@ -118,13 +119,17 @@ std::string to_yaml(const Config& c) {
   y << "  max_steps: " << t.max_steps << "\n";
   y << "output:\n"
     << "  directory: " << quoted(o.directory) << "\n"
-    << "  times: " << list(o.times) << "\n"
+    ;
+  if (o.every) y << "  every: " << num(*o.every) << "\n";  // output.every
+  else y << "  times: " << list(o.times) << "\n";
+  y
     << "  profiles: " << (o.profiles ? "true" : "false") << "\n"
     << "  vtk: " << (o.vtk ? "true" : "false") << "\n"
     << "  vtk_walls: " << (o.vtk_walls ? "true" : "false") << "\n"
     << "  vtk_ghosts: " << (o.vtk_ghosts ? "true" : "false") << "\n"
     << "  plots: " << (o.plots ? "true" : "false") << "\n"
     << "  checkpoint_every: " << num(o.checkpoint_every) << "\n";
+  y << probes_to_yaml(c.probes);  // probes/probe_config.hpp
   return y.str();
 }
 

@@ -76,8 +76,9 @@ std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) 
   const std::string* best = nullptr;
   std::size_t best_len = 0;
   for (const auto& [p, text] : overrides_) {
+    // "probes" owns "probes.x" and the list elements "probes[0].at".
     const bool covers = path == p || (path.size() > p.size() && path.compare(0, p.size(), p) == 0 &&
-                                      path[p.size()] == '.');
+                                      (path[p.size()] == '.' || path[p.size()] == '['));
     if (covers && p.size() >= best_len) best = &text, best_len = p.size();
   }
   if (best) return "--set " + *best;
@@ -217,6 +218,18 @@ std::optional<std::vector<double>> MapReader::reals(const std::string& key) {
     if (!v || !std::isfinite(*v))
       fail_element(key, i, "expected a finite number, got " + describe(e->value[i]));
     out.push_back(*v);
+  }
+  return out;
+}
+
+std::optional<std::vector<std::string>> MapReader::strings(const std::string& key) {
+  const Entry* e = find(key);
+  if (!e) return std::nullopt;
+  if (!e->value.IsSequence()) wrong_type(key, e->value, "a list of names such as [p, rho]");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < e->value.size(); ++i) {
+    if (!e->value[i].IsScalar()) fail_element(key, i, "expected a name, got " + describe(e->value[i]));
+    out.push_back(e->value[i].Scalar());
   }
   return out;
 }

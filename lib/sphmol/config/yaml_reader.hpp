@@ -57,6 +57,7 @@ class MapReader {
   std::optional<bool> boolean(const std::string& key);
   std::optional<std::string> string(const std::string& key);
   std::optional<std::vector<double>> reals(const std::string& key);  // list of finite numbers
+  std::optional<std::vector<std::string>> strings(const std::string& key);  // list of scalars
   MapReader section(const std::string& key, std::vector<std::string> keys);
   // A list of maps under `key` (e.g. the bodies of a scene), each read with `keys`; element i has the
   // path "key[i]". Absent: empty. Not a list of maps: an error at the key.

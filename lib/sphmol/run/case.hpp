@@ -4,6 +4,7 @@
 // loop (run/run_case.cpp) integrates and calls the case and every output observer at output times.
 #include <memory>
 #include <algorithm>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -81,6 +82,13 @@ class OutputObserver {
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // An observer with its own sampling times (probes with `every`): the earliest time it still wants
+  // (infinity: none); the run loop stops there too and calls at_time (after refresh_fields).
+  virtual double next_time() const { return std::numeric_limits<double>::infinity(); }
+  virtual void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // Plots made after the run (next to the case's), and what its files hold (the summary's csv_files).
+  virtual std::vector<PlotScript> plots(const OutputSink& out) const { return {}; }
+  virtual void annotate(nlohmann::json& summary) const {}
   // Carried through checkpoints, so a restarted run continues the observer (e.g. the .pvd list).
   virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
   virtual void restore_state(const nlohmann::json& state, const OutputSink& out) {}

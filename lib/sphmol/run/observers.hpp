@@ -8,6 +8,7 @@
 namespace sphmol {
 
 template <int D>
-std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config);
+// `sys`: the built scene (probes check their positions against it and take its kernel).
+std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config, const SphSystem<D>& sys);
 
 }  // namespace sphmol

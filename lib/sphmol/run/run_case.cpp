@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -43,7 +44,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   auto sys = c.build(config);
   std::vector<double> y = sys->initial_state();
   auto integrator = make_integrator(config.time);
-  auto observers = make_observers<D>(config);
+  auto observers = make_observers<D>(config, *sys);
 
   // Restart: the checkpoint's state, time, integrator state and measurements so far.
   double t = 0.0;
@@ -142,9 +143,31 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   ProgressLine progress(opt.progress, t_first, config.time.t_end);
   int signal = 0;
   nlohmann::json blow_up;
+  // Observers with their own sampling times (probes with `every`): the loop stops there as well.
+  const auto next_observer_time = [&] {
+    double tn = inf;
+    for (const auto& o : observers) tn = std::min(tn, o->next_time());
+    return tn;
+  };
+  const auto observe_own_times = [&] {
+    bool refreshed = false;
+    for (auto& o : observers)
+      if (o->next_time() <= t) {
+        if (!refreshed) sys->refresh_fields(t, y.data(), scratch);
+        refreshed = true;
+        o->at_time(*sys, y.data(), t, out);
+      }
+  };
   try {
+  // The initial state: the observers (VTK files, probes) write t = 0 too; the case measures from the
+  // first output time on. A restart continues from its checkpoint, which has them already.
+  if (!restart) {
+    sys->refresh_fields(t, y.data(), scratch);
+    for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+    observe_own_times();
+  }
   while (next_out < times.size()) {
-    const double stop = std::min(times[next_out], next_cp);
+    const double stop = std::min({times[next_out], next_cp, next_observer_time()});
     while (t < stop && !(signal = pending_signal())) {
       t = integrator->step_toward(stop);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
@@ -163,6 +186,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       conservation.record(*sys, y.data(), t);
       ++next_out;
     }
+    observe_own_times();
     if (t >= next_cp) {
       checkpoint();
       next_cp = checkpoint_time(++k_cp);
@@ -232,6 +256,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"pair_passes", sys->pair_passes().empty() ? nlohmann::json("stored") : nlohmann::json(sys->pair_passes())}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
+  for (const auto& o : observers) o->annotate(j);
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
   // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
@@ -244,7 +269,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   signal_after_end();
   if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
     const auto interrupted = [&] { return opt.handle_signals && pending_signal() != 0; };
-    const PlotResult plots = make_plots(c.plots(out), out, interrupted);
+    std::vector<PlotScript> scripts = c.plots(out);
+    for (const auto& o : observers)
+      for (auto& p : o->plots(out)) scripts.push_back(std::move(p));
+    const PlotResult plots = make_plots(scripts, out, interrupted);
     j["plots"] = plots.written;
     for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
     signal_after_end();

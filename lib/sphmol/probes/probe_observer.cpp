@@ -1,0 +1,402 @@
+#include "sphmol/probes/probe_observer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+
+#include "sphmol/io/gnuplot.hpp"
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/probes/fluid_sampler.hpp"
+#include "sphmol/probes/height_gauge.hpp"
+#include "sphmol/run/gnuplot_preamble.hpp"
+
+namespace sphmol {
+
+namespace {
+
+// Rewriting a file of many rows at every one of many samples would cost quadratic time: between
+// output times a series is written at most this often (wall clock); at output times and at the end
+// always.
+constexpr double kFlushSeconds = 1.0;
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// A CSV number; NaN (no fluid there) is an empty cell, which pandas reads as NaN.
+std::string cell(double v) {
+  if (std::isnan(v)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
+const char* const kAxis[3] = {"x", "y", "z"};
+const char* const kVelocity[3] = {"u", "v", "w"};
+
+template <int D>
+std::string point_text(const geometry::Vec<D>& p) {
+  std::string s = "(";
+  for (int d = 0; d < D; ++d) s += (d ? ", " : "") + cell(p[d]);
+  return s + ")";
+}
+
+std::string every_text(const ProbeConfig& p) {
+  return p.every ? "every " + cell(*p.every) + " s from t = 0" : "at t = 0 and at the output times";
+}
+
+}  // namespace
+
+template <int D>
+ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
+    : output_times_(config.output.times), t_end_(config.time.t_end), h_(sys.smoothing_length()) {
+  const auto K = kernel_info<D>(sys.kernel_name());
+  W_ = K.W;
+  dWdr_ = K.dWdr;
+  support_ = K.support;
+  const auto& disc = config.discretization;
+  model_.momentum_116 = disc.momentum == "symmetric_116";
+  model_.dynamic_viscosity = disc.viscosity == "morris" ? config.fluid.density * config.fluid.kinematic_viscosity : 0.0;
+  model_.morris_wall_velocity = disc.wall_model == "morris";
+  model_.beta_max = disc.wall_beta_max;
+  model_.artificial_viscosity = disc.artificial_viscosity.enabled;
+  model_.pi = {disc.artificial_viscosity.alpha, disc.artificial_viscosity.beta, disc.artificial_viscosity.eta};
+
+  // Where the fluid can be sampled: the box of every particle at the start, widened by the kernel
+  // support (periodic axes: the period).
+  const auto& P = sys.particles();
+  const auto& dom = sys.domain();
+  const std::vector<double> y0 = sys.initial_state();
+  const auto& L = sys.layout();
+  std::array<double, D> lo, hi;
+  for (int d = 0; d < D; ++d) {
+    lo[d] = std::numeric_limits<double>::infinity();
+    hi[d] = -lo[d];
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      const double x = i < P.n_fluid ? y0[L.position(d) + i] : P.x_ref[d][i];
+      lo[d] = std::min(lo[d], x);
+      hi[d] = std::max(hi[d], x);
+    }
+    if (dom.periodic[d]) {
+      lo[d] = dom.lo[d];
+      hi[d] = dom.hi[d];
+    } else {
+      lo[d] -= support_ * h_;
+      hi[d] += support_ * h_;
+    }
+  }
+  const auto box_text = [&] {
+    std::string s;
+    for (int d = 0; d < D; ++d) s += std::string(d ? " x " : "") + "[" + cell(lo[d]) + ", " + cell(hi[d]) + "]";
+    return s;
+  };
+  const auto inside = [&](const std::vector<double>& p, int dims) {
+    for (int d = 0; d < dims; ++d)
+      if (!(p[d] >= lo[d] && p[d] <= hi[d])) return false;
+    return true;
+  };
+
+  for (const ProbeConfig& c : config.probes) {
+    Series s;
+    s.cfg = c;
+    std::ostringstream head;
+    head << "t [s]";
+    const std::string when = every_text(c);
+    if (c.type == "point" || c.type == "line" || c.type == "plane") {
+      const auto pts = c.sample_points();
+      for (const auto& p : pts) {
+        if (!inside(p, D)) {
+          geometry::Vec<D> v;
+          for (int d = 0; d < D; ++d) v[d] = p[d];
+          throw ConfigError(c.where + ": " + (c.type == "point" ? "the point " : "the sample point ") + point_text<D>(v) +
+                            " is outside the scene, whose particles (widened by the kernel support " + cell(support_ * h_) +
+                            " m) span " + box_text());
+        }
+        geometry::Vec<D> v;
+        for (int d = 0; d < D; ++d) v[d] = p[d];
+        s.points.push_back(v);
+      }
+      if (c.type != "point")
+        for (int d = 0; d < D; ++d) head << "," << kAxis[d] << " [m]";
+      for (const auto& f : c.fields) {
+        if (f == "p") head << ",p [Pa]";
+        if (f == "rho") head << ",rho [kg/m^3]";
+        if (f == "velocity")
+          for (int d = 0; d < D; ++d) head << "," << kVelocity[d] << " [m/s]";
+      }
+      std::string fields;
+      for (const auto& f : c.fields) fields += (fields.empty() ? "" : ", ") + f;
+      if (c.type == "point")
+        s.description = "probe " + c.name + ": " + fields + " of the fluid at " + point_text<D>(s.points[0]) +
+                        " (Shepard-normalised SPH interpolation), " + when + "; empty cells: no fluid within the kernel support";
+      else if (c.type == "line")
+        s.description = "probe " + c.name + ": " + fields + " of the fluid at " + std::to_string(c.points[0]) +
+                        " points from " + point_text<D>(s.points.front()) + " to " + point_text<D>(s.points.back()) +
+                        ", one row per time and point (Shepard-normalised SPH interpolation), " + when +
+                        "; empty cells: no fluid within the kernel support";
+      else
+        s.description = "probe " + c.name + ": " + fields + " of the fluid on a " + std::to_string(c.points[0]) + " x " +
+                        std::to_string(c.points[1]) + " grid of the plane from " + point_text<D>(s.points.front()) +
+                        ", one row per time and point (edge_1 fastest; Shepard-normalised SPH interpolation), " + when +
+                        "; empty cells: no fluid within the kernel support";
+    } else if (c.type == "height_gauge") {
+      std::vector<double> at(c.at);
+      if (!inside(at, D - 1))
+        throw ConfigError(c.where + ": the gauge line at " + cell(at[0]) + (D == 3 ? ", " + cell(at[1]) : std::string()) +
+                          " is outside the scene, whose particles (widened by the kernel support) span " + box_text());
+      s.bottom = c.range.empty() ? lo[D - 1] : c.range[0];
+      s.top = c.range.empty() ? hi[D - 1] : c.range[1];
+      head << "," << (D == 2 ? "y" : "z") << "_surface [m]";
+      s.description = "probe " + c.name + ": free-surface height on the vertical line " + (D == 2 ? "x = " + cell(at[0]) : "(x, y) = (" + cell(at[0]) + ", " + cell(at[1]) + ")") +
+                      ": the highest point between " + cell(s.bottom) + " and " + cell(s.top) +
+                      " m where the kernel sum of the fluid is 1/2 (scanned in steps of h/4), " + when +
+                      "; empty: no fluid on the line";
+    } else {  // force
+      const bool any = std::find(P.body.begin(), P.body.end(), c.body_index) != P.body.end();
+      if (!any) throw ConfigError(c.where + ": wall body '" + c.body + "' has no wall particles in the scene");
+      const char* unit = D == 3 ? "N" : D == 2 ? "N/m" : "N/m^2";
+      for (int d = 0; d < D; ++d) head << ",F" << kAxis[d] << " [" << unit << "]";
+      s.description = "probe " + c.name + ": force of the fluid on wall body " + c.body +
+                      " (sum over fluid-wall pairs of the momentum equation's pair forces: pressure, eq " +
+                      (model_.momentum_116 ? "116" : "117") + (model_.dynamic_viscosity > 0 ? ", Morris viscosity" : "") +
+                      (model_.artificial_viscosity ? ", artificial viscosity" : "") + ")" +
+                      (D == 2 ? ", per unit depth" : "") + ", " + when;
+    }
+    s.header = head.str() + "\n";
+    series_.push_back(std::move(s));
+  }
+}
+
+template <int D>
+double ProbeObserver<D>::sample_time(const Series& s, long k) const {
+  const double every = *s.cfg.every;
+  const double tk = static_cast<double>(k) * every;
+  // k * every rounds off (3 x 0.1 = 0.30000000000000004): a sample meant to fall on an output time
+  // (or on t_end) does.
+  for (const double to : output_times_)
+    if (std::abs(tk - to) <= 1e-9 * every) return to;
+  return tk;
+}
+
+template <int D>
+double ProbeObserver<D>::next_time() const {
+  double t = std::numeric_limits<double>::infinity();
+  for (const auto& s : series_)
+    if (s.cfg.every) {
+      const double tk = sample_time(s, s.next_k);
+      if (tk <= t_end_) t = std::min(t, tk);
+    }
+  return t;
+}
+
+template <int D>
+void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t) {
+  if (which.empty()) return;
+  const auto& P = sys.particles();
+  const auto& L = sys.layout();
+  const std::size_t nf = P.n_fluid;
+  const std::vector<double>& rho = sys.density();
+  const std::vector<double>& p = sys.pressure();
+  std::array<const double*, D> xf{}, vf{};
+  for (int d = 0; d < D; ++d) {
+    xf[d] = y + L.position(d);
+    vf[d] = y + L.velocity(d);
+  }
+  std::vector<double> volume(nf);
+  for (std::size_t i = 0; i < nf; ++i) volume[i] = P.mass[i] / rho[i];
+  const FluidSampler<D> fluid(xf, volume.data(), nf, W_, h_, support_, sys.domain());
+  const std::string tt = cell(t);
+  for (const std::size_t k : which) {
+    Series& s = series_[k];
+    std::string& rows = s.rows;
+    const ProbeConfig& c = s.cfg;
+    if (c.type == "point" || c.type == "line" || c.type == "plane") {
+      for (const auto& x : s.points) {
+        rows += tt;
+        if (c.type != "point")
+          for (int d = 0; d < D; ++d) rows += "," + cell(x[d]);
+        for (const auto& f : c.fields) {
+          if (f == "p") rows += "," + cell(fluid.interpolate(x, p.data()));
+          if (f == "rho") rows += "," + cell(fluid.interpolate(x, rho.data()));
+          if (f == "velocity")
+            for (int d = 0; d < D; ++d) rows += "," + cell(fluid.interpolate(x, vf[d]));
+        }
+        rows += "\n";
+      }
+    } else if (c.type == "height_gauge") {
+      geometry::Vec<D> at{};
+      for (int d = 0; d + 1 < D; ++d) at[d] = c.at[d];
+      rows += tt + "," + cell(free_surface_height<D>(fluid, at, s.bottom, s.top, 0.25 * h_)) + "\n";
+    } else {
+      // Every particle where the RHS sees it: the fluid from the state, the walls at time t.
+      std::array<std::vector<double>, D> xa, va;
+      WallForceState<D> st;
+      for (int d = 0; d < D; ++d) {
+        xa[d].resize(P.size());
+        va[d].resize(P.size());
+        for (std::size_t i = 0; i < P.size(); ++i) {
+          xa[d][i] = i < nf ? xf[d][i] : P.wall_position(d, i, t);
+          va[d][i] = i < nf ? vf[d][i] : P.v[d][i];
+        }
+        st.x[d] = xa[d].data();
+        st.v[d] = va[d].data();
+      }
+      st.rho = rho.data();
+      st.p = p.data();
+      st.c = sys.sound_speed().data();
+      const auto F = wall_body_force<D>(P, st, c.body_index, dWdr_, h_, support_, sys.domain(), model_);
+      rows += tt;
+      for (int d = 0; d < D; ++d) rows += "," + cell(F[d]);
+      rows += "\n";
+    }
+    s.dirty = true;
+  }
+}
+
+template <int D>
+void ProbeObserver<D>::flush(const OutputSink& out) {
+  last_flush_ = now_seconds();
+  if (!out.enabled) return;
+  for (auto& s : series_)
+    if (s.dirty) {
+      out.write(file_name(s.cfg.name), s.header + s.rows);
+      s.dirty = false;
+    }
+}
+
+template <int D>
+void ProbeObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    if (!series_[k].cfg.every) which.push_back(k);
+  sample(which, sys, y, t);
+  flush(out);
+}
+
+template <int D>
+void ProbeObserver<D>::at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < series_.size(); ++k) {
+    Series& s = series_[k];
+    if (!s.cfg.every) continue;
+    // The loop stops exactly on the sample time; a sample passed over (none should be) is not made up.
+    bool due = false;
+    while (sample_time(s, s.next_k) <= t_end_ && sample_time(s, s.next_k) <= t + 1e-12 * *s.cfg.every) {
+      due = true;
+      ++s.next_k;
+    }
+    if (due) which.push_back(k);
+  }
+  sample(which, sys, y, t);
+  if (now_seconds() - last_flush_ >= kFlushSeconds) flush(out);
+}
+
+template <int D>
+void ProbeObserver<D>::at_end(const SphSystem<D>&, const double*, double, const OutputSink& out) {
+  flush(out);
+}
+
+template <int D>
+nlohmann::json ProbeObserver<D>::save_state() const {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& s : series_) list.push_back({{"name", s.cfg.name}, {"type", s.cfg.type}, {"rows", s.rows}, {"next_k", s.next_k}});
+  return {{"probes", list}};
+}
+
+template <int D>
+void ProbeObserver<D>::restore_state(const nlohmann::json& state, const OutputSink&) {
+  // By name: a probe the checkpoint does not know starts empty, one it knows continues its rows. The
+  // files are rewritten at the next output time (the folder is claimed only after this).
+  for (const auto& e : state.at("probes")) {
+    const std::string name = e.at("name").get<std::string>(), type = e.at("type").get<std::string>();
+    for (auto& s : series_)
+      if (s.cfg.name == name && s.cfg.type == type) {
+        s.rows = e.at("rows").get<std::string>();
+        s.next_k = e.at("next_k").get<long>();
+        if (s.next_k < 0) throw std::invalid_argument("probe " + name + ": next_k must be >= 0");
+        s.dirty = true;
+      }
+  }
+}
+
+template <int D>
+std::vector<PlotScript> ProbeObserver<D>::plots(const OutputSink&) const {
+  std::vector<PlotScript> list;
+  for (const auto& s : series_) {
+    if (s.rows.empty()) continue;
+    const ProbeConfig& c = s.cfg;
+    const std::string csv = gnuplot_file(file_name(c.name)), png = "probe_" + c.name + ".png";
+    // Column names from the header (without the newline).
+    std::vector<std::string> cols;
+    {
+      std::stringstream h(s.header.substr(0, s.header.size() - 1));
+      for (std::string col; std::getline(h, col, ',');) cols.push_back(col);
+    }
+    std::ostringstream g;
+    g << std::setprecision(12);
+    // Stacked panels get their own height; names keep their underscores (no enhanced text).
+    const std::size_t panels = c.type == "point" ? cols.size() - 1 : c.type == "line" ? cols.size() - 1 - D : 1;
+    g << gnuplot_csv_preamble("probe " + c.name + " (" + c.type + ") from " + file_name(c.name), 900,
+                              static_cast<int>(std::max<std::size_t>(640, 300 * panels)), 11, png)
+      << "set termoption noenhanced\n";
+    if (c.type == "point" || c.type == "height_gauge" || c.type == "force") {
+      // Each column against t: one panel per quantity (p, rho and speeds differ by orders of magnitude).
+      const std::size_t n = cols.size() - 1;
+      const bool same_units = c.type != "point";
+      g << "set grid\nset xlabel " << gnuplot_text("t [s]") << "\n";
+      if (same_units || n == 1) {
+        g << "set title " << gnuplot_text("probe " + c.name) << "\nset ylabel " << gnuplot_text(cols[1].substr(cols[1].find(' ') + 1)) << "\nplot ";
+        for (std::size_t k = 1; k <= n; ++k)
+          g << (k > 1 ? ", \\\n  " : "") << csv << " using 1:" << k + 1 << " with linespoints pt 7 ps 0.4 title " << gnuplot_text(cols[k]);
+        g << "\n";
+      } else {
+        g << "set multiplot layout " << n << ",1 title " << gnuplot_text("probe " + c.name) << "\n";
+        for (std::size_t k = 1; k <= n; ++k)
+          g << "set ylabel " << gnuplot_text(cols[k]) << "\nplot " << csv << " using 1:" << k + 1
+            << " with linespoints pt 7 ps 0.4 notitle\n";
+        g << "unset multiplot\n";
+      }
+    } else {
+      // Line / plane: the last sampled time.
+      const std::size_t end = s.rows.rfind('\n', s.rows.size() - 2);
+      const std::string last = s.rows.substr(end == std::string::npos ? 0 : end + 1);
+      const std::string t_last = last.substr(0, last.find(','));
+      const std::size_t first_field = 1 + D + 1;  // gnuplot column of the first field
+      if (c.type == "line") {
+        // Against the coordinate that varies most along the line.
+        int axis = 0;
+        for (int d = 1; d < D; ++d)
+          if (std::abs(c.to[d] - c.from[d]) > std::abs(c.to[axis] - c.from[axis])) axis = d;
+        const std::size_t n = cols.size() - first_field + 1;
+        g << "set grid\nT = " << t_last << "\nset multiplot layout " << n << ",1 title "
+          << gnuplot_text("probe " + c.name + " at t = " + t_last + " s") << "\nset xlabel " << gnuplot_text(cols[1 + axis]) << "\n";
+        for (std::size_t k = first_field; k <= cols.size(); ++k)
+          g << "set ylabel " << gnuplot_text(cols[k - 1]) << "\nplot " << csv << " using ($1 == T ? $" << 2 + axis << " : NaN):" << k
+            << " with linespoints pt 7 ps 0.4 notitle\n";
+        g << "unset multiplot\n";
+      } else {
+        // Plane: the first field as colours on the sample points in 3D.
+        g << "T = " << t_last << "\nset view equal xyz\nset title "
+          << gnuplot_text("probe " + c.name + ": " + cols[first_field - 1] + " at t = " + t_last + " s")
+          << "\nset xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel 'z [m]'\n"
+          << "splot " << csv << " using ($1 == T ? $2 : NaN):3:4:" << first_field << " with points pt 7 ps 0.8 palette notitle\n";
+      }
+    }
+    list.push_back({png, g.str()});
+  }
+  return list;
+}
+
+template <int D>
+void ProbeObserver<D>::annotate(nlohmann::json& summary) const {
+  for (const auto& s : series_) summary["csv_files"][file_name(s.cfg.name)] = s.description;
+}
+
+template class ProbeObserver<1>;
+template class ProbeObserver<2>;
+template class ProbeObserver<3>;
+
+}  // namespace sphmol

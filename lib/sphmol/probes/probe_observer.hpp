@@ -1,0 +1,61 @@
+#pragma once
+// Writes the `probes` of a config (probes/probe_config.hpp): one CSV per probe, probe_<name>.csv,
+// with one header row naming each column and its unit and no other non-data line. Point, line and
+// plane probes hold the Shepard-interpolated fluid fields (fluid_sampler.hpp; an empty cell where no
+// fluid particle is within the kernel support), height gauges the free-surface height
+// (height_gauge.hpp), force probes the force of the fluid on a wall body (wall_force.hpp). A probe
+// samples at the output times (and t = 0), or every `every` seconds from t = 0, when the run loop
+// stops for it (next_time / at_time). The files go through OutputSink::write (atomic, in the run's
+// ledger); the rows so far are the observer's checkpoint state, so a restart continues each series.
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sphmol/probes/probe_config.hpp"
+#include "sphmol/probes/wall_force.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+template <int D>
+class ProbeObserver final : public OutputObserver<D> {
+ public:
+  // Checks each probe against the built scene: a sample point or gauge line outside the particles'
+  // bounding box widened by the kernel support is a ConfigError at the probe's key (FILE:LINE).
+  ProbeObserver(const Config& config, const SphSystem<D>& sys);
+
+  void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  double next_time() const override;
+  void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state, const OutputSink& out) override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
+  void annotate(nlohmann::json& summary) const override;
+
+  // The file a probe writes.
+  static std::string file_name(const std::string& probe) { return "probe_" + probe + ".csv"; }
+
+ private:
+  struct Series {
+    ProbeConfig cfg;
+    std::vector<geometry::Vec<D>> points;  // point, line, plane
+    double bottom = 0.0, top = 0.0;        // height gauge: the scanned vertical range
+    std::string header, rows, description;
+    long next_k = 0;                       // `every` probes: index of the next sample time k * every
+    bool dirty = false;                    // rows not yet in the file
+  };
+  double sample_time(const Series& s, long k) const;
+  void sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t);
+  void flush(const OutputSink& out);
+
+  std::vector<Series> series_;
+  std::vector<double> output_times_;
+  double t_end_ = 0.0, h_ = 0.0, support_ = 0.0;
+  double (*W_)(double, double) = nullptr;
+  double (*dWdr_)(double, double) = nullptr;
+  WallForceModel model_;
+  double last_flush_ = -std::numeric_limits<double>::infinity();  // steady-clock seconds
+};
+
+}  // namespace sphmol

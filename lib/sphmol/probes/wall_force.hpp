@@ -1,0 +1,96 @@
+#pragma once
+// The force the fluid exerts on one wall body: minus the sum, over fluid particles i and the body's
+// wall particles j within the kernel support, of the pair forces m_i a_ij of the momentum equation
+// the run integrates (equal and opposite: what the fluid receives from the body, the body receives
+// from the fluid). Included pair terms, as in rhs/assemble.cpp:
+//   pressure, Vukčević 2012 eq 117:  a_ij = -m_j (p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij
+//             or eq 116:             a_ij = -m_j (p_i + p_j)/(rho_i rho_j) grad_i W_ij
+//   Morris, Fox & Zhu 1997 eq 8:      a_ij = m_j 2 mu/(rho_i rho_j) F_ij r^2/(r^2 + 0.01 h^2) beta (v_i - v_j)
+//             (beta: the wall model's factor, boundary/morris_wall_velocity.hpp; 1 for prescribed walls)
+//   Monaghan 1992 artificial viscosity, when enabled: a_ij = -m_j Pi_ij grad_i W_ij
+// with grad_i W_ij = F_ij (x_i - x_j), F = (dW/dr)/r. Not included: the strain-rate viscosity, the
+// transport-velocity stress, repulsive wall forces and ghost particles (the force probe needs
+// boundary: wall_particles, with viscosity morris or none; probes/probe_observer.cpp checks it).
+// In 2D the result is a force per unit depth [N/m].
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "sphmol/core/domain.hpp"
+#include "sphmol/core/particles.hpp"
+#include "sphmol/physics/artificial_viscosity.hpp"
+#include "sphmol/probes/point_bins.hpp"
+
+namespace sphmol {
+
+struct WallForceModel {
+  bool momentum_116 = false;        // eq 116 instead of eq 117
+  double dynamic_viscosity = 0.0;   // mu = rho0 nu of the Morris term; 0: no viscous term
+  bool morris_wall_velocity = false;
+  double beta_max = 8.0;
+  bool artificial_viscosity = false;
+  MonaghanPi pi{1.0, 1.0, 0.1};
+};
+
+// The current state, all particles in Particles order (fluid [0, n_fluid), walls after): positions
+// (walls where the solver puts them at t), velocities, densities, pressures and sound speeds.
+template <int D>
+struct WallForceState {
+  std::array<const double*, D> x{}, v{};
+  const double* rho = nullptr;
+  const double* p = nullptr;
+  const double* c = nullptr;  // read only with artificial viscosity
+};
+
+// dWdr(r, h): the kernel's radial derivative; support: its radius in units of h.
+template <int D>
+std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceState<D>& s, int body,
+                                      double (*dWdr)(double, double), double h, double support,
+                                      const Domain<D>& domain, const WallForceModel& model) {
+  std::vector<std::size_t> walls;
+  for (std::size_t j = P.n_fluid; j < P.size(); ++j)
+    if (P.body[j] == body) walls.push_back(j);
+  std::array<std::vector<double>, D> xw;
+  std::array<const double*, D> xp{};
+  for (int d = 0; d < D; ++d) {
+    for (const std::size_t j : walls) xw[d].push_back(s.x[d][j]);
+    xp[d] = xw[d].data();
+  }
+  const PointBins<D> bins(xp, walls.size(), support * h, domain);
+  const double eta2 = 0.01 * h * h;
+  std::array<double, D> force{};
+  for (std::size_t i = 0; i < P.n_fluid; ++i) {
+    geometry::Vec<D> xi;
+    for (int d = 0; d < D; ++d) xi[d] = s.x[d][i];
+    const double pi_i = s.p[i] / (s.rho[i] * s.rho[i]);
+    bins.for_each_near(xi, [&](std::size_t k, double r, const std::array<double, D>& dx) {
+      if (r == 0.0) return;  // coincident particles exert no force (dx = 0)
+      const std::size_t j = walls[k];
+      const double F = dWdr(r, h) / r;
+      const double mj = P.mass[j];
+      // Pressure: the coefficient of dx in a_ij.
+      double cx = model.momentum_116 ? -mj * (s.p[i] + s.p[j]) / (s.rho[i] * s.rho[j]) * F
+                                     : -mj * (pi_i + s.p[j] / (s.rho[j] * s.rho[j])) * F;
+      double vx = 0.0;
+      for (int d = 0; d < D; ++d) vx += (s.v[d][i] - s.v[d][j]) * dx[d];
+      if (model.artificial_viscosity)
+        cx -= mj * model.pi(vx, r * r, h, 0.5 * (s.c[i] + s.c[j]), 0.5 * (s.rho[i] + s.rho[j])) * F;
+      double cv = 0.0;
+      if (model.dynamic_viscosity > 0.0) {
+        double beta = 1.0;
+        if (model.morris_wall_velocity) {
+          double dA = -P.wall_depth[j];
+          for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
+          beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;
+        }
+        cv = mj * 2.0 * model.dynamic_viscosity / (s.rho[i] * s.rho[j]) * F * r * r / (r * r + eta2) * beta;
+      }
+      // The body receives -m_i a_ij.
+      for (int d = 0; d < D; ++d) force[d] -= P.mass[i] * (cx * dx[d] + cv * (s.v[d][i] - s.v[d][j]));
+    });
+  }
+  return force;
+}
+
+}  // namespace sphmol
