@@ -13,6 +13,8 @@
 //   sph-bench --benchmark_filter=DamBreakStep    end to end: dam-break leapfrog steps, 1 and 2 threads
 //   sph-bench --benchmark_filter=DamBreakRun     the whole dam-break run, alternating 1 and 2 threads every
 //                                                20 steps: the 2-vs-1 ratio (bench_dam_break.cpp)
+//   sph-bench --benchmark_filter=DamBreak3DStep  end to end in 3D: a dam break in a box, 1.1e5 particles,
+//                                                1 and 2 threads (bench_dam_break_3d.cpp)
 //   scripts/bench_memory.sh                      peak memory per particle (one process per size)
 #include <benchmark/benchmark.h>
 #include <omp.h>

@@ -4,7 +4,8 @@
 //   p_w = (sum_f p_f W_wf + g . sum_f rho_f (x_w - x_f) W_wf) / sum_f W_wf
 // and the wall density from the inverse EOS. A wall held at rest density has p = 0 (Tait, gauge EOS),
 // which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (Vukčević
-// 2012, eq 117) turns it into a force pushing the fluid off the bottom. Wall rows list only fluid
+// 2012, eq 117) turns it into a force drawing the first fluid rows into the wall (the walls' p = 0
+// pushes less than the fluid they stand for would; tests/unit/test_boundaries_3d.cpp). Wall rows list only fluid
 // neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass.
 #include <array>
 #include <functional>

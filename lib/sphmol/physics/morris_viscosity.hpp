@@ -1,7 +1,9 @@
 #pragma once
 // Laminar viscosity of Morris, Fox & Zhu (1997), J. Comput. Phys. 136:214, their eq. (8):
 //   dv_i/dt += sum_j m_j (mu_i + mu_j) / (rho_i rho_j) * (x_ij . grad_i W_ij) / (r_ij^2 + eta^2) * v_ij
-// with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. Fluid-wall velocity
+// with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. No dimension enters:
+// the kernel's second moment, int r^2 W'(r)/r n n dV = -I, is the same in 1, 2 and 3D, so the sum is
+// nu laplacian(v) in each. Fluid-wall velocity
 // differences are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
 #include "sphmol/rhs/pair_term.hpp"
 

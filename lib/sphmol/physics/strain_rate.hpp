@@ -7,6 +7,9 @@
 // particles, and a missing wall-wall pair contributes nothing for walls that move together.
 // Velocity differences of fluid-wall pairs are scaled by the wall model's factor
 // (rhs/workspace.hpp, vfac).
+// The 2/3 is Stokes' hypothesis for the fluid, not the dimension of the scene: eps is traceless in 3D,
+// and in 2D (1D) it is the in-plane (axial) deviatoric strain of a plane (one-dimensional) flow of
+// the same fluid, so the term holds in every dimension.
 #include <Eigen/Dense>
 
 #include "sphmol/rhs/term.hpp"

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <stdexcept>
+#include <string_view>
 
 #include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
@@ -40,15 +41,26 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const auto& fluid = config.fluid;
   const double h = disc.smoothing_ratio * spacing;
   const bool variable_h = disc.smoothing_length != "constant";
-  auto kernel = variable_h ? make_variable_h_kernel_pass<D>(disc.kernel) : make_kernel_pass<D>(disc.kernel);
+  // A kernel its source does not define in D is rejected by the registry; the key says which setting.
+  std::unique_ptr<KernelPass<D>> kernel;
+  try {
+    kernel = variable_h ? make_variable_h_kernel_pass<D>(disc.kernel) : make_kernel_pass<D>(disc.kernel);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("discretization.kernel: ") + e.what());
+  }
   const double mu = fluid.density * fluid.kinematic_viscosity;
 
   // Term order: the density (when summed, every later term reads it), then the per-particle state
   // (ghost copies, EOS, wall pressures), then every pair sum, then what reads their totals. Pair sums
   // with no dependence on each other sit together, so that fused passes group them (rhs/pair_pass_plan.hpp).
   std::vector<std::unique_ptr<Term<D>>> terms;
-  if (disc.density == "summation") terms.push_back(std::make_unique<SummationDensity<D>>());
-  else if (disc.density == "normalised_summation") terms.push_back(std::make_unique<NormalisedSummationDensity<D>>());
+  // Every term goes in through here: checked against D with the key that chose it (rhs/term.hpp).
+  const auto add = [&terms](std::string_view key, std::unique_ptr<Term<D>> term) {
+    require_dimension(*term, key);
+    terms.push_back(std::move(term));
+  };
+  if (disc.density == "summation") add("discretization.density", std::make_unique<SummationDensity<D>>());
+  else if (disc.density == "normalised_summation") add("discretization.density", std::make_unique<NormalisedSummationDensity<D>>());
   else if (disc.density != "continuity") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
   const bool dynamic_walls = disc.wall_pressure == "dynamic";
   std::unique_ptr<GhostGenerator<D>> ghosts;
@@ -56,7 +68,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
     // Images of every particle within the kernel support of a wall; the set is rebuilt each evaluation.
     ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support());
-    terms.push_back(std::make_unique<GhostStateCopy<D>>(ghosts.get()));
+    add("discretization.boundary", std::make_unique<GhostStateCopy<D>>(ghosts.get()));
   }
   std::array<double, D> g{};
   bool any_force = false;
@@ -67,28 +79,28 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   std::function<double(double)> rho_of_p;  // the EOS inverted, for extrapolated wall pressures
   if (fluid.eos.type == "ideal_gas") {
     if (!disc.energy) throw std::invalid_argument("fluid.eos.type: 'ideal_gas' needs discretization.energy: true");
-    terms.push_back(std::make_unique<IdealGasEos<D>>(fluid.eos.gamma));
+    add("fluid.eos.type", std::make_unique<IdealGasEos<D>>(fluid.eos.gamma));
   } else if (fluid.eos.type == "tait") {
     const TaitLaw law(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma);
-    terms.push_back(std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma,
+    add("fluid.eos.type", std::make_unique<TaitEos<D>>(fluid.eos.sound_speed, fluid.density, fluid.eos.gamma,
                                                  fluid.eos.clamp_negative));
     rho_of_p = [law](double p) { return law.density(p); };
   } else if (fluid.eos.type == "linear" || fluid.eos.type == "linear_relative") {
     const bool rel = fluid.eos.type == "linear_relative";
     const double c2 = fluid.eos.sound_speed * fluid.eos.sound_speed, rho0 = fluid.density;
-    terms.push_back(std::make_unique<LinearEos<D>>(fluid.eos.sound_speed, fluid.density, rel));
+    add("fluid.eos.type", std::make_unique<LinearEos<D>>(fluid.eos.sound_speed, fluid.density, rel));
     rho_of_p = [c2, rho0, rel](double p) { return p / c2 + (rel ? rho0 : 0.0); };
   } else {
     throw std::invalid_argument("fluid.eos.type: unsupported '" + fluid.eos.type + "'");
   }
   if (ghosts && any_force) {
     if (!rho_of_p) throw std::invalid_argument("discretization.boundary: ghost walls under a body force need a barotropic EOS");
-    terms.push_back(std::make_unique<GhostHydrostaticPressure<D>>(ghosts.get(), g, fluid.body_force_ramp, rho_of_p));
+    add("discretization.boundary", std::make_unique<GhostHydrostaticPressure<D>>(ghosts.get(), g, fluid.body_force_ramp, rho_of_p));
   }
-  if (fluid.eos.background_pressure > 0.0) terms.push_back(std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
+  if (fluid.eos.background_pressure > 0.0) add("fluid.eos.background_pressure", std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
   if (disc.wall_pressure == "extrapolated") {
     if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
-    terms.push_back(std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
+    add("discretization.wall_pressure", std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
   }
   const bool m116 = disc.momentum == "symmetric_116";
   if (!m116 && disc.momentum != "symmetric_117")
@@ -101,59 +113,59 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
-    if (diffusion > 0.0) terms.push_back(std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
-    else terms.push_back(std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
+    if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
+    else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
   }
-  if (disc.density == "continuity" && !wc_row) terms.push_back(std::make_unique<ContinuityDensity<D>>());
-  if (dynamic_walls) terms.push_back(std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (disc.density == "continuity" && !wc_row) add("discretization.density", std::make_unique<ContinuityDensity<D>>());
+  if (dynamic_walls) add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>(fluid.density));
   if (disc.density_diffusion > 0.0 && !wc_row)
-    terms.push_back(std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
+    add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
     if (m116) return std::make_unique<PressureGradient116<D>>();
     return std::make_unique<PressureGradient117<D>>();
   };
-  if (disc.wall_model == "morris") terms.push_back(std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
+  if (disc.wall_model == "morris") add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
   else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   if (disc.viscosity == "strain_rate") {
-    terms.push_back(std::make_unique<StrainRate<D>>());
-    terms.push_back(pressure());
-    terms.push_back(std::make_unique<StrainRateViscosity117<D>>(mu));
+    add("discretization.viscosity", std::make_unique<StrainRate<D>>());
+    add("discretization.momentum", pressure());
+    add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
-    terms.push_back(pressure());
-    terms.push_back(std::make_unique<MorrisViscosity<D>>(mu));
+    add("discretization.momentum", pressure());
+    add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
   } else if (disc.viscosity == "none") {
-    if (!wc_row) terms.push_back(pressure());
+    if (!wc_row) add("discretization.momentum", pressure());
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
   if (av.enabled && !wc_row) {
-    if (disc.energy) terms.push_back(std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
-    else terms.push_back(std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
+    if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
+    else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
   }
   if (disc.energy) {
-    if (m116) terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
-    else terms.push_back(std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());
+    if (m116) add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
+    else add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());
   }
   if (disc.boundary == "virtual_repulsive") {
     const RepulsiveLaw law{disc.repulsive.strength, disc.repulsive.p1, disc.repulsive.p2, disc.repulsive.r0 * spacing};
     if (law.r0 >= kernel->support() * h)
       throw std::invalid_argument("discretization.repulsive.r0: must lie inside the kernel support (" +
                                   std::to_string(kernel->support() * h / spacing) + " spacings)");
-    terms.push_back(std::make_unique<RepulsiveBoundary<D>>(law));
+    add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(law));
   }
-  if (disc.xsph > 0.0) terms.push_back(std::make_unique<Xsph<D>>(disc.xsph));
+  if (disc.xsph > 0.0) add("discretization.xsph", std::make_unique<Xsph<D>>(disc.xsph));
   if (const auto& tv = disc.transport_velocity; tv.enabled) {
     const double c = fluid.eos.sound_speed;
     auto du = tv.extra_stress ? std::make_shared<TransportShiftField<D>>() : nullptr;
-    terms.push_back(std::make_unique<TransportVelocityShift<D>>(
+    add("discretization.transport_velocity", std::make_unique<TransportVelocityShift<D>>(
         tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c, tv.step_factor * h / c, du));
-    if (du) terms.push_back(std::make_unique<TransportVelocityStress<D>>(du));
+    if (du) add("discretization.transport_velocity.extra_stress", std::make_unique<TransportVelocityStress<D>>(du));
   }
   // Reads the complete drho/dt (Niedoba 2012, eq 2.68), so after every density sum.
-  if (disc.smoothing_length == "ode") terms.push_back(std::make_unique<SmoothingLengthRate<D>>());
+  if (disc.smoothing_length == "ode") add("discretization.smoothing_length", std::make_unique<SmoothingLengthRate<D>>());
   // Per particle and read by nothing else: last, so that it never splits a fused pass.
-  if (any_force) terms.push_back(std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
+  if (any_force) add("fluid.body_force", std::make_unique<BodyForce<D>>(g, fluid.body_force_ramp));
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);
