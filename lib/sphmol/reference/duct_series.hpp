@@ -41,6 +41,8 @@ struct DuctSeries {
   double mean_velocity() const;    // steady flow rate / (4 a b)
   // The two transient representations; both require t > 0. Public so tests can check they agree.
   double velocity_fourier(double y, double z, double t) const;
+  // velocity_duhamel (and velocity() below switch_tau) switches GSL's global error handler off while it
+  // integrates: call it from one thread at a time.
   double velocity_duhamel(double y, double z, double t) const;
   // The one-dimensional start-up factor theta on (-half, half): 1 at s = 0, 0 on the walls.
   double heat_factor(double x, double half, double s) const;
