@@ -107,7 +107,8 @@ TEST_CASE("case modules: a case's sections are its own; another case's keys are 
     CHECK_THAT(e.what(), Catch::Contains("shock_tube: is not used by case 'couette' (its own sections: geometry)"));
   }
   // Each module writes its sections back so that the resolved YAML loads to the same settings.
-  for (const auto* f : {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube", "dam_break"}) {
+  for (const auto* f : {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube", "dam_break", "duct_3d",
+                        "beltrami_3d"}) {
     INFO(f);
     const Config c = load_config(base + f + ".yaml");
     const Config r = load_config_string(to_yaml(c));

@@ -14,11 +14,14 @@ CaseModule hydrostatic_module();
 CaseModule cavity_module();
 CaseModule shock_tube_module();
 CaseModule dam_break_module();
+CaseModule duct_module();
+CaseModule beltrami_module();
 
 const std::vector<CaseModule>& case_modules() {
   static const std::vector<CaseModule> all = {
       couette_module(), poiseuille_module(), taylor_green_module(), hydrostatic_module(),
       cavity_module(),  shock_tube_module(), dam_break_module(),
+      duct_module(),    beltrami_module(),
   };
   return all;
 }

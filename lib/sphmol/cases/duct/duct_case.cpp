@@ -1,0 +1,114 @@
+#include "sphmol/cases/duct/duct_case.hpp"
+#include "sphmol/cases/duct/duct_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/rhs/assemble.hpp"
+#include "sphmol/scenes/lattice_mass.hpp"
+
+namespace sphmol {
+
+namespace {
+
+// A whole number of spacings in `length`, or an error naming `key`.
+int whole(double length, double dx, const std::string& key) {
+  const long n = std::lround(length / dx);
+  if (n <= 0 || std::abs(n * dx - length) > 1e-6 * length)
+    throw std::invalid_argument(key + ": must be a whole number of particle spacings (" + std::to_string(dx) + " m)");
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+std::unique_ptr<SphSystem<3>> DuctCase::build(const Config& config) {
+  const auto& s = config.settings<DuctSettings>();
+  const auto& disc = config.discretization;
+  const double a = s.half_width_y, b = s.half_width_z;
+  ref_ = DuctSeries{a, b, config.fluid.kinematic_viscosity, config.fluid.body_force.empty() ? 0.0 : config.fluid.body_force[0]};
+  length_ = s.length;
+  // particles_across counts fluid particles across the y width 2a.
+  const double dx = disc.particles_across > 0 ? 2.0 * a / disc.particles_across : disc.spacing;
+  whole(2.0 * a, dx, "geometry.half_widths");
+  whole(2.0 * b, dx, "geometry.half_widths");
+  whole(length_, dx, "geometry.length");
+  spacing_ = dx;
+  const double h = disc.smoothing_ratio * dx;
+  const double support = kernel_info<3>(disc.kernel).support * h;
+  const int layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support / dx));
+
+  const geometry::Vec<3> lo{0.0, -a, -b}, hi{length_, a, b};
+  geometry::Lattice<3> lattice;
+  lattice.spacing = dx;
+  lattice.origin = lo;
+  const double rho0 = config.fluid.density;
+  const double m = lattice_particle_mass<3>(disc.kernel, rho0, dx, h);
+  Particles<3> P;
+  lattice.for_each_in(geometry::Bounds<3>{lo, hi}, [&](const geometry::Vec<3>& p) {
+    P.add(Kind::Fluid, {p[0], p[1], p[2]}, {0.0, 0.0, 0.0}, m, rho0);
+  });
+  // The x faces are open: the duct continues periodically there.
+  const auto walls = geometry::box_container_walls<3>(lo, hi, {true, true, false, false, false, false}, lattice, layers * dx);
+  for (const auto& w : walls)
+    P.add(Kind::Wall, {w.x[0], w.x[1], w.x[2]}, {0.0, 0.0, 0.0}, m, rho0, {w.normal[0], w.normal[1], w.normal[2]}, w.depth);
+  Domain<3> domain;
+  domain.lo = {0.0, -a - layers * dx, -b - layers * dx};
+  domain.hi = {length_, a + layers * dx, b + layers * dx};
+  domain.periodic = {true, false, false};
+  return assemble_system<3>(config, std::move(P), domain, dx);
+}
+
+nlohmann::json DuctCase::measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) {
+  const auto& lay = sys.layout();
+  const std::size_t n = sys.particles().n_fluid;
+  const double umax = ref_.centre_velocity();
+  double sum2 = 0.0, emax = 0.0, cross = 0.0, peak = 0.0, peak_exact = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    // A particle pushed onto or past a wall (it should not be) is measured at the wall.
+    const double py = std::clamp(y[lay.position(1) + i], -ref_.a, ref_.a);
+    const double pz = std::clamp(y[lay.position(2) + i], -ref_.b, ref_.b);
+    const double u = y[lay.velocity(0) + i];
+    const double ue = ref_.velocity(py, pz, t);
+    const double e = std::abs(u - ue);
+    sum2 += e * e;
+    emax = std::max(emax, e);
+    cross = std::max(cross, std::hypot(y[lay.velocity(1) + i], y[lay.velocity(2) + i]));
+    peak = std::max(peak, u);
+    peak_exact = std::max(peak_exact, ue);
+  }
+  t_.push_back(t);
+  peak_sph_.push_back(peak);
+  peak_exact_.push_back(peak_exact);
+  if (out.enabled) {
+    std::ostringstream s;
+    s << "t [s],u_peak_sph [m/s],u_peak_exact [m/s]\n" << std::setprecision(12);
+    for (std::size_t k = 0; k < t_.size(); ++k) s << t_[k] << ',' << peak_sph_[k] << ',' << peak_exact_[k] << '\n';
+    out.write("peak.csv", s.str());
+  }
+  const double rms = n > 0 ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
+  return {{"t", t}, {"e_rms", rms / umax}, {"e_max", emax / umax}, {"e_cross", cross / umax}};
+}
+
+void DuctCase::annotate(nlohmann::json& summary) const {
+  const double umean = ref_.mean_velocity();
+  summary["duct"] = {{"half_width_y", ref_.a},
+                     {"half_width_z", ref_.b},
+                     {"length", length_},
+                     {"body_force", ref_.g},
+                     {"u_max", ref_.centre_velocity()},
+                     {"u_mean", umean},
+                     // Hydraulic diameter 4 A / perimeter = 4 a b / (a + b).
+                     {"Re_hydraulic", umean * 4.0 * ref_.a * ref_.b / (ref_.a + ref_.b) / ref_.nu},
+                     {"viscous_time", std::min(ref_.a, ref_.b) * std::min(ref_.a, ref_.b) / ref_.nu}};
+  summary["discretization"]["spacing"] = spacing_;
+  summary["csv_files"]["peak.csv"] =
+      "largest particle speed u_x and the largest exact start-up speed at the particles, at every output time";
+}
+
+}  // namespace sphmol

@@ -1,0 +1,35 @@
+#pragma once
+// Body-force-driven laminar flow in a rectangular duct |y| < a, |z| < b, periodic in x, started from
+// rest (reference/duct_series.hpp). The fluid fills the cubic lattice of the box [0, Lx] x [-a, a] x
+// [-b, b]; wall particles continue the lattice beyond the four side faces (the x faces are open: the
+// duct is periodic there), enough layers to fill the kernel support. fluid.body_force = [g, 0, 0]
+// drives the flow. Errors at each output time, over the fluid particles, against the start-up series
+// at the particles' positions and relative to the steady centre speed u_max:
+//   e_rms = sqrt(mean_i (u_i - u_exact)^2) / u_max,  e_max = max_i |u_i - u_exact| / u_max,
+//   e_cross = max_i sqrt(v_i^2 + w_i^2) / u_max (the exact flow has none).
+// peak.csv: the largest particle speed and the exact speed's largest value over the particles, per output.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/reference/duct_series.hpp"
+#include "sphmol/run/case.hpp"
+
+namespace sphmol {
+
+class DuctCase final : public Case<3> {
+ public:
+  std::unique_ptr<SphSystem<3>> build(const Config& config) override;
+  std::string reference() const override { return "duct_series (rectangular-duct start-up, Fourier series)"; }
+  double velocity_scale(const Config&) const override { return ref_.centre_velocity(); }
+  nlohmann::json measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) override;
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  DuctSeries ref_{1.0, 1.0, 1.0, 0.0};
+  double length_ = 0.0, spacing_ = 0.0;
+  std::vector<double> t_, peak_sph_, peak_exact_;
+};
+
+}  // namespace sphmol
