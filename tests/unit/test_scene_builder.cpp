@@ -76,6 +76,8 @@ TEST_CASE("scene builder: a hydrostatic tank gives the box scene's particles exa
     CHECK(s.domain.periodic[d] == box.domain.periodic[d]);
   }
   CHECK_FALSE(s.ghost);
+  CHECK_FALSE(s.fills_domain);
+  CHECK(s.open_faces);
 }
 
 TEST_CASE("scene builder: a circular obstacle removes exactly the fluid points within half a spacing of it", "[scene]") {
@@ -156,6 +158,8 @@ TEST_CASE("scene builder: a cylinder through a 3D box, cut at the domain faces",
       CHECK(P.wall_normal[2][i] == Approx(0.0).margin(1e-6));  // the side, not the far-away caps
     }
   CHECK(body == expected_body);
+  CHECK(s.fills_domain);  // around the cylinder
+  CHECK_FALSE(s.open_faces);
 }
 
 TEST_CASE("scene builder: overlapping fluid bodies place each lattice point once", "[scene]") {
@@ -264,6 +268,8 @@ TEST_CASE("scene builder: initial velocities and a uniform pressure from the bod
   }
   CHECK(s.domain.periodic[0]);
   CHECK(s.domain.periodic[1]);
+  CHECK(s.fills_domain);
+  CHECK_FALSE(s.open_faces);
   CHECK(s.domain.lo[0] == 0.0);
   CHECK(s.domain.hi[1] == 1.0);
 }

@@ -9,6 +9,7 @@
 
 #include "scene_test_support.hpp"
 #include "sphmol/scene/expression.hpp"
+#include "sphmol/scene/scene_yaml.hpp"
 
 using namespace sphmol;
 using scene_test::read;
@@ -227,4 +228,31 @@ TEST_CASE("scene reader: every malformed scene is an error at its key and line",
     INFO(c.yaml);
     CHECK(read_error(c.yaml, c.dim) == c.error);
   }
+}
+
+TEST_CASE("scene reader: the resolved scene YAML reads back to itself, defaults filled in", "[scene]") {
+  const std::string text = R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 0.6], boundaries: [periodic, wall], open_faces: [y_hi]}
+  fluid:
+    - shape:
+        type: difference
+        shapes:
+          - {type: box, lo: [0, 0], hi: [1, 0.4]}
+          - {type: polygon, vertices: [[0.1, 0.1], [0.3, 0.1], [0.2, 0.3]]}
+      velocity: ["0.1*sin(2*pi*x)", 0]
+    - shape: {type: plane, point: [0, 0.45], normal: [0, 1]}
+      lattice: hexagonal
+      pressure: 12.5
+  walls:
+    - shape: {type: sphere, centre: [0.5, 0.2], radius: 0.1}
+      velocity: [0.25, 0]
+      layers: 3
+)yaml";
+  const std::string once = scene_to_yaml(read(text, 2));
+  CHECK(scene_to_yaml(read(once, 2)) == once);
+  CHECK_THAT(once, Catch::Contains("boundaries: [periodic, wall]\n    open_faces: [y_hi]"));
+  CHECK_THAT(once, Catch::Contains("velocity: [\"0.1*sin(2*pi*x)\", \"0\"]"));
+  CHECK_THAT(once, Catch::Contains("lattice: hexagonal\n      velocity: [0, 0]\n      pressure: 12.5"));
+  CHECK_THAT(once, Catch::Contains("- name: \"wall0\"\n      shape: {type: sphere, centre: [0.5, 0.2], radius: 0.1}\n      layers: 3\n"
+                                   "      velocity: [0.25, 0]\n      belt: false"));
 }

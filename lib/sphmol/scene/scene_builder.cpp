@@ -228,6 +228,24 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     }
     out.fluid_counts.push_back(pts.size());
   }
+  {
+    // The volume the fluid could fill: the cubic lattice cells of the domain outside the wall bodies
+    // (by the same half-spacing rule), against the cells the fluid particles stand for.
+    std::size_t free_cells = 0;
+    cubic.for_each_in(box, [&](const Vec<D>& p) {
+      for (const auto& solid : solids)
+        if (solid->signed_distance(p) < 0.5 * dx - tol) return;
+      ++free_cells;
+    });
+    double fluid_volume = 0.0;
+    for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+      Lattice<D> lat = cubic;
+      if (spec.fluid[k].lattice == LatticeType::hexagonal) lat.type = LatticeType::hexagonal;
+      fluid_volume += static_cast<double>(out.fluid_counts[k]) * lat.cell_volume();
+    }
+    out.fills_domain = fluid_volume >= 0.99 * static_cast<double>(free_cells) * cubic.cell_volume();
+    for (int f = 0; f < 2 * D; ++f) out.open_faces = out.open_faces || (dom.boundary[f / 2] != AxisBoundary::periodic && dom.open[f]);
+  }
   add_position_noise(out.particles, disc.position_noise * dx);
 
   // Domain walls.

@@ -35,6 +35,10 @@ struct BuiltScene {
   int wall_layers = 0;                     // layers of the domain walls
   std::vector<std::string> body_names;     // wall bodies, by Particles::body index
   std::vector<std::size_t> fluid_counts;   // particles of each fluid body
+  // The fluid occupies the whole domain outside the wall bodies (to 1 % by volume): no free surface
+  // unless a face is open.
+  bool fills_domain = false;
+  bool open_faces = false;                 // some face of the domain is open
 };
 
 // The particle spacing of the scene: discretization.spacing, or the domain's x length over
