@@ -370,8 +370,8 @@ TEST_CASE("scene builder: every scene that makes no sense is an error at its lin
     Config a = c;
     a.discretization.spacing = 0.0;
     a.discretization.particles_across = 7;
-    CHECK(error_of("scene:\n  domain: {lo: [0, 0], hi: [1, 1]}\n  fluid:\n    - shape: {type: box, lo: [0, 0], hi: [1, 0.5]}\n", a) ==
-          "scene.yaml:2: scene.domain.hi: the domain length along y (1 m) is not a whole number of the spacing 0.142857 m (a wall "
+    CHECK(error_of("scene:\n  domain: {lo: [0, 0], hi: [1, 0.5]}\n  fluid:\n    - shape: {type: box, lo: [0, 0], hi: [1, 0.25]}\n", a) ==
+          "scene.yaml:2: scene.domain.hi: the domain length along y (0.5 m) is not a whole number of the spacing 0.142857 m (a wall "
           "axis needs one, so the lattice meets the faces half a spacing inside)");
   }
 }

@@ -170,17 +170,25 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     }
     std::vector<Vec<D>> pts;
     std::size_t filled = 0;
-    lat.for_each_in(b, [&](const Vec<D>& p) {
-      if (!(s->signed_distance(p) < 0.0)) return;
+    lat.for_each_in(b, [&](Vec<D> p) {
+      // On a periodic face (the shifted hexagonal rows put points there) the point on the upper face
+      // stands for both: tested just inside, placed at the lower face.
+      Vec<D> q = p;
+      for (int d = 0; d < D; ++d) {
+        if (dom.boundary[d] != AxisBoundary::periodic) continue;
+        if (p[d] > box.hi[d] - tol) q[d] = box.hi[d] - tol, p[d] -= box.hi[d] - box.lo[d];
+        else if (p[d] < box.lo[d] + tol) return;  // the image of the point on the upper face, which counts
+      }
+      if (!(s->signed_distance(q) < 0.0)) return;
       ++filled;
       // Already placed by an earlier fluid body: on the same lattice exactly the points inside it; on
       // another lattice also those closer than half a spacing to it.
       for (std::size_t j = 0; j < fluid_shapes.size(); ++j) {
         const double margin = spec.fluid[j].lattice == f.lattice ? 0.0 : 0.5 * dx - tol;
-        if (fluid_shapes[j]->signed_distance(p) < margin) return;
+        if (fluid_shapes[j]->signed_distance(q) < margin) return;
       }
       for (const auto& solid : solids)
-        if (solid->signed_distance(p) < 0.5 * dx - tol) return;
+        if (solid->signed_distance(q) < 0.5 * dx - tol) return;
       // A lattice other than the walls' may come closer than half a spacing to a domain wall.
       for (int d = 0; d < D; ++d) {
         if (dom.boundary[d] != AxisBoundary::wall) continue;

@@ -27,6 +27,13 @@ std::string quoted(const std::string& s) {
   return e.c_str();
 }
 
+// A plain number as it is, any other expression quoted (so it reads back as the same text).
+std::string scalar(const std::string& text) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  return ec == std::errc{} && end == text.data() + text.size() && !text.empty() ? text : quoted(text);
+}
+
 std::string shape(const ShapeSpec& s) {
   std::string out = "{type: " + s.type;
   if (s.type == "box") out += ", lo: " + list(s.lo) + ", hi: " + list(s.hi);
@@ -68,7 +75,7 @@ std::string scene_to_yaml(const SceneSpec& spec) {
     y << "    - shape: " << shape(b.shape) << "\n      lattice: "
       << (b.lattice == geometry::LatticeType::hexagonal ? "hexagonal" : "cubic") << "\n      velocity: [";
     for (int a = 0; a < dim; ++a)
-      y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : quoted(b.velocity[static_cast<std::size_t>(a)]->text()));
+      y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : scalar(b.velocity[static_cast<std::size_t>(a)]->text()));
     y << "]\n      pressure: " << (b.hydrostatic ? std::string("hydrostatic") : num(b.pressure)) << "\n";
   }
   if (spec.walls.empty()) {
