@@ -13,6 +13,7 @@
 
 #include "scene_test_support.hpp"
 #include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/half_space_shape.hpp"
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 
@@ -315,6 +316,14 @@ TEST_CASE("scene builder: a plane cuts the fluid (a sloping free surface) and ca
       expected += x + y - 0.5 < 0.0 && y - 0.2 >= 0.5 * dx - 1e-12;
     }
   CHECK(s.particles.n_fluid == expected);
+  // The half-space itself is unbounded: the kit refuses to fill it uncut.
+  geometry::Lattice<2> lat;
+  lat.spacing = dx;
+  const geometry::HalfSpaceShape<2> below({0.0, 0.2}, {0.0, 1.0});
+  CHECK(below.signed_distance({3.0, 0.5}) == Approx(0.3));
+  CHECK(below.bounds().hi[1] == 0.2);
+  CHECK(std::isinf(below.bounds().lo[1]));
+  CHECK_THROWS_WITH(geometry::fill<2>(below, lat), Catch::Contains("unbounded"));
   for (std::size_t i = s.particles.n_fluid; i < s.particles.size(); ++i)
     if (s.particles.body[i] == 0) {
       CHECK(s.particles.x[1][i] < 0.2);
