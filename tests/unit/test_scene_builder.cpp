@@ -79,6 +79,14 @@ TEST_CASE("scene builder: a hydrostatic tank gives the box scene's particles exa
   CHECK_FALSE(s.ghost);
   CHECK_FALSE(s.fills_domain);
   CHECK(s.open_faces);
+  // The bound used before building holds, and is not far off for a tank mostly full.
+  const double bound = scene_particle_bound(read(R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 0.6], boundaries: [wall, wall], open_faces: [y_hi]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 0.5]}
+)yaml", 2), c);
+  CHECK(bound >= static_cast<double>(P.size()));
+  CHECK(bound < 2.0 * static_cast<double>(P.size()));
 }
 
 TEST_CASE("scene builder: a circular obstacle removes exactly the fluid points within half a spacing of it", "[scene]") {

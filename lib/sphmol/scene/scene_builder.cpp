@@ -88,6 +88,20 @@ double scene_spacing(const SceneSpec& spec, const Config& config) {
   return dx;
 }
 
+double scene_particle_bound(const SceneSpec& spec, const Config& config) {
+  const double dx = scene_spacing(spec, config);
+  const auto& disc = config.discretization;
+  const double support = (spec.dimension == 2 ? kernel_info<2>(disc.kernel).support : kernel_info<3>(disc.kernel).support) *
+                         disc.smoothing_ratio;
+  const int layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support));
+  // Hexagonal rows are 2/sqrt(3) denser than the cubic lattice.
+  double n = 2.0 / std::sqrt(3.0);
+  for (int d = 0; d < spec.dimension; ++d)
+    n *= std::ceil((spec.domain.hi[d] - spec.domain.lo[d]) / dx) + 1.0 +
+         (spec.domain.boundary[d] == AxisBoundary::periodic ? 0.0 : 2.0 * layers);
+  return n;
+}
+
 template <int D>
 BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   using namespace geometry;

@@ -46,6 +46,11 @@ struct BuiltScene {
 // number of spacings long.
 double scene_spacing(const SceneSpec& spec, const Config& config);
 
+// An upper bound on the particle count without building: the lattice points of the domain box with
+// the domain walls' layers around it (wall bodies lie inside it). For refusing a scene too large for
+// memory before anything is allocated. Throws as scene_spacing.
+double scene_particle_bound(const SceneSpec& spec, const Config& config);
+
 // Throws ConfigError (located) for every inconsistency; `spec.dimension` must be D.
 template <int D>
 BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config);
