@@ -17,7 +17,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/time/integrator.hpp"
 
 namespace {
@@ -28,7 +28,7 @@ struct DamBreak {
   std::vector<double> y;  // the state the integrator advances in place (declared first: outlives it)
   std::unique_ptr<sphmol::Integrator> integrator;
   explicit DamBreak(const sphmol::Config& config)
-      : sys(sphmol::case_registry().at(config.case_name).d2()->build(config)),
+      : sys(sphmol::make_case<2>(config)->build(config)),
         y(sys->initial_state()),
         integrator(sphmol::make_integrator(config.time)) {
     integrator->initialize(*sys, 0.0, y.data());

@@ -27,7 +27,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/rhs/assemble.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 #include "sphmol/time/integrator.hpp"
 
@@ -78,7 +78,7 @@ sphmol::Config dam_break(long n, const std::string& search) {
 }
 
 std::unique_ptr<sphmol::SphSystem<2>> build(const sphmol::Config& c) {
-  auto cs = sphmol::case_registry().at(c.case_name).d2();
+  auto cs = sphmol::make_case<2>(c);
   return cs->build(c);
 }
 

@@ -1,5 +1,6 @@
 // Blow-up detection end to end (exit code 3, status and cause in summary.json, last good state),
 // conservation diagnostics, and the new integrators on a short Couette run.
+#include "sphmol/cases/channel/channel_settings.hpp"
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -106,7 +107,7 @@ TEST_CASE("input errors found by the scene or the size estimate are exit 2 with 
   };
   const std::vector<Bad> bad = {
       {"dam_break", {"fluid.body_force=[0, 0]"}, "fluid.body_force: case 'dam_break' needs gravity"},
-      {"dam_break", {"discretization.wall_pressure=rest", "discretization.boundary=ghost"}, "discretization.boundary: case 'dam_break' builds its tank from wall particles"},
+      {"dam_break", {"discretization.wall_pressure=rest", "discretization.boundary=ghost"}, "discretization.boundary: 'ghost' is not available for case 'dam_break': the tank is built from wall particles"},
       {"couette", {"discretization.particles_across=10"}, ": geometry.channel_length: the periodic length"},
       {"couette", {"fluid.kinematic_viscosity=0"}, "fluid.kinematic_viscosity: case 'couette' is driven by viscosity"},
       {"couette", {"discretization.particles_across=1000000000"}, "discretization.particles_across: the run needs about"},
@@ -187,7 +188,7 @@ TEST_CASE("conservation: Couette y-momentum stays near 0 and a stable run report
   CHECK(s["status"] == "completed");
   const auto& cons = s["conservation"];
   REQUIRE(cons["times"].size() == 3);
-  const double M = cons["fluid_mass"].get<double>(), v0 = c.geometry.wall_velocity;
+  const double M = cons["fluid_mass"].get<double>(), v0 = c.settings<ChannelSettings>().wall_velocity;
   const double px = cons["momentum"].back()[0].get<double>();
   const double py_drift = cons["momentum_drift"][1].get<double>();
   INFO("Px = " << px << ", Py drift = " << py_drift << ", M v0 = " << M * v0);

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/time/integrator.hpp"
 
 using namespace sphmol;
@@ -31,7 +31,7 @@ Outcome run_steps(const std::string& file, const std::vector<std::string>& overr
                   int steps) {
   omp_set_num_threads(threads);
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + file, overrides);
-  auto cs = case_registry().at(c.case_name).d2();
+  auto cs = make_case<2>(c);
   auto sys = cs->build(c);
   sys->set_reorder(reorder);
   Outcome o;
@@ -142,7 +142,7 @@ TEST_CASE("one RHS evaluation with a reordered workspace equals the plain one to
     std::vector<double> f[2];
     std::size_t n = 0;
     for (int r = 0; r < 2; ++r) {
-      auto cs = case_registry().at(c.case_name).d2();
+      auto cs = make_case<2>(c);
       auto sys = cs->build(c);
       sys->set_reorder(r == 1);
       f[r].assign(y.size(), 0.0);
@@ -150,7 +150,7 @@ TEST_CASE("one RHS evaluation with a reordered workspace equals the plain one to
       n = sys->layout().n;
       // Per-particle outputs (density(), pressure(), ...) come back in state order.
       if (r == 1) {
-        auto ref = case_registry().at(c.case_name).d2()->build(c);
+        auto ref = make_case<2>(c)->build(c);
         std::vector<double> g(y.size());
         ref->rhs(0.1, y.data(), g.data());
         // (density, not pressure: at rest p = c^2 (rho - rho0) is round-off noise.)

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/time/integrator.hpp"
 
 using namespace sphmol;
@@ -40,7 +40,7 @@ std::vector<Case> cases() {
   };
 }
 
-std::unique_ptr<SphSystem<2>> build(const Config& c) { return case_registry().at(c.case_name).d2()->build(c); }
+std::unique_ptr<SphSystem<2>> build(const Config& c) { return make_case<2>(c)->build(c); }
 
 std::vector<double> state_after(const Config& c, int steps) {
   auto sys = build(c);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/run/run_case.hpp"
 
 using namespace sphmol;
@@ -26,7 +26,7 @@ TEST_CASE("output: hydrostatic pressure error is measured on the output state", 
   const double reported = s["errors"].back()["p_rms"].get<double>();
 
   // The same measurement from a fresh system evaluated at exactly (t_end, y).
-  auto fresh = case_registry().at("hydrostatic").d2();
+  auto fresh = make_case<2>(c);
   auto sys = fresh->build(c);
   std::vector<double> ydot(sys->size());
   sys->rhs(0.05, y.data(), ydot.data());

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/time/integrator.hpp"
 
 using namespace sphmol;
@@ -42,7 +42,7 @@ Mismatch repeat_after_other_state(const std::string& file, const std::vector<std
                                   double factor) {
   omp_set_num_threads(1);
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + file, overrides);
-  auto sys = case_registry().at(c.case_name).d2()->build(c);
+  auto sys = make_case<2>(c)->build(c);
   std::vector<double> y = sys->initial_state();
   auto integ = make_integrator(c.time);
   integ->initialize(*sys, 0.0, y.data());
@@ -99,7 +99,7 @@ std::vector<double> poiseuille_state(const std::vector<std::string>& overrides, 
   std::vector<std::string> o{"time.t_end=0.1", "discretization.particles_across=20"};
   o.insert(o.end(), overrides.begin(), overrides.end());
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/poiseuille.yaml", o);
-  auto sys = case_registry().at(c.case_name).d2()->build(c);
+  auto sys = make_case<2>(c)->build(c);
   std::vector<double> y = sys->initial_state();
   auto integ = make_integrator(c.time);
   integ->initialize(*sys, 0.0, y.data());  // evaluates f once: the CFL limit is known from here on

@@ -1,5 +1,6 @@
 // Valid configs: values, defaults, the shipped config/defaults.yaml, output-time resolution,
 // and the to_yaml round trip.
+#include "sphmol/cases/channel/channel_settings.hpp"
 #include <catch2/catch.hpp>
 
 #include "config_test_base.hpp"
@@ -21,9 +22,9 @@ void require_same(const Config& a, const Config& b) {
   CHECK(a.fluid.eos.type == b.fluid.eos.type);
   CHECK(a.fluid.eos.sound_speed == b.fluid.eos.sound_speed);
   CHECK(a.fluid.body_force == b.fluid.body_force);
-  CHECK(a.geometry.channel_height == b.geometry.channel_height);
-  CHECK(a.geometry.channel_length == b.geometry.channel_length);
-  CHECK(a.geometry.wall_velocity == b.geometry.wall_velocity);
+  REQUIRE(a.case_settings);
+  REQUIRE(b.case_settings);
+  CHECK(a.case_settings->to_yaml() == b.case_settings->to_yaml());
   const auto &da = a.discretization, &db = b.discretization;
   CHECK(da.particles_across == db.particles_across);
   CHECK(da.spacing == db.spacing);
@@ -63,9 +64,9 @@ TEST_CASE("config: a valid config loads with its values and the defaults", "[con
   CHECK(c.fluid.density == 1000.0);
   CHECK(c.fluid.kinematic_viscosity == 1.0e-6);
   CHECK(c.fluid.eos.sound_speed == 0.01);
-  CHECK(c.geometry.channel_height == 1.0e-3);
-  CHECK(c.geometry.channel_length == 5.0e-4);
-  CHECK(c.geometry.wall_velocity == 1.25e-5);
+  CHECK(c.settings<ChannelSettings>().channel_height == 1.0e-3);
+  CHECK(c.settings<ChannelSettings>().channel_length == 5.0e-4);
+  CHECK(c.settings<ChannelSettings>().wall_velocity == 1.25e-5);
   CHECK(c.discretization.particles_across == 20);
   CHECK(c.time.t_end == 0.5);
   // Defaults, resolved.
@@ -132,7 +133,7 @@ output: {directory: "res/run 1", times: [2], profiles: no}
   CHECK(c.fluid.kinematic_viscosity == 1e-6);
   CHECK(c.fluid.eos.sound_speed == 3.0);
   CHECK(c.fluid.body_force == std::vector<double>{2e-4, -1.0});
-  CHECK(c.geometry.channel_height == 2.0);
+  CHECK(c.settings<ChannelSettings>().channel_height == 2.0);
   CHECK(c.discretization.particles_across == 0);
   CHECK(c.discretization.spacing == 0.05);
   CHECK(c.discretization.smoothing_ratio == 1.5);

@@ -8,7 +8,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/config/scene_checks.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 
 using namespace sphmol;
 
@@ -29,16 +29,14 @@ std::string load_error(const std::string& name, const std::vector<std::string>& 
 // neighbour search checks the periodic lengths); returns the exception text, or "" on success.
 std::string build_error(const Config& c) {
   try {
-    const auto& f = case_registry().at(c.case_name);
-    const auto run = [&](auto& factory) {
-      auto cs = factory();
+    const auto run = [&](auto cs) {
       auto sys = cs->build(c);
       std::vector<double> y = sys->initial_state(), ydot(y.size());
       sys->rhs(0.0, y.data(), ydot.data());
     };
-    if (c.dimension == 1) run(f.d1);
-    else if (c.dimension == 2) run(f.d2);
-    else run(f.d3);
+    if (c.dimension == 1) run(make_case<1>(c));
+    else if (c.dimension == 2) run(make_case<2>(c));
+    else run(make_case<3>(c));
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -50,17 +48,17 @@ std::string build_error(const Config& c) {
 TEST_CASE("scene checks: inputs the scene or the assembly used to reject at run time are config errors", "[config][scene]") {
   // Each of these loaded and then failed in the scene builder or the assembly ("run failed", exit 1).
   CHECK(load_error("dam_break", {"fluid.body_force=[0, 0]"}) ==
-        "--set fluid.body_force=[0, 0]: fluid.body_force: case 'dam_break' needs gravity [0, -g] with g > 0, e.g. body_force: [0, -9.81]");
+        "--set fluid.body_force=[0, 0]: fluid.body_force: case 'dam_break' needs gravity along the last axis, pointing down, e.g. body_force: [0, -9.81]");
   CHECK(load_error("dam_break", {"discretization.wall_pressure=rest", "discretization.boundary=ghost"}) ==
-        "--set discretization.boundary=ghost: discretization.boundary: case 'dam_break' builds its tank from wall particles "
-        "(got 'ghost'; allowed: wall_particles)");
+        "--set discretization.boundary=ghost: discretization.boundary: 'ghost' is not available for case 'dam_break': the tank "
+        "is built from wall particles (allowed: wall_particles)");
   CHECK(load_error("hydrostatic", {"fluid.body_force=[0.5, -9.81]"}).find("fluid.body_force: case 'hydrostatic' needs gravity") !=
         std::string::npos);
   CHECK(load_error("dam_break", {"fluid.eos={type: linear, sound_speed: 88.6}"}).find("fluid.eos: case 'dam_break' needs eos.type 'tait' or 'linear_relative'") !=
         std::string::npos);
   CHECK(load_error("taylor_green", {"geometry.box=[1, 0.5]"}).find("geometry.box[1]: 0.5 differs from box[0] = 1") != std::string::npos);
   CHECK(load_error("cavity", {"discretization.boundary=virtual_repulsive", "discretization.wall_model=prescribed", "discretization.repulsive={strength: 1}"})
-            .find("discretization.boundary: virtual_repulsive walls exert no shear") != std::string::npos);
+            .find("discretization.boundary: 'virtual_repulsive' is not available for case 'cavity': virtual_repulsive walls exert no shear") != std::string::npos);
   CHECK(load_error("taylor_green", {"fluid.kinematic_viscosity=0", "discretization.energy=true"}).find("discretization.energy: case 'taylor_green' provides no initial") !=
         std::string::npos);
   CHECK(load_error("cavity", {"discretization.pair_passes=fused", "discretization.viscosity=strain_rate"})

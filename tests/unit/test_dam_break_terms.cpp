@@ -13,7 +13,7 @@
 #include "sphmol/physics/density_diffusion.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 
 #include "workspace_pairs.hpp"
 
@@ -166,7 +166,7 @@ TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow; other exponen
 TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the expected particle counts", "[dam_break]") {
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                {"discretization.spacing=0.05"});
-  auto sys = case_registry().at("dam_break").d2()->build(c);
+  auto sys = make_case<2>(c)->build(c);
   const auto& L = sys->layout();
   const auto& P = sys->particles();
   CHECK(P.n_fluid == 20u * 40u);

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/run/health_check.hpp"
 #include "sphmol/run/health_limits.hpp"
 
@@ -36,11 +36,11 @@ TEST_CASE("health limits: velocity scales come from the scene", "[health]") {
   const auto scale = [](const std::string& file, const std::string& name, int dim = 2) {
     const Config c = shipped(file);
     if (dim == 1) {
-      auto k = case_registry().at(name).d1();
+      auto k = make_case<1>(c);
       k->build(c);
       return std::pair{k->velocity_scale(c), k->free_surface()};
     }
-    auto k = case_registry().at(name).d2();
+    auto k = make_case<2>(c);
     k->build(c);
     return std::pair{k->velocity_scale(c), k->free_surface()};
   };
@@ -58,7 +58,7 @@ TEST_CASE("health limits: velocity scales come from the scene", "[health]") {
 
 TEST_CASE("health check: kinetic energy gain, speed and density bounds end the run with a named cause", "[health]") {
   const Config c = shipped("taylor_green", {"discretization.particles_across=16"});
-  auto cs = case_registry().at("taylor_green").d2();
+  auto cs = make_case<2>(c);
   auto sys = cs->build(c);
   std::vector<double> y0 = sys->initial_state(), ydot(y0.size());
   sys->rhs(0.0, y0.data(), ydot.data());
@@ -99,7 +99,7 @@ TEST_CASE("health check: kinetic energy gain, speed and density bounds end the r
 TEST_CASE("health limits: free surfaces bound compression only; ideal gases have no speed or density bound", "[health]") {
   {
     const Config c = shipped("hydrostatic", {"discretization.particles_across=10"});
-    auto cs = case_registry().at("hydrostatic").d2();
+    auto cs = make_case<2>(c);
     auto sys = cs->build(c);
     const auto y0 = sys->initial_state();
     const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
@@ -110,7 +110,7 @@ TEST_CASE("health limits: free surfaces bound compression only; ideal gases have
   }
   {
     const Config c = shipped("shock_tube_1d");
-    auto cs = case_registry().at("shock_tube").d1();
+    auto cs = make_case<1>(c);
     auto sys = cs->build(c);
     const auto y0 = sys->initial_state();
     const HealthLimits lim = health_limits<1>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());

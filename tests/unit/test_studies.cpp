@@ -1,5 +1,6 @@
 // Study helpers: integrator lists, nominal orders from the SUNDIALS tables, observed-order
 // arithmetic, the cost at a target error (compare), and the stability classification.
+#include "sphmol/cases/shock_tube/shock_tube_settings.hpp"
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -117,11 +118,16 @@ TEST_CASE("stability: the sound speed factor scales c, for an ideal gas through 
   Config g;
   g.fluid.eos.type = "ideal_gas";
   g.fluid.eos.gamma = 1.4;
-  g.shock_tube.left = {1.0, 1.0, 0.0};
-  g.shock_tube.right = {0.25, 0.1795, 0.0};
+  g.case_name = "shock_tube";
+  auto st = std::make_shared<ShockTubeSettings>();
+  st->left = {1.0, 1.0, 0.0};
+  st->right = {0.25, 0.1795, 0.0};
+  g.case_settings = st;
   const double c0 = std::sqrt(1.4);
   CHECK(scale_sound_speed(g, 2.0) == Approx(2.0 * c0));
-  CHECK(g.shock_tube.left.pressure == Approx(4.0));
-  CHECK(g.shock_tube.right.pressure == Approx(4.0 * 0.1795));
-  CHECK(g.shock_tube.right.density == 0.25);  // densities unchanged: every state's c doubles
+  const auto& s = g.settings<ShockTubeSettings>();
+  CHECK(s.left.pressure == Approx(4.0));
+  CHECK(s.right.pressure == Approx(4.0 * 0.1795));
+  CHECK(s.right.density == 0.25);
+  CHECK(st->left.pressure == 1.0);  // the scaled states are a copy: the base config is unchanged  // densities unchanged: every state's c doubles
 }

@@ -14,10 +14,10 @@
 #include "mini_xml.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/vtk_observer.hpp"
-#include "sphmol/scenes/cavity_case.hpp"
-#include "sphmol/scenes/channel_case.hpp"
-#include "sphmol/scenes/hydrostatic_case.hpp"
-#include "sphmol/scenes/shock_tube_case.hpp"
+#include "sphmol/cases/cavity/cavity_case.hpp"
+#include "sphmol/cases/channel/channel_case.hpp"
+#include "sphmol/cases/hydrostatic/hydrostatic_case.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_case.hpp"
 #include "vtk_appended.hpp"
 
 using namespace sphmol;

@@ -18,14 +18,11 @@
 
 namespace sphmol {
 
-// The shared sections, already read, for the module to read its own keys from (`top`) and to
-// report a conflict with a shared key at that key's line.
-struct CaseReaders {
-  MapReader& top;
-  MapReader& fluid;
-  MapReader& discretization;
-  MapReader& time;
-  MapReader& output;
+// What a module's reader returns: the settings Config keeps, and the scene's size as the builder
+// will make it (particle counts, spacing, periodic lengths), for the shared checks.
+struct CaseRead {
+  std::shared_ptr<const CaseSettings> settings;
+  SceneSize size;
 };
 
 struct CaseModule {
@@ -36,15 +33,14 @@ struct CaseModule {
   bool uses_fluid_density = true;      // false: the case's own states give the densities
   bool provides_energy = false;        // the scene sets an initial internal energy (discretization.energy)
   bool position_noise = false;         // the scene applies discretization.position_noise
+  bool free_surface = false;           // the fluid has a free surface (no transport velocity there)
 
   // Case-specific defaults of shared keys, applied before the shared sections are read. May be empty.
   std::function<void(Config&)> defaults;
   // Reads the case's own sections from r.top and checks them, and the shared settings the case
-  // depends on, failing through the readers (key and line). Returns the settings Config keeps.
-  std::function<std::shared_ptr<const CaseSettings>(CaseReaders& r, const Config& c)> read;
-  // The scene's particle counts, spacing and periodic lengths, as the builder will compute them,
-  // checking that lengths are whole numbers of the spacing (errors through the readers).
-  std::function<SceneSize(CaseReaders& r, const Config& c)> size;
+  // depends on, failing through the readers (key and line): everything the scene builder would
+  // reject (lengths that are not whole numbers of the spacing, ...) is an error here.
+  std::function<CaseRead(CaseReaders& r, const Config& c)> read;
   // Scales every sound speed of the scene by `factor` (stability maps) and returns the sound speed
   // to report. Empty: fluid.eos.sound_speed is scaled.
   std::function<double(Config& c, double factor)> scale_sound_speed;
@@ -68,5 +64,8 @@ const std::vector<CaseModule>& case_modules();
 const CaseModule* find_case_module(const std::string& name);
 // The names of every registered case, for messages and documentation checks.
 std::vector<std::string> case_names();
+// The case config.case_name in dimension D; std::invalid_argument if it is unknown or not built in D.
+template <int D>
+std::unique_ptr<Case<D>> make_case(const Config& config);
 
 }  // namespace sphmol

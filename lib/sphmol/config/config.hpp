@@ -44,18 +44,6 @@ struct FluidConfig {
   double body_force_ramp = 0.0;      // [s] body force ramped in smoothly over this time; 0 = at once
 };
 
-struct GeometryConfig {
-  double channel_height = 0.0;  // l [m], required for couette/poiseuille, > 0
-  double channel_length = 0.0;  // periodic length in x [m], required, > 0
-  double wall_velocity = 0.0;   // Couette top-plate speed v0 [m/s]; must be 0 for poiseuille; cavity lid speed
-  // taylor_green / cavity: the box [Lx, Ly]; hydrostatic: the fluid column [width, depth]. Required there.
-  std::vector<double> box;
-  double velocity_amplitude = 1.0;  // taylor_green: U [m/s], > 0
-  double tube_length = 0.0;     // shock_tube: fluid extent in x, centred on the diaphragm at x = 0, > 0
-  double tube_width = 0.0;      // shock_tube: extent in y (periodic), > 0
-  std::vector<double> column;   // dam_break: the water column [width, height] at x = 0 of the tank `box`
-};
-
 struct RepulsiveConfig {  // Niedoba 2012, eq 2.76, for boundary: virtual_repulsive
   double strength = 0.0;  // D [m^2/s^2], required there, > 0
   double p1 = 12.0;       // > p2
@@ -79,14 +67,6 @@ struct TransportVelocityConfig {
   bool extra_stress = true;          // the A = rho v (v~ - v) term in the momentum equation
 };
 
-// The two initial states of the shock tube (Niedoba 2012, §3.2), left for x < 0, right for x >= 0.
-struct ShockTubeState {
-  double density = 0.0, pressure = 0.0, velocity = 0.0;
-};
-struct ShockTubeConfig {
-  ShockTubeState left, right;
-};
-
 struct DiscretizationConfig {
   int particles_across = 0;         // fluid particles across the channel height (> 0); or spacing
   double spacing = 0.0;             // particle spacing dx [m]; exactly one of the two is given
@@ -96,7 +76,7 @@ struct DiscretizationConfig {
   std::string momentum = "symmetric_117";          // symmetric_117 (Vukčević 2012, eq 117) | symmetric_116 (Vukčević 2012, eq 116)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (Vukčević 2012, eqs 117/122) | none (inviscid)
   double xsph = 0.0;                // XSPH epsilon (Vukčević et al. 2012, eq 21), 0 <= eps <= 1; 0 = off
-  double position_noise = 0.0;      // box scenes: seeded random displacement of the initial lattice [spacings], [0, 0.25]
+  double position_noise = 0.0;      // scenes that allow it: seeded random displacement of the initial lattice [spacings], [0, 0.25]
   std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive
   std::string wall_slip = "no_slip";               // ghost: no_slip | free_slip (all walls)
   // wall_particles: "rest" (walls keep rest density and its EOS pressure) or "extrapolated" (Adami 2012
@@ -157,14 +137,21 @@ struct OutputConfig {
 
 struct Config {
   std::string source;  // file path the config came from ("<string>" for in-memory)
-  std::string case_name;   // couette | poiseuille | taylor_green | hydrostatic | cavity | shock_tube | dam_break
-  int dimension = 2;       // 1, 2 or 3 (channel cases need 2)
+  std::string case_name;   // a registered case module (cases/registry.cpp)
+  int dimension = 2;       // 1, 2 or 3, as the case supports
   FluidConfig fluid;
-  GeometryConfig geometry;
   DiscretizationConfig discretization;
   TimeConfig time;
   OutputConfig output;
-  ShockTubeConfig shock_tube;  // case shock_tube only
+  // The case's own sections (geometry, initial states, ...), read by its module.
+  std::shared_ptr<const CaseSettings> case_settings;
+  // The case's settings as its own type; a mismatch is a programming error.
+  template <class T>
+  const T& settings() const {
+    const auto* s = dynamic_cast<const T*>(case_settings.get());
+    if (!s) throw std::logic_error("config: case '" + case_name + "' has no settings of the requested type");
+    return *s;
+  }
   // One-line remarks from loading that are not errors (e.g. output times past t_end dropped),
   // "LOCATION: key.path: text"; the caller prints them. Not part of to_yaml().
   std::vector<std::string> notices;

@@ -9,20 +9,16 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/io/input_file.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/erk_tables.hpp"
 #include "sphmol/config/scene_checks.hpp"
 #include "sphmol/config/yaml_reader.hpp"
+#include "sphmol/core/join.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
 
 namespace {
-
-std::string shown(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 std::string trim(std::string s) {
   const auto b = s.find_first_not_of(" \t");
@@ -30,10 +26,11 @@ std::string trim(std::string s) {
   return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
 }
 
-// Range check: "KEY: VALUE is out of range (allowed: ALLOWED)".
 void check(const MapReader& r, const std::string& key, bool ok, double value, std::string_view allowed) {
-  if (!ok) r.fail(key, shown(value) + " is out of range (allowed: " + std::string(allowed) + ")");
+  r.check(key, ok, value, allowed);
 }
+
+std::string shown(double v) { return number_text(v); }
 
 YAML::Node parse_yaml(const std::string& text, const std::string& name) {
   try {
@@ -106,32 +103,43 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   c.source = origin.file();
   YAML::Mark root_mark = root.Mark();
   if (root_mark.line < 0) root_mark = YAML::Mark();  // empty document: point at line 1
-  MapReader top(origin, root, "", root_mark,
-                {"case", "dimension", "fluid", "geometry", "discretization", "time", "output", "shock_tube"});
+  // The shared sections, and every section some case module owns; once the case is known, only
+  // its own sections are allowed.
+  const std::vector<std::string> shared = {"case", "dimension", "fluid", "discretization", "time", "output"};
+  std::vector<std::string> all_keys = shared;
+  for (const auto& m : case_modules())
+    for (const auto& k : m.sections)
+      if (std::find(all_keys.begin(), all_keys.end(), k) == all_keys.end()) all_keys.push_back(k);
+  MapReader top(origin, root, "", root_mark, all_keys);
 
-  c.case_name = top.choice("case", top.required(top.string("case"), "case",
-                                                "one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break"),
-                           {"couette", "poiseuille", "taylor_green", "hydrostatic", "cavity", "shock_tube", "dam_break"});
-  const bool shock = c.case_name == "shock_tube";
-  const bool channel_case = c.case_name == "couette" || c.case_name == "poiseuille";
+  const auto names = case_names();
+  c.case_name = top.choice("case", top.required(top.string("case"), "case", "one of: " + join(names)), names);
+  const CaseModule& module = *find_case_module(c.case_name);
+  {
+    std::vector<std::string> own = shared;
+    own.insert(own.end(), module.sections.begin(), module.sections.end());
+    for (const auto& k : top.keys_present())
+      if (std::find(own.begin(), own.end(), k) == own.end())
+        top.fail(k, "is not used by case '" + c.case_name + "'" +
+                        (module.sections.empty() ? std::string(" (it has no sections of its own)")
+                                                 : " (its own sections: " + join(module.sections) + ")"));
+  }
+  if (module.defaults) module.defaults(c);
   if (const auto d = top.integer("dimension")) {
     check(top, "dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
     c.dimension = static_cast<int>(*d);
   }
-  if (c.case_name == "shock_tube" && c.dimension == 3)
-    top.fail("dimension", "case 'shock_tube' needs dimension 1 or 2 (got 3)");
-  if (c.dimension != 2 && c.case_name != "shock_tube")
-    top.fail("dimension", "case '" + c.case_name + "' needs dimension 2 (got " +
+  if (!module.supports(c.dimension))
+    top.fail("dimension", "case '" + c.case_name + "' needs dimension " + module.dimensions_text() + " (got " +
                               std::to_string(c.dimension) + ")");
 
   // fluid
   MapReader fluid = top.section("fluid", {"density", "kinematic_viscosity", "eos", "body_force", "body_force_ramp"});
-  if (shock && fluid.has("density"))
-    fluid.fail("density", "is not used by case 'shock_tube' (its densities are shock_tube.left.density and "
-                          "shock_tube.right.density)");
-  if (!shock) {
-  c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
-  check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
+  if (!module.uses_fluid_density && fluid.has("density"))
+    fluid.fail("density", "is not used by case '" + c.case_name + "' (its initial states give the densities)");
+  if (module.uses_fluid_density) {
+    c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
+    check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
   }
   c.fluid.kinematic_viscosity = fluid.required(fluid.real("kinematic_viscosity"), "kinematic_viscosity",
                                                "nu in m^2/s, >= 0");
@@ -164,8 +172,6 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                            "artificial speed of sound c in m/s, > 0");
     check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
     }
-    if (shock && c.fluid.eos.type != "ideal_gas")
-      eos.fail("type", "case 'shock_tube' needs type 'ideal_gas' (got '" + c.fluid.eos.type + "')");
   }
   if (const auto f = fluid.reals("body_force")) {
     if (static_cast<int>(f->size()) != c.dimension)
@@ -177,89 +183,6 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
   if (const auto v = fluid.real("body_force_ramp")) c.fluid.body_force_ramp = *v;
   check(fluid, "body_force_ramp", c.fluid.body_force_ramp >= 0, c.fluid.body_force_ramp, ">= 0 s; 0 = at once");
-
-  // geometry
-  MapReader geo = top.section("geometry", {"channel_height", "channel_length", "wall_velocity", "box",
-                                           "velocity_amplitude", "tube_length", "tube_width", "column"});
-  if (shock) {
-    for (const char* k : {"channel_height", "channel_length", "wall_velocity"})
-      if (geo.has(k)) geo.fail(k, "is not used by case 'shock_tube' (it takes tube_length and tube_width)");
-    c.geometry.tube_length = geo.required(geo.real("tube_length"), "tube_length", "fluid extent in x, > 0");
-    check(geo, "tube_length", c.geometry.tube_length > 0, c.geometry.tube_length, "> 0");
-    if (c.dimension == 1) {
-      if (geo.has("tube_width")) geo.fail("tube_width", "is not used in dimension 1");
-    } else {
-    c.geometry.tube_width = geo.required(geo.real("tube_width"), "tube_width", "extent in y, > 0");
-    check(geo, "tube_width", c.geometry.tube_width > 0, c.geometry.tube_width, "> 0");
-    }
-    MapReader st = top.section("shock_tube", {"left", "right"});
-    for (const char* side : {"left", "right"}) {
-      MapReader s = st.section(side, {"density", "pressure", "velocity"});
-      ShockTubeState& q = std::string(side) == "left" ? c.shock_tube.left : c.shock_tube.right;
-      q.density = s.required(s.real("density"), "density", "> 0");
-      check(s, "density", q.density > 0, q.density, "> 0");
-      q.pressure = s.required(s.real("pressure"), "pressure", "> 0");
-      check(s, "pressure", q.pressure > 0, q.pressure, "> 0");
-      if (const auto v = s.real("velocity")) q.velocity = *v;
-    }
-  } else {
-  for (const char* k : {"tube_length", "tube_width"})
-    if (geo.has(k)) geo.fail(k, "is only used by case 'shock_tube'");
-  if (top.has("shock_tube")) top.fail("shock_tube", "is only used by case 'shock_tube'");
-  if (channel_case) {
-    c.geometry.channel_height = geo.required(geo.real("channel_height"), "channel_height",
-                                             "distance between the walls in m, > 0");
-    check(geo, "channel_height", c.geometry.channel_height > 0, c.geometry.channel_height, "> 0 m");
-    c.geometry.channel_length = geo.required(geo.real("channel_length"), "channel_length",
-                                             "periodic length in x in m, > 0");
-    check(geo, "channel_length", c.geometry.channel_length > 0, c.geometry.channel_length, "> 0 m");
-    if (geo.has("box")) geo.fail("box", "is for the box cases (taylor_green, hydrostatic, cavity), not '" + c.case_name + "'");
-  } else {
-    for (const char* k : {"channel_height", "channel_length"})
-      if (geo.has(k)) geo.fail(k, "is for the channel cases (couette, poiseuille); case '" + c.case_name + "' uses geometry.box");
-    const auto b = geo.required(geo.reals("box"), "box", "[Lx, Ly] in m (hydrostatic: [width, depth] of the water column)");
-    if (static_cast<int>(b.size()) != c.dimension)
-      geo.fail("box", "has " + std::to_string(b.size()) + " components, expected " + std::to_string(c.dimension));
-    for (std::size_t i = 0; i < b.size(); ++i)
-      if (b[i] <= 0) geo.fail_element("box", i, shown(b[i]) + " is out of range (allowed: > 0 m)");
-    c.geometry.box = b;
-  }
-  if (c.case_name == "dam_break") {
-    const auto col = geo.required(geo.reals("column"), "column", "[width, height] of the water column in m");
-    if (col.size() != 2) geo.fail("column", "has " + std::to_string(col.size()) + " components, expected 2");
-    for (std::size_t i = 0; i < 2; ++i)
-      if (col[i] <= 0 || col[i] > c.geometry.box[i])
-        geo.fail_element("column", i, shown(col[i]) + " is out of range (allowed: > 0 m and <= geometry.box[" +
-                                          std::to_string(i) + "] = " + shown(c.geometry.box[i]) + ")");
-    c.geometry.column = col;
-  } else if (geo.has("column")) {
-    geo.fail("column", "is the water column of case 'dam_break' only");
-  }
-  if (const auto v = geo.real("wall_velocity")) c.geometry.wall_velocity = *v;
-  if (const auto v = geo.real("velocity_amplitude")) {
-    if (c.case_name != "taylor_green") geo.fail("velocity_amplitude", "is the Taylor-Green amplitude U; only for case 'taylor_green'");
-    c.geometry.velocity_amplitude = *v;
-  }
-  check(geo, "velocity_amplitude", c.geometry.velocity_amplitude > 0, c.geometry.velocity_amplitude, "> 0 m/s");
-
-  // Case consistency: what drives the flow.
-  if (c.case_name == "poiseuille") {
-    if (c.geometry.wall_velocity != 0)
-      geo.fail("wall_velocity", "must be 0 for case 'poiseuille' (got " + shown(c.geometry.wall_velocity) +
-                                    "; a moving wall is case 'couette')");
-    if (c.fluid.body_force[0] == 0) {
-      const std::string what = "case 'poiseuille' needs a nonzero x-component (the driving force per "
-                               "unit mass, m/s^2), e.g. body_force: [1e-4, 0]";
-      if (fluid.has("body_force")) fluid.fail("body_force", what);
-      fluid.fail_missing("body_force", what);
-    }
-  } else if ((c.case_name == "couette" || c.case_name == "cavity") && c.geometry.wall_velocity == 0) {
-    const std::string what = c.case_name == "cavity" ? "case 'cavity' needs a nonzero lid speed in m/s"
-                                                     : "case 'couette' needs a nonzero top-plate speed v0 in m/s";
-    if (geo.has("wall_velocity")) geo.fail("wall_velocity", what);
-    geo.fail_missing("wall_velocity", what);
-  }
-  }
 
   // discretization
   MapReader disc = top.section("discretization",
@@ -303,26 +226,19 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.position_noise = *v;
       check(disc, "position_noise", d.position_noise >= 0 && d.position_noise <= 0.25, d.position_noise,
             "[0, 0.25] particle spacings; 0 = off");
-      if (d.position_noise > 0 && c.case_name != "taylor_green" && c.case_name != "cavity" && c.case_name != "hydrostatic")
-        disc.fail("position_noise", "is implemented for the box scenes (taylor_green, cavity, hydrostatic), not '" +
-                                        c.case_name + "'");
+      if (d.position_noise > 0 && !module.position_noise)
+        disc.fail("position_noise", "is not applied by case '" + c.case_name + "' (its scene is built without noise)");
     }
     if (const auto v = disc.string("boundary"))
       d.boundary = disc.choice("boundary", *v, {"wall_particles", "ghost", "virtual_repulsive"});
     if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris"});
     // Combinations that mean nothing are errors, not silently ignored keys.
     if (d.boundary != "wall_particles") {
-      if (channel_case || c.case_name == "taylor_green")
-        disc.fail("boundary", "'" + d.boundary + "' is implemented for the box cases with walls (hydrostatic, cavity) and the 2D shock tube, not '" +
-                                  c.case_name + "'");
       if (disc.has("wall_model") && d.wall_model == "morris")
         disc.fail("wall_model", "morris extrapolates through wall particles; boundary '" + d.boundary +
                                     "' has none (ghost velocities already carry the wall condition)");
       d.wall_model = "prescribed";
     }
-    if (shock && c.dimension == 1 && d.boundary != "wall_particles")
-      disc.fail("boundary", "the 1D shock tube has no side walls; '" + d.boundary + "' needs dimension 2");
-    if (shock) d.wall_slip = "free_slip";  // the tube's walls are free-slip (Niedoba 2012, §3.2); an inviscid gas
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
@@ -383,11 +299,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       check(tv, "step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
       if (const auto v = tv.boolean("extra_stress")) t.extra_stress = *v;
       // Its background pressure would pull a free surface inward, and it needs one constant c.
-      if (t.enabled && (c.case_name == "hydrostatic" || c.case_name == "shock_tube" || c.fluid.eos.type == "ideal_gas"))
+      if (t.enabled && (module.free_surface || c.fluid.eos.type == "ideal_gas"))
         disc.fail("transport_velocity", "needs a confined liquid with a constant sound speed (no free surface, not "
-                                        "ideal_gas); case '" + c.case_name + "' has none");
+                                        "ideal_gas); case '" + c.case_name + "' has " +
+                                        (module.free_surface ? "a free surface" : "a gas"));
     }
     if (const auto v = disc.boolean("energy")) d.energy = *v;
+    if (d.energy && !module.provides_energy)
+      disc.fail("energy", "case '" + c.case_name + "' provides no initial internal energy for the energy equation");
     if (const auto v = disc.string("smoothing_length"))
       d.smoothing_length = disc.choice("smoothing_length", *v, {"constant", "density", "ode"});
     // Combinations that have no meaning, named by both keys.
@@ -509,8 +428,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
-  SectionReaders readers{top, fluid, geo, disc, time, out};
-  check_scene(c, readers);
+  CaseReaders readers{top, fluid, disc, time, out};
+  CaseRead own = module.read(readers, c);
+  c.case_settings = std::move(own.settings);
+  check_scene(c, readers, own.size);
   return c;
 }
 

@@ -1,18 +1,22 @@
 #pragma once
-// What the scene builders (scenes/*.cpp) and the assembly (rhs/assemble.cpp) would reject, checked
-// while loading so that every input error names its key and line: lengths that are not whole
-// numbers of the spacing, periodic lengths shorter than two neighbour radii, case/term combinations
-// that cannot be built, a run too large for the machine's memory, and step or checkpoint counts
-// beyond time.max_steps. Called by the loader once every section has been read.
+// What the assembly (rhs/assemble.cpp) would reject, checked while loading so that every input
+// error names its key and line: periodic lengths shorter than two neighbour radii, term
+// combinations that cannot be built, a run too large for the machine's memory, and step or
+// checkpoint counts beyond time.max_steps. Called by the loader after the case module has read its
+// own keys (cases/case_module.hpp), which checks what its scene builder needs.
 #include "sphmol/config/config.hpp"
+#include <string>
+#include <vector>
+
 #include "sphmol/config/yaml_reader.hpp"
 
 namespace sphmol {
 
-struct SectionReaders {
+// The shared sections, already read: a case module reads its own keys from `top` and reports a
+// conflict with a shared key at that key's line.
+struct CaseReaders {
   MapReader& top;
   MapReader& fluid;
-  MapReader& geometry;
   MapReader& discretization;
   MapReader& time;
   MapReader& output;
@@ -25,10 +29,20 @@ struct SceneSize {
   double fluid = 0.0, wall = 0.0;  // doubles: an absurd config must not overflow the count
   double bytes_per_particle = 0.0;
   double bytes() const { return (fluid + wall) * bytes_per_particle; }
+  // Periodic lengths of the scene, each with where it came from ("FILE:LINE: key.path", from
+  // MapReader::where) for the message.
+  struct Periodic {
+    std::string where;
+    double length;
+  };
+  std::vector<Periodic> periodic;
 };
 
-// Throws ConfigError through the readers; returns the scene's size.
-SceneSize check_scene(const Config& c, SectionReaders& r);
+// The checks every scene shares, once the case module has read its keys and measured its scene
+// (`size`): term combinations the assembly cannot build, periodic lengths against the neighbour
+// radius, memory, step and checkpoint counts. Throws ConfigError through the readers; fills in
+// size.bytes_per_particle.
+void check_scene(const Config& c, CaseReaders& r, SceneSize& size);
 
 // Physical memory of this machine in bytes (sysconf), the limit for SceneSize::bytes().
 double physical_memory_bytes();

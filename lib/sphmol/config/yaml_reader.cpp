@@ -65,6 +65,12 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
   return best_d <= limit ? best : std::string{};
 }
 
+std::string number_text(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) const {
   // The longest overridden prefix of `path` owns the value.
   const std::string* best = nullptr;

@@ -20,6 +20,9 @@ namespace sphmol {
 // distance, at most about a third of the word), or "" when nothing is close.
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
 
+// The shortest text that reads back as the same double (for messages and the resolved YAML).
+std::string number_text(double v);
+
 // Where the YAML tree came from: the file name, and which key paths were replaced by overrides.
 class YamlOrigin {
  public:
@@ -80,6 +83,10 @@ class MapReader {
   [[noreturn]] void fail_element(const std::string& key, std::size_t index,
                                  std::string_view what) const;
   [[noreturn]] void fail_missing(const std::string& key, std::string_view hint) const;
+  // Range check: "KEY: VALUE is out of range (allowed: ALLOWED)" unless `ok`.
+  void check(const std::string& key, bool ok, double value, std::string_view allowed) const {
+    if (!ok) fail(key, number_text(value) + " is out of range (allowed: " + std::string(allowed) + ")");
+  }
   // "LOCATION: key.path" for notices.
   std::string where(const std::string& key) const;
 

@@ -89,7 +89,16 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   }
   const bool ideal_gas = c.fluid.eos.type == "ideal_gas";
   const double U = std::max(velocity_scale, v0max);
-  const double V_wall = std::abs(c.geometry.wall_velocity);
+  // Moving walls (a lid, a plate) can feed the fluid up to 1/2 M V^2, V their largest speed.
+  double V_wall = 0.0;
+  {
+    const auto& P = sys.particles();
+    for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+      double v2 = 0.0;
+      for (int d = 0; d < D; ++d) v2 += P.v[d][i] * P.v[d][i];
+      V_wall = std::max(V_wall, std::sqrt(v2));
+    }
+  }
   if (!ideal_gas && U > 0.0) {
     const double cs = c.fluid.eos.sound_speed;
     char buf[160];

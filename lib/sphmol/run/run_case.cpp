@@ -16,7 +16,7 @@
 
 #include "sphmol/core/version.hpp"
 #include "sphmol/io/atomic_file.hpp"
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/observers.hpp"
 #include "sphmol/run/output_folder.hpp"
@@ -258,12 +258,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
 }
 
 template <int D>
-nlohmann::json run_dimension(const std::function<std::unique_ptr<Case<D>>()>& factory, const std::string& note,
-                             const Config& config, const RunOptions& opt, const OutputSink& out,
+nlohmann::json run_dimension(const Config& config, const RunOptions& opt, const OutputSink& out,
                              std::optional<OutputFolder>& folder) {
-  if (!factory)
-    throw std::invalid_argument("dimension: case '" + config.case_name + "' is " + note + ", not " + std::to_string(D) + "D");
-  auto c = factory();
+  auto c = make_case<D>(config);
   return run_with<D>(*c, config, opt, out, folder);
 }
 
@@ -281,9 +278,7 @@ std::string output_directory(const Config& config, const RunOptions& options) {
 }  // namespace
 
 nlohmann::json run_case(const Config& config, const RunOptions& options) {
-  const auto& registry = case_registry();
-  const auto it = registry.find(config.case_name);
-  if (it == registry.end()) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
+  if (!find_case_module(config.case_name)) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
   OutputSink out{output_directory(config, options), options.write_files};
   // The resolved config records the folder the run really writes to, as an absolute path, so a
   // restart from one of its checkpoints continues there whatever the current folder.
@@ -299,12 +294,11 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
   // Claimed by run_with before its first step (so before any file is written) and held until the
   // summary is written.
   std::optional<OutputFolder> folder;
-  const CaseFactory& f = it->second;
   nlohmann::json summary;
   switch (config.dimension) {
-    case 1: summary = run_dimension<1>(f.d1, f.dimensions_note, resolved, opt, out, folder); break;
-    case 2: summary = run_dimension<2>(f.d2, f.dimensions_note, resolved, opt, out, folder); break;
-    case 3: summary = run_dimension<3>(f.d3, f.dimensions_note, resolved, opt, out, folder); break;
+    case 1: summary = run_dimension<1>(resolved, opt, out, folder); break;
+    case 2: summary = run_dimension<2>(resolved, opt, out, folder); break;
+    case 3: summary = run_dimension<3>(resolved, opt, out, folder); break;
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;

@@ -139,10 +139,11 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
       if (!time) {
         // The spacing the scene actually used (particles_across is turned into one by the scene).
         const auto& d = r.summary.value("discretization", nlohmann::json::object());
+        // Every case reports the spacing its scene used (Case::annotate); a run that ended before
+        // the summary has none, and its level is plotted at the configured spacing if there is one.
         xk = d.contains("spacing") && d["spacing"].is_number() ? d["spacing"].get<double>()
              : c.discretization.spacing > 0.0                  ? c.discretization.spacing
-                                                              : (base.geometry.channel_height > 0 ? base.geometry.channel_height : 1.0) /
-                                                                    c.discretization.particles_across;
+                                                              : std::numeric_limits<double>::quiet_NaN();
       }
       if (opt.log && !r.note.empty()) *opt.log << "converge: " << spec.label << " level " << k << ": " << r.note << '\n';
       const double e = time ? (r.blown_up ? std::numeric_limits<double>::infinity() : relative_velocity_error(r.final_state, ref_state, base.dimension, r.summary["particles"]["fluid"].get<std::size_t>()))

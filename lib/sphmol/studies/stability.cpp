@@ -1,5 +1,7 @@
 #include "sphmol/studies/stability.hpp"
 
+#include "sphmol/cases/case_module.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -57,19 +59,12 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
   return c;
 }
 
+// Every sound speed of the scene x factor: the case's own rule (e.g. gas states) or fluid.eos.sound_speed.
 double scale_sound_speed(Config& c, double factor) {
-  if (c.fluid.eos.type != "ideal_gas") {
-    c.fluid.eos.sound_speed *= factor;
-    return c.fluid.eos.sound_speed;
-  }
-  // c = sqrt(gamma p / rho): pressures x factor^2 (and velocities x factor) scale every sound speed
-  // by `factor` at fixed densities. Reported: the sound speed of the left state.
-  for (ShockTubeState* st : {&c.shock_tube.left, &c.shock_tube.right}) {
-    st->pressure *= factor * factor;
-    st->velocity *= factor;
-  }
-  const auto& L = c.shock_tube.left;
-  return L.density > 0.0 ? std::sqrt(c.fluid.eos.gamma * L.pressure / L.density) : 0.0;
+  const CaseModule* m = find_case_module(c.case_name);
+  if (m && m->scale_sound_speed) return m->scale_sound_speed(c, factor);
+  c.fluid.eos.sound_speed *= factor;
+  return c.fluid.eos.sound_speed;
 }
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {

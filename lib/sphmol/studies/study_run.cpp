@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sphmol/run/case_registry.hpp"
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/run/run_case.hpp"
 
 namespace sphmol {
@@ -58,10 +58,8 @@ StudyRun run_study_case(const Config& config) {
 
 namespace {
 template <int D>
-double stable_step_at_start(const std::function<std::unique_ptr<Case<D>>()>& factory, const std::string& note, const Config& config) {
-  if (!factory)
-    throw std::invalid_argument("dimension: case '" + config.case_name + "' is " + note + ", not " + std::to_string(D) + "D");
-  auto c = factory();
+double stable_step_at_start(const Config& config) {
+  auto c = make_case<D>(config);
   auto sys = c->build(config);
   std::vector<double> y = sys->initial_state(), ydot(sys->size());
   sys->rhs(0.0, y.data(), ydot.data());  // the CFL limit belongs to the state of the latest evaluation
@@ -70,13 +68,10 @@ double stable_step_at_start(const std::function<std::unique_ptr<Case<D>>()>& fac
 }  // namespace
 
 double initial_stable_step(const Config& config) {
-  const auto it = case_registry().find(config.case_name);
-  if (it == case_registry().end()) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
-  const CaseFactory& f = it->second;
   switch (config.dimension) {
-    case 1: return stable_step_at_start<1>(f.d1, f.dimensions_note, config);
-    case 2: return stable_step_at_start<2>(f.d2, f.dimensions_note, config);
-    case 3: return stable_step_at_start<3>(f.d3, f.dimensions_note, config);
+    case 1: return stable_step_at_start<1>(config);
+    case 2: return stable_step_at_start<2>(config);
+    case 3: return stable_step_at_start<3>(config);
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
 }

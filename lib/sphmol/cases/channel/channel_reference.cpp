@@ -1,4 +1,5 @@
-#include "sphmol/scenes/channel_reference.hpp"
+#include "sphmol/cases/channel/channel_reference.hpp"
+#include "sphmol/cases/channel/channel_settings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,20 +11,18 @@
 namespace sphmol {
 
 ChannelReference make_channel_reference(const Config& config) {
-  const double l = config.geometry.channel_height, nu = config.fluid.kinematic_viscosity;
+  const double l = config.settings<ChannelSettings>().channel_height, nu = config.fluid.kinematic_viscosity;
   ChannelReference ref;
-  if (config.case_name == "couette") {
-    CouetteSeries s{l, nu, config.geometry.wall_velocity};
+  if (config.settings<ChannelSettings>().couette) {
+    CouetteSeries s{l, nu, config.settings<ChannelSettings>().wall_velocity};
     ref.velocity = [s](double y, double t) { return s.velocity(y, t); };
-    ref.v0 = config.geometry.wall_velocity;
+    ref.v0 = config.settings<ChannelSettings>().wall_velocity;
     ref.name = "Couette start-up series (Vukčević et al. 2012, eq 23)";
-  } else if (config.case_name == "poiseuille") {
+  } else {
     PoiseuilleSeries s{l, nu, config.fluid.body_force.at(0)};
     ref.velocity = [s](double y, double t) { return s.velocity(y, t); };
     ref.v0 = s.peak_velocity();
     ref.name = "Poiseuille start-up series (Vukčević et al. 2012, eq 19)";
-  } else {
-    throw std::invalid_argument("no channel reference for case '" + config.case_name + "'");
   }
   return ref;
 }

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/cavity_case.hpp"
+#include "sphmol/cases/cavity/cavity_case.hpp"
+#include "sphmol/cases/cavity/cavity_settings.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -15,13 +16,13 @@
 namespace sphmol {
 
 std::unique_ptr<SphSystem<2>> CavityCase::build(const Config& config) {
-  L_ = config.geometry.box[0];
-  if (std::abs(config.geometry.box[1] - L_) > 1e-12 * L_)
+  L_ = config.settings<CavitySettings>().box[0];
+  if (std::abs(config.settings<CavitySettings>().box[1] - L_) > 1e-12 * L_)
     throw std::invalid_argument("geometry.box: the Ghia reference is for a square cavity");
   if (config.discretization.boundary == "virtual_repulsive")
     throw std::invalid_argument("discretization.boundary: virtual_repulsive walls exert no shear, so the lid cannot drive the cavity");
   if (config.fluid.kinematic_viscosity <= 0) throw std::invalid_argument("fluid.kinematic_viscosity: cavity needs nu > 0");
-  U_ = config.geometry.wall_velocity;
+  U_ = config.settings<CavitySettings>().wall_velocity;
   Re_ = std::abs(U_) * L_ / config.fluid.kinematic_viscosity;
   ghia_ = load_ghia(reference_data_file("ghia1982_u_vertical_centreline.csv"),
                     reference_data_file("ghia1982_v_horizontal_centreline.csv"), Re_);

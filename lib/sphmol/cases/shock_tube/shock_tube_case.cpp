@@ -1,4 +1,5 @@
-#include "sphmol/scenes/shock_tube_case.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_case.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_settings.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +13,7 @@
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
-#include "sphmol/scenes/shock_tube_scene.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_scene.hpp"
 
 namespace sphmol {
 
@@ -63,13 +64,13 @@ ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRi
 template <int D>
 std::unique_ptr<SphSystem<D>> ShockTubeCase<D>::build(const Config& config) {
   auto scene = build_shock_tube_scene<D>(config);
-  const auto& st = config.shock_tube;
+  const auto& st = config.settings<ShockTubeSettings>();
   gamma_ = config.fluid.eos.gamma;
   exact_.emplace(EulerState{st.left.density, st.left.velocity, st.left.pressure},
                  EulerState{st.right.density, st.right.velocity, st.right.pressure}, gamma_);
   spacing_ = scene.spacing;
-  length_ = config.geometry.tube_length;
-  width_ = config.geometry.tube_width;
+  length_ = config.settings<ShockTubeSettings>().tube_length;
+  width_ = config.settings<ShockTubeSettings>().tube_width;
   wall_layers_ = scene.wall_layers;
   profiles_ = config.output.profiles;
   const bool ghost = config.discretization.boundary == "ghost";

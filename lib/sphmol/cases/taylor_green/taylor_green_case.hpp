@@ -7,6 +7,7 @@
 // mode_amplitude_rel_error of the vortex mode's amplitude (the mass-weighted projection of the velocities on
 // the mode shape), and decay_rate = least-squares slope of ln(mode amplitude) over the output times, against
 // b = -8 pi^2 nu / L^2 (decay_rate_maxv: the same fit of ln max_i |v_i|).
+#include "sphmol/cases/taylor_green/taylor_green_settings.hpp"
 #include <vector>
 
 #include "sphmol/reference/taylor_green.hpp"
@@ -18,7 +19,7 @@ class TaylorGreenCase final : public Case<2> {
  public:
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override { return "taylor_green_vortex (exact)"; }
-  double velocity_scale(const Config& config) const override { return config.geometry.velocity_amplitude; }
+  double velocity_scale(const Config& config) const override { return config.settings<TaylorGreenSettings>().velocity_amplitude; }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "L1_velocity"; }

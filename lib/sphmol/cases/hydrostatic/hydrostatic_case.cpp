@@ -1,4 +1,5 @@
-#include "sphmol/scenes/hydrostatic_case.hpp"
+#include "sphmol/cases/hydrostatic/hydrostatic_case.hpp"
+#include "sphmol/cases/hydrostatic/hydrostatic_settings.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -15,8 +16,8 @@
 namespace sphmol {
 
 std::unique_ptr<SphSystem<2>> HydrostaticCase::build(const Config& config) {
-  const double width = config.geometry.box[0];
-  depth_ = config.geometry.box[1];
+  const double width = config.settings<HydrostaticSettings>().box[0];
+  depth_ = config.settings<HydrostaticSettings>().box[1];
   rho0_ = config.fluid.density;
   g_ = -config.fluid.body_force[1];
   if (g_ <= 0.0 || config.fluid.body_force[0] != 0.0)

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/dam_break_scene.hpp"
+#include "sphmol/cases/dam_break/dam_break_scene.hpp"
+#include "sphmol/cases/dam_break/dam_break_settings.hpp"
 
 #include <cmath>
 #include <functional>
@@ -22,8 +23,8 @@ int whole_spacings(double length, double dx, const std::string& what) {
 
 DamBreakScene build_dam_break_scene(const Config& config) {
   const auto& disc = config.discretization;
-  const double Lx = config.geometry.box[0], Ly = config.geometry.box[1];
-  const double a = config.geometry.column[0], H = config.geometry.column[1];
+  const double Lx = config.settings<DamBreakSettings>().box[0], Ly = config.settings<DamBreakSettings>().box[1];
+  const double a = config.settings<DamBreakSettings>().column[0], H = config.settings<DamBreakSettings>().column[1];
   // particles_across counts particles across the column width a.
   const double dx = disc.particles_across > 0 ? a / disc.particles_across : disc.spacing;
   const int nx = whole_spacings(a, dx, "geometry.column[0]"), ny = whole_spacings(H, dx, "geometry.column[1]");

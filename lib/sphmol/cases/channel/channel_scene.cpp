@@ -1,4 +1,5 @@
-#include "sphmol/scenes/channel_scene.hpp"
+#include "sphmol/cases/channel/channel_scene.hpp"
+#include "sphmol/cases/channel/channel_settings.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -9,7 +10,7 @@
 namespace sphmol {
 
 ChannelScene build_channel_scene(const Config& config) {
-  const auto& g = config.geometry;
+  const auto& g = config.settings<ChannelSettings>();
   const auto& disc = config.discretization;
   const double l = g.channel_height, L = g.channel_length;
   const int ny = disc.particles_across > 0 ? disc.particles_across : static_cast<int>(std::lround(l / disc.spacing));

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/channel_case.hpp"
+#include "sphmol/cases/channel/channel_case.hpp"
+#include "sphmol/cases/channel/channel_settings.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -11,7 +12,7 @@
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
-#include "sphmol/scenes/channel_scene.hpp"
+#include "sphmol/cases/channel/channel_scene.hpp"
 #include "sphmol/time/blow_up.hpp"
 
 namespace sphmol {
@@ -22,7 +23,7 @@ std::unique_ptr<SphSystem<2>> ChannelCase::build(const Config& config) {
   profiles_ = config.output.profiles;
   wall_layers_ = scene.wall_layers;
   spacing_ = scene.spacing;
-  height_ = config.geometry.channel_height;
+  height_ = config.settings<ChannelSettings>().channel_height;
   return assemble_system<2>(config, std::move(scene.particles), scene.domain, scene.spacing);
 }
 
@@ -81,10 +82,10 @@ std::vector<PlotScript> ChannelCase::plots(const OutputSink& out) const {
 }
 
 double ChannelCase::velocity_scale(const Config& config) const {
-  if (config.case_name == "couette") return std::abs(config.geometry.wall_velocity);
+  if (config.settings<ChannelSettings>().couette) return std::abs(config.settings<ChannelSettings>().wall_velocity);
   double g = 0.0;
   for (double x : config.fluid.body_force) g += x * x;
-  const double l = config.geometry.channel_height, nu = config.fluid.kinematic_viscosity;
+  const double l = config.settings<ChannelSettings>().channel_height, nu = config.fluid.kinematic_viscosity;
   return nu > 0.0 ? std::sqrt(g) * l * l / (8.0 * nu) : 0.0;
 }
 

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/dam_break_case.hpp"
+#include "sphmol/cases/dam_break/dam_break_case.hpp"
+#include "sphmol/cases/dam_break/dam_break_settings.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -8,15 +9,15 @@
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
 #include "sphmol/rhs/assemble.hpp"
-#include "sphmol/scenes/dam_break_scene.hpp"
+#include "sphmol/cases/dam_break/dam_break_scene.hpp"
 
 namespace sphmol {
 
 std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   DamBreakScene s = build_dam_break_scene(config);
-  a_ = config.geometry.column[0];
-  H_ = config.geometry.column[1];
-  Lx_ = config.geometry.box[0];
+  a_ = config.settings<DamBreakSettings>().column[0];
+  H_ = config.settings<DamBreakSettings>().column[1];
+  Lx_ = config.settings<DamBreakSettings>().box[0];
   t_end_ = config.time.t_end;
   g_ = s.g;
   dx_ = s.spacing;
@@ -27,7 +28,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   for (std::size_t i = 0; i < n_fluid0_; ++i) mass0_ += s.particles.mass[i];
   csv_ = "t [s],T [-],x_front [m],x_ritter [m],x_mm [m],x_ko [m]\n";
   auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
-  sys->append_term(std::make_unique<WallPenetrationMonitor>(Lx_, config.geometry.box[1], penetration_));
+  sys->append_term(std::make_unique<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], penetration_));
   return sys;
 }
 

@@ -13,6 +13,7 @@
 // the flow has settled (measured), so the threshold separates the spin-up (~1e-2 and more) from noise,
 // and keeps the run-to-run change of the centre lines well below their deviation from Ghia.
 // (rel_ke_change, the plain relative change between outputs, is kept for comparison with older runs.)
+#include "sphmol/cases/cavity/cavity_settings.hpp"
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -26,7 +27,7 @@ class CavityCase final : public Case<2> {
  public:
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override;
-  double velocity_scale(const Config& config) const override { return std::abs(config.geometry.wall_velocity); }
+  double velocity_scale(const Config& config) const override { return std::abs(config.settings<CavitySettings>().wall_velocity); }
   nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "u_rms"; }

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/shock_tube_scene.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_scene.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_settings.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -11,7 +12,7 @@ namespace sphmol {
 template <int D>
 ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
   static_assert(D == 1 || D == 2, "the shock tube is a 1D or 2D scene");
-  const auto& g = config.geometry;
+  const auto& g = config.settings<ShockTubeSettings>();
   const auto& disc = config.discretization;
   const double L = g.tube_length, Wd = g.tube_width;
   double dx = disc.spacing;
@@ -30,8 +31,8 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
   const int layers = disc.wall_layers > 0 ? disc.wall_layers
                                           : static_cast<int>(std::ceil(kernel_info<D>(disc.kernel).support * h / dx)) + 1;
   const double gm1 = config.fluid.eos.gamma - 1.0;
-  const auto& Ls = config.shock_tube.left;
-  const auto& Rs = config.shock_tube.right;
+  const auto& Ls = config.settings<ShockTubeSettings>().left;
+  const auto& Rs = config.settings<ShockTubeSettings>().right;
   const double vol = std::pow(dx, D);
 
   ShockTubeScene<D> s;

@@ -1,4 +1,5 @@
-#include "sphmol/scenes/taylor_green_case.hpp"
+#include "sphmol/cases/taylor_green/taylor_green_case.hpp"
+#include "sphmol/cases/taylor_green/taylor_green_settings.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -13,12 +14,12 @@
 namespace sphmol {
 
 std::unique_ptr<SphSystem<2>> TaylorGreenCase::build(const Config& config) {
-  L_ = config.geometry.box[0];
-  if (std::abs(config.geometry.box[1] - L_) > 1e-12 * L_)
+  L_ = config.settings<TaylorGreenSettings>().box[0];
+  if (std::abs(config.settings<TaylorGreenSettings>().box[1] - L_) > 1e-12 * L_)
     throw std::invalid_argument("geometry.box: the Taylor-Green vortex needs a square box");
   if (config.fluid.kinematic_viscosity <= 0)
     throw std::invalid_argument("fluid.kinematic_viscosity: taylor_green needs nu > 0 (Re = U L / nu)");
-  ref_.U = config.geometry.velocity_amplitude;
+  ref_.U = config.settings<TaylorGreenSettings>().velocity_amplitude;
   ref_.Re = ref_.U * L_ / config.fluid.kinematic_viscosity;
   ref_.rho = config.fluid.density;
   BoxScene s = build_box_scene(config, L_, L_, L_, BoxWalls<2>{}, true);
