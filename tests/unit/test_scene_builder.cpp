@@ -15,6 +15,7 @@
 #include "sphmol/geometry/box_shape.hpp"
 #include "sphmol/geometry/half_space_shape.hpp"
 #include "sphmol/geometry/lattice.hpp"
+#include "sphmol/cases/scene/scene_settings.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 
 using namespace sphmol;
@@ -424,4 +425,53 @@ TEST_CASE("scene builder: a hexagonal fluid body has the hexagonal lattice's mas
       lattice: hexagonal
 )yaml", c),
              Catch::StartsWith("scene.yaml:5: scene.fluid[0].lattice: a periodic y axis needs an even number of hexagonal rows"));
+}
+
+TEST_CASE("scene case: the loader reads the scene section and reports its errors at their lines", "[scene][config]") {
+  const std::string base = R"yaml(case: scene
+dimension: 2
+fluid:
+  density: 1000
+  kinematic_viscosity: 1.0e-6
+  eos: {sound_speed: 10}
+scene:
+  domain: {lo: [0, 0], hi: [1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 0.5]}
+  walls:
+    - shape: {type: sphere, centre: [0.5, 0.8], radius: 0.1}
+discretization:
+  spacing: 0.1
+time:
+  t_end: 0.1
+)yaml";
+  const auto error = [&](const std::vector<std::string>& overrides, const std::string& text) {
+    try {
+      (void)load_config_string(text, overrides, "case.yaml");
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("<no error>");
+  };
+  const Config c = load_config_string(base, {}, "case.yaml");
+  CHECK(c.case_name == "scene");
+  CHECK(c.settings<SceneSettings>().spec.walls.size() == 1u);
+  // The resolved config carries the scene and loads back to the same text.
+  const std::string yaml = to_yaml(c);
+  CHECK_THAT(yaml, Catch::Contains("scene:\n  domain:\n    lo: [0, 0]"));
+  CHECK(to_yaml(load_config_string(yaml, {}, "resolved.yaml")) == yaml);
+  CHECK(error({"discretization.boundary=virtual_repulsive"}, base) ==
+        "--set discretization.boundary=virtual_repulsive: discretization.boundary: a scene's walls are wall particles or ghost "
+        "mirrors (wall_particles or ghost)");
+  CHECK_THAT(error({"discretization.boundary=ghost"}, base),
+             Catch::StartsWith("--set discretization.boundary=ghost: discretization.boundary: ghost mirrors only the domain's "
+                               "planar faces; the scene's wall bodies (case.yaml:12: scene.walls[0].shape) need wall_particles"));
+  CHECK(error({"discretization.spacing=0.3"}, base) ==
+        "case.yaml:8: scene.domain.hi: the domain length along x (1 m) is not a whole number of the spacing 0.3 m (a wall axis "
+        "needs one, so the lattice meets the faces half a spacing inside)");
+  CHECK(error({"discretization.transport_velocity.enabled=true"}, base) ==
+        "--set discretization.transport_velocity.enabled=true: discretization.transport_velocity: needs a confined liquid; this "
+        "scene has a free surface (an open face, or fluid that does not fill the domain)");
+  CHECK_THAT(error({}, base.substr(0, base.find("scene:")) + "discretization:\n  spacing: 0.1\ntime:\n  t_end: 0.1\n"),
+             Catch::Contains("scene: required value missing"));
 }

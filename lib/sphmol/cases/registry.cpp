@@ -14,11 +14,12 @@ CaseModule hydrostatic_module();
 CaseModule cavity_module();
 CaseModule shock_tube_module();
 CaseModule dam_break_module();
+CaseModule scene_module();
 
 const std::vector<CaseModule>& case_modules() {
   static const std::vector<CaseModule> all = {
       couette_module(), poiseuille_module(), taylor_green_module(), hydrostatic_module(),
-      cavity_module(),  shock_tube_module(), dam_break_module(),
+      cavity_module(),  shock_tube_module(), dam_break_module(), scene_module(),
   };
   return all;
 }

@@ -1,0 +1,14 @@
+#pragma once
+// The `scene` case's own settings: the scene section as read (scene/scene_spec.hpp).
+#include "sphmol/config/config.hpp"
+#include "sphmol/scene/scene_spec.hpp"
+#include "sphmol/scene/scene_yaml.hpp"
+
+namespace sphmol {
+
+struct SceneSettings final : CaseSettings {
+  SceneSpec spec;
+  std::string to_yaml() const override { return scene_to_yaml(spec); }
+};
+
+}  // namespace sphmol
