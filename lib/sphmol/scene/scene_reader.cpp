@@ -185,7 +185,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     b.where_pressure = f.where("pressure");
     if (f.has("pressure")) {
       const auto text = f.string("pressure");
-      if (text && *text == "hydrostatic") {
+      if (text && *text == kHydrostaticPressure) {
         b.hydrostatic = true;
       } else {
         try {

@@ -1,5 +1,5 @@
 #pragma once
-// Reads the `scene:` section (config/README.md, "scene") into a SceneSpec, checking every key, type,
+// Reads the `scene:` section (config/README.md, the scene case) into a SceneSpec, checking every key, type,
 // length and shape against the dimension; errors are ConfigErrors "FILE:LINE: scene.key.path: what".
 // Checks that need the spacing (empty fills, bodies outside the domain, whole numbers of spacings)
 // are build_scene's (scene_builder.hpp), located by the `where` each element keeps.

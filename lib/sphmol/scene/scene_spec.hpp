@@ -38,6 +38,9 @@ struct DomainSpec {
   std::string where_lo, where_hi, where_boundaries, where_open;
 };
 
+// The value of a fluid body's `pressure` key for the hydrostatic initial state.
+inline constexpr const char* kHydrostaticPressure = "hydrostatic";
+
 struct FluidBodySpec {
   ShapeSpec shape;
   geometry::LatticeType lattice = geometry::LatticeType::cubic;

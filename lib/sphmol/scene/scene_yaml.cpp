@@ -76,7 +76,7 @@ std::string scene_to_yaml(const SceneSpec& spec) {
       << (b.lattice == geometry::LatticeType::hexagonal ? "hexagonal" : "cubic") << "\n      velocity: [";
     for (int a = 0; a < dim; ++a)
       y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : scalar(b.velocity[static_cast<std::size_t>(a)]->text()));
-    y << "]\n      pressure: " << (b.hydrostatic ? std::string("hydrostatic") : num(b.pressure)) << "\n";
+    y << "]\n      pressure: " << (b.hydrostatic ? std::string(kHydrostaticPressure) : num(b.pressure)) << "\n";
   }
   if (spec.walls.empty()) {
     y << "  walls: []\n";
