@@ -136,6 +136,7 @@ const std::map<std::string, TinyCase>& tiny_cases() {
         {"discretization.particles_across=10", "fluid.body_force_ramp=0.05", "time.dt=5e-4", "time.t_end=0.15", "output.times=[0.15]"}}},
       {"cavity", {"cavity.yaml", {"discretization.particles_across=10", "time.t_end=0.05", "output.times=[0.05]"}}},
       {"dam_break", {"dam_break.yaml", {"discretization.spacing=0.1", "time.t_end=0.25", "output.times=[0.25]"}}},
+      {"scene", {"scene_tank.yaml", {"discretization.spacing=0.02", "time.t_end=0.05", "output.times=[0.05]"}}},
       {"shock_tube", {"shock_tube_1d.yaml", {"discretization.spacing=0.02", "time.t_end=0.05", "output.times=[0.05]"}}},
       {"duct", {"duct_3d.yaml", {"discretization.particles_across=8", "geometry.length=1.0e-3", "time.t_end=0.01", "output.times=[0.01]"}}},
       {"beltrami", {"beltrami_3d.yaml", {"discretization.particles_across=8", "time.t_end=0.01", "output.times=[0.01]"}}},

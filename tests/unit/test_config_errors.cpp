@@ -62,7 +62,7 @@ TEST_CASE("config errors: wrong types", "[config]") {
         "case.yaml:8: geometry: expected a map of keys (channel_height, channel_length, wall_velocity), got a list");
   CHECK(error_of("- 1\n- 2\n") ==
         "case.yaml:1: the config: expected a map of keys (case, dimension, fluid, discretization, "
-        "time, output, probes, geometry, shock_tube), got a list");
+        "time, output, probes, geometry, shock_tube, scene), got a list");
 }
 
 TEST_CASE("config errors: missing required values point at the parent section", "[config]") {
@@ -73,7 +73,7 @@ TEST_CASE("config errors: missing required values point at the parent section", 
         "case.yaml:6: fluid.eos.sound_speed: required value missing in section 'fluid.eos' (artificial "
         "speed of sound c in m/s, > 0)");
   CHECK(error_of(with("case: couette\n", "")) ==
-        "case.yaml:1: case: required value missing (one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break)");
+        "case.yaml:1: case: required value missing (one of: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break, duct, beltrami, scene)");
   CHECK_THAT(error_of(with("  channel_length: 5.0e-4\n", "")),
              StartsWith("case.yaml:8: geometry.channel_length: required value missing in section 'geometry'"));
   CHECK_THAT(error_of(with("  t_end: 0.5", "  rtol: 1e-7")),
@@ -156,7 +156,7 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
 
 TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK(error_of(with("case: couette", "case: couete")) ==
-        "case.yaml:1: case: unknown value 'couete' (did you mean 'couette'? allowed: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break)");
+        "case.yaml:1: case: unknown value 'couete' (did you mean 'couette'? allowed: couette, poiseuille, taylor_green, hydrostatic, cavity, shock_tube, dam_break, duct, beltrami, scene)");
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  viscosity: mooris")) ==
         "case.yaml:14: discretization.viscosity: unknown value 'mooris' (did you mean 'morris'? allowed: "
         "strain_rate, morris, none)");

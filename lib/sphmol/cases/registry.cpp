@@ -16,12 +16,13 @@ CaseModule shock_tube_module();
 CaseModule dam_break_module();
 CaseModule duct_module();
 CaseModule beltrami_module();
+CaseModule scene_module();
 
 const std::vector<CaseModule>& case_modules() {
   static const std::vector<CaseModule> all = {
       couette_module(), poiseuille_module(), taylor_green_module(), hydrostatic_module(),
       cavity_module(),  shock_tube_module(), dam_break_module(),
-      duct_module(),    beltrami_module(),
+      duct_module(),    beltrami_module(),   scene_module(),
   };
   return all;
 }

@@ -225,11 +225,32 @@ std::optional<std::vector<double>> MapReader::reals(const std::string& key) {
 std::optional<std::vector<std::string>> MapReader::strings(const std::string& key) {
   const Entry* e = find(key);
   if (!e) return std::nullopt;
-  if (!e->value.IsSequence()) wrong_type(key, e->value, "a list of names such as [p, rho]");
+  if (!e->value.IsSequence()) wrong_type(key, e->value, "a list such as [a, b]");
   std::vector<std::string> out;
   for (std::size_t i = 0; i < e->value.size(); ++i) {
-    if (!e->value[i].IsScalar()) fail_element(key, i, "expected a name, got " + describe(e->value[i]));
+    if (!e->value[i].IsScalar()) fail_element(key, i, "expected a single value, got " + describe(e->value[i]));
     out.push_back(e->value[i].Scalar());
+  }
+  return out;
+}
+
+std::optional<std::vector<std::vector<double>>> MapReader::real_rows(const std::string& key, std::size_t width) {
+  const Entry* e = find(key);
+  if (!e) return std::nullopt;
+  const std::string shape = "a list of " + std::to_string(width) + "-number lists such as [[0, 0], [1, 0]]";
+  if (!e->value.IsSequence()) wrong_type(key, e->value, shape);
+  std::vector<std::vector<double>> out;
+  for (std::size_t i = 0; i < e->value.size(); ++i) {
+    const YAML::Node row = e->value[i];
+    if (!row.IsSequence() || row.size() != width)
+      fail_element(key, i, "expected a list of " + std::to_string(width) + " numbers, got " + describe(row));
+    std::vector<double> r;
+    for (std::size_t j = 0; j < width; ++j) {
+      const auto v = parse_real(row[j]);
+      if (!v || !std::isfinite(*v)) fail_element(key, i, "expected finite numbers, got " + describe(row[j]));
+      r.push_back(*v);
+    }
+    out.push_back(std::move(r));
   }
   return out;
 }

@@ -57,7 +57,10 @@ class MapReader {
   std::optional<bool> boolean(const std::string& key);
   std::optional<std::string> string(const std::string& key);
   std::optional<std::vector<double>> reals(const std::string& key);  // list of finite numbers
-  std::optional<std::vector<std::string>> strings(const std::string& key);  // list of scalars
+  // A list of scalars as their text (numbers too: [1, "sin(x)"] reads as {"1", "sin(x)"}).
+  std::optional<std::vector<std::string>> strings(const std::string& key);
+  // A list of lists of finite numbers, each of length `width` (points such as [[0, 0], [1, 0]]).
+  std::optional<std::vector<std::vector<double>>> real_rows(const std::string& key, std::size_t width);
   MapReader section(const std::string& key, std::vector<std::string> keys);
   // A list of maps under `key` (e.g. the bodies of a scene), each read with `keys`; element i has the
   // path "key[i]". Absent: empty. Not a list of maps: an error at the key.

@@ -34,6 +34,10 @@ struct Lattice {
     if (type == LatticeType::hexagonal && D != 2) throw std::invalid_argument("lattice: hexagonal is two-dimensional only");
     std::array<long, D> lo{}, hi{};
     for (int d = 0; d < D; ++d) {
+      // An unbounded region (a half-space) must be cut to a box first: it holds no finite point set.
+      if (!std::isfinite(b.lo[d]) || !std::isfinite(b.hi[d]))
+        throw std::invalid_argument("lattice: the region to fill is unbounded (cut it to a box)");
+      if (b.hi[d] < b.lo[d]) return;  // empty
       const double step = d == 1 ? row_spacing() : spacing;
       // One cell of margin: the hexagonal shift and round-off never lose a point inside b.
       lo[d] = static_cast<long>(std::floor((b.lo[d] - origin[d]) / step - 0.5)) - 1;

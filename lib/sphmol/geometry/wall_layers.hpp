@@ -26,12 +26,21 @@ struct WallPoint {
   int face = -1;     // box containers: 2 d + side (side 0: the lo face, 1: the hi face); else -1
 };
 
+// `region`, if given, limits the search to a box (needed for unbounded solids such as half-spaces);
+// the normals and depths are still those of the whole solid.
 template <int D>
-std::vector<WallPoint<D>> wall_layer(const Shape<D>& solid, const Lattice<D>& lattice, double thickness) {
+std::vector<WallPoint<D>> wall_layer(const Shape<D>& solid, const Lattice<D>& lattice, double thickness,
+                                     const Bounds<D>* region = nullptr) {
   if (!(thickness > 0.0)) throw std::invalid_argument("wall layers: thickness must be > 0");
   std::vector<WallPoint<D>> points;
   const double eps = 1e-6 * lattice.spacing;
-  lattice.for_each_in(solid.bounds(), [&](const Vec<D>& p) {
+  Bounds<D> search = solid.bounds();
+  if (region)
+    for (int d = 0; d < D; ++d) {
+      search.lo[d] = std::max(search.lo[d], region->lo[d]);
+      search.hi[d] = std::min(search.hi[d], region->hi[d]);
+    }
+  lattice.for_each_in(search, [&](const Vec<D>& p) {
     const double sd = solid.signed_distance(p);
     if (sd < 0.0 && -sd <= thickness * (1.0 + 1e-12)) points.push_back({p, solid.outward_normal(p, eps), -sd, -1});
   });

@@ -1,0 +1,109 @@
+#include "sphmol/cases/scene/scene_case.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sphmol/cases/scene/scene_settings.hpp"
+#include "sphmol/rhs/assemble.hpp"
+#include "sphmol/scene/scene_builder.hpp"
+
+namespace sphmol {
+
+template <int D>
+double scene_velocity_scale(const Particles<D>& p, const std::vector<double>& body_force, double spacing) {
+  double g2 = 0.0;
+  for (int d = 0; d < D && d < static_cast<int>(body_force.size()); ++d) g2 += body_force[d] * body_force[d];
+  const double g = std::sqrt(g2);
+  double smin = std::numeric_limits<double>::infinity(), smax = -smin, vmax = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    double v2 = 0.0, s = 0.0;
+    for (int d = 0; d < D; ++d) {
+      v2 += p.v[d][i] * p.v[d][i];
+      if (g > 0.0) s -= p.x[d][i] * body_force[d] / g;
+    }
+    vmax = std::max(vmax, std::sqrt(v2));
+    if (p.kind[i] == Kind::Fluid) smin = std::min(smin, s), smax = std::max(smax, s);
+  }
+  // The height the fluid stands for: the span of its particles plus half a spacing at each end.
+  const double H = p.n_fluid > 0 ? smax - smin + spacing : 0.0;
+  return std::max(vmax, g > 0.0 ? std::sqrt(2.0 * g * H) : 0.0);
+}
+
+template <int D>
+std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
+  BuiltScene<D> s = build_scene<D>(config.settings<SceneSettings>().spec, config);
+  spacing_ = s.spacing;
+  velocity_scale_ = scene_velocity_scale<D>(s.particles, config.fluid.body_force, s.spacing);
+  free_surface_ = s.open_faces || !s.fills_domain;
+  body_names_ = s.body_names;
+  fluid_counts_ = s.fluid_counts;
+  n_wall_ = s.particles.n_wall();
+  return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr);
+}
+
+template <int D>
+nlohmann::json SceneCase<D>::measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink&) {
+  const auto& L = sys.layout();
+  const auto& m = sys.particles().mass;
+  std::array<double, D> p{};
+  double ke = 0.0, mass = 0.0, vmax = 0.0;
+  for (std::size_t i = 0; i < L.n; ++i) {
+    double v2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double v = y[L.velocity(d) + i];
+      p[d] += m[i] * v;
+      v2 += v * v;
+    }
+    ke += 0.5 * m[i] * v2;
+    mass += m[i];
+    vmax = std::max(vmax, std::sqrt(v2));
+  }
+  if (ke0_ < 0.0) ke0_ = ke, mass0_ = mass;
+  // Relative to M U^2 / 2; with no velocity scale (at rest, no body force), to the initial energy
+  // or, if that is zero too, absolute [J].
+  const double scale = velocity_scale_ > 0.0 ? 0.5 * mass0_ * velocity_scale_ * velocity_scale_ : (ke0_ > 0.0 ? ke0_ : 1.0);
+  return {{"t", t},
+          {"kinetic_energy", ke},
+          {"kinetic_energy_change", std::abs(ke - ke0_) / scale},
+          {"momentum", std::vector<double>(p.begin(), p.end())},
+          {"max_speed", vmax},
+          {"max_speed_ratio", velocity_scale_ > 0.0 ? vmax / velocity_scale_ : vmax},
+          {"fluid_mass", mass}};
+}
+
+// Worst over the output times: a scene must stay conservative throughout, not only at the end.
+template <int D>
+nlohmann::json SceneCase<D>::final_errors(const nlohmann::json& errors) const {
+  if (errors.empty()) return nlohmann::json::object();
+  nlohmann::json f = errors.back();
+  f.erase("t");
+  double worst = 0.0, speed = 0.0;
+  for (const auto& e : errors) {
+    worst = std::max(worst, e["kinetic_energy_change"].get<double>());
+    speed = std::max(speed, e["max_speed_ratio"].get<double>());
+  }
+  f["kinetic_energy_change"] = worst;
+  f["max_speed_ratio"] = speed;
+  return f;
+}
+
+template <int D>
+void SceneCase<D>::annotate(nlohmann::json& summary) const {
+  summary["final_errors_note"] =
+      "kinetic_energy_change: worst over the output times of |KE(t) - KE(0)| / (M U^2 / 2), U = velocity_scale "
+      "(with U = 0: relative to KE(0), or in J if that is 0 too); max_speed_ratio: worst largest fluid speed / U";
+  summary["scene"]["velocity_scale"] = velocity_scale_;
+  summary["scene"]["free_surface"] = free_surface_;
+  summary["scene"]["fluid_particles"] = fluid_counts_;
+  summary["scene"]["wall_particles"] = n_wall_;
+  summary["scene"]["wall_bodies"] = body_names_;
+  summary["discretization"]["spacing"] = spacing_;
+}
+
+template class SceneCase<2>;
+template class SceneCase<3>;
+template double scene_velocity_scale<2>(const Particles<2>&, const std::vector<double>&, double);
+template double scene_velocity_scale<3>(const Particles<3>&, const std::vector<double>&, double);
+
+}  // namespace sphmol

@@ -1,0 +1,43 @@
+#pragma once
+// The `scene` case: a user scene (config `scene:` section) with no reference solution. It reports
+// what the flow must conserve: at every output time the fluid mass, momentum, kinetic energy and
+// largest speed; its primary error is the change of the kinetic energy since t = 0 relative to
+// M U^2 / 2 (M the fluid mass, U the scene's velocity scale), which for a fluid at rest measures the
+// spurious currents.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphmol/run/case.hpp"
+#include "sphmol/scene/scene_spec.hpp"
+
+namespace sphmol {
+
+template <int D>
+class SceneCase final : public Case<D> {
+ public:
+  std::unique_ptr<SphSystem<D>> build(const Config& config) override;
+  std::string reference() const override { return "none (conservation of mass, momentum and kinetic energy)"; }
+  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json final_errors(const nlohmann::json& errors) const override;
+  std::string primary_error() const override { return "kinetic_energy_change"; }
+  double velocity_scale(const Config& config) const override { return velocity_scale_; }
+  bool free_surface() const override { return free_surface_; }
+  void annotate(nlohmann::json& summary) const override;
+
+ private:
+  double velocity_scale_ = 0.0;
+  bool free_surface_ = false;
+  double spacing_ = 0.0;
+  double ke0_ = -1.0, mass0_ = 0.0;
+  std::vector<std::string> body_names_;
+  std::vector<std::size_t> fluid_counts_;
+  std::size_t n_wall_ = 0;
+};
+
+// The scene's velocity scale: the free-fall speed sqrt(2 |g| H) over the fluid's height H against
+// the body force, or the largest initial fluid or wall speed, whichever is larger.
+template <int D>
+double scene_velocity_scale(const Particles<D>& p, const std::vector<double>& body_force, double spacing);
+
+}  // namespace sphmol

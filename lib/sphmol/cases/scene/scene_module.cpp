@@ -1,0 +1,69 @@
+// The `scene` case module: a user scene from shapes (the `scene:` section, scene/scene_reader.hpp),
+// checked against the shared settings and built once while loading, so every error has its line.
+#include <memory>
+
+#include "sphmol/cases/case_module.hpp"
+#include "sphmol/cases/scene/scene_case.hpp"
+#include "sphmol/cases/scene/scene_settings.hpp"
+#include "sphmol/scene/scene_builder.hpp"
+#include "sphmol/scene/scene_reader.hpp"
+
+namespace sphmol {
+
+namespace {
+
+// Past this many particles the scene is not built while loading: the shared memory check gets the
+// bound (scene_particle_bound) and refuses what the machine cannot hold.
+constexpr double kBuildWhileLoading = 2.0e7;
+
+template <int D>
+SceneSize built_size(CaseReaders& r, const SceneSpec& spec, const Config& c) {
+  const BuiltScene<D> s = build_scene<D>(spec, c);
+  if (c.discretization.transport_velocity.enabled && (s.open_faces || !s.fills_domain))
+    r.discretization.fail("transport_velocity", "needs a confined liquid; this scene has a free surface (an open face, or "
+                                                "fluid that does not fill the domain)");
+  return {s.spacing, static_cast<double>(s.particles.n_fluid), static_cast<double>(s.particles.n_wall())};
+}
+
+CaseRead read_scene_case(CaseReaders& r, const Config& c) {
+  auto settings = std::make_shared<SceneSettings>();
+  MapReader scene = r.top.section("scene", kSceneKeys);
+  if (!r.top.has("scene")) r.top.fail_missing("scene", "the domain, fluid bodies and wall bodies of the scene (config/README.md)");
+  settings->spec = read_scene(scene, c.dimension, c.source);
+  const SceneSpec& spec = settings->spec;
+  const auto& d = c.discretization;
+  if (d.boundary == "virtual_repulsive")
+    r.discretization.fail("boundary", "a scene's walls are wall particles or ghost mirrors (wall_particles or ghost)");
+  if (d.boundary == "ghost" && !spec.walls.empty())
+    r.discretization.fail("boundary", "ghost mirrors only the domain's planar faces; the scene's wall bodies (" +
+                                          spec.walls.front().where + ") need wall_particles");
+  SceneSize size;
+  const double bound = scene_particle_bound(spec, c);
+  if (bound > kBuildWhileLoading) {
+    size.spacing = scene_spacing(spec, c);
+    size.fluid = bound;
+  } else {
+    size = c.dimension == 2 ? built_size<2>(r, spec, c) : built_size<3>(r, spec, c);
+  }
+  for (int a = 0; a < c.dimension; ++a)
+    if (spec.domain.boundary[a] == AxisBoundary::periodic)
+      size.periodic.push_back({spec.domain.where_hi, spec.domain.hi[a] - spec.domain.lo[a]});
+  return {settings, size};
+}
+
+}  // namespace
+
+CaseModule scene_module() {
+  CaseModule m;
+  m.name = "scene";
+  m.description = "a user scene of shapes (scene: section): no reference, conservation and spurious speeds reported";
+  m.dimensions = {2, 3};
+  m.sections = {"scene"};
+  m.position_noise = true;
+  m.read = read_scene_case;
+  m.make2 = [] { return std::make_unique<SceneCase<2>>(); };
+  m.make3 = [] { return std::make_unique<SceneCase<3>>(); };
+  return m;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,327 @@
+#include "sphmol/scene/scene_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/scene/scene_shapes.hpp"
+#include "sphmol/scenes/lattice_mass.hpp"
+#include "sphmol/scenes/position_noise.hpp"
+
+namespace sphmol {
+
+namespace {
+
+const char* const kAxisName[] = {"x", "y", "z"};
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) { throw ConfigError(where + ": " + what); }
+
+// The hexagonal counterpart of lattice_particle_mass: rho0 over the kernel sum of the 2D hexagonal
+// lattice (rows dx sqrt(3)/2 apart, every other row shifted by dx/2), so that summation density gives
+// rho0 inside the body.
+double hexagonal_particle_mass(std::string_view kernel, double rho0, double dx, double h) {
+  const auto K = kernel_info<2>(kernel);
+  const double row = dx * std::sqrt(3.0) / 2.0;
+  const int m = static_cast<int>(std::ceil(K.support * h / row)) + 1;
+  double sum = 0.0;
+  for (int j = -m; j <= m; ++j)
+    for (int i = -m - 1; i <= m + 1; ++i) {
+      const double x = (i + ((j & 1) ? 0.5 : 0.0)) * dx, y = j * row;
+      sum += K.W(std::sqrt(x * x + y * y), h);
+    }
+  return rho0 / sum;
+}
+
+template <int D>
+std::array<double, 3> padded(const geometry::Vec<D>& p) {
+  std::array<double, 3> x{};
+  for (int d = 0; d < D; ++d) x[static_cast<std::size_t>(d)] = p[d];
+  return x;
+}
+
+}  // namespace
+
+double density_at_pressure(const Config& config, double pressure) {
+  const auto& eos = config.fluid.eos;
+  const double rho0 = config.fluid.density, c2 = eos.sound_speed * eos.sound_speed;
+  if (eos.type == "linear" || eos.type == "linear_relative") {
+    const double rho = rho0 + pressure / c2;
+    if (!(rho > 0.0)) throw std::invalid_argument("the pressure " + num(pressure) + " Pa needs a negative density under the linear EOS");
+    return rho;
+  }
+  if (eos.type == "tait") {
+    const double B = c2 * rho0 / eos.gamma;
+    if (!(1.0 + pressure / B > 0.0))
+      throw std::invalid_argument("the pressure " + num(pressure) + " Pa is below -B = " + num(-B) + " Pa, which the Tait EOS cannot reach");
+    return rho0 * std::pow(1.0 + pressure / B, 1.0 / eos.gamma);
+  }
+  throw std::invalid_argument("an initial pressure needs an EOS with a rest density (linear, linear_relative or tait), not " + eos.type);
+}
+
+double scene_spacing(const SceneSpec& spec, const Config& config) {
+  const auto& disc = config.discretization;
+  const auto& dom = spec.domain;
+  const double L0 = dom.hi[0] - dom.lo[0];
+  const double dx = disc.particles_across > 0 ? L0 / disc.particles_across : disc.spacing;
+  if (!(dx > 0.0)) throw ConfigError(spec.where + ": the scene needs discretization.spacing or discretization.particles_across");
+  for (int d = 0; d < spec.dimension; ++d) {
+    if (dom.boundary[d] == AxisBoundary::open) continue;
+    const double L = dom.hi[d] - dom.lo[d];
+    const double n = std::round(L / dx);
+    if (n < 1.0 || std::abs(n * dx - L) > 1e-6 * L)
+      fail(dom.where_hi, "the domain length along " + std::string(kAxisName[d]) + " (" + num(L) +
+                             " m) is not a whole number of the spacing " + num(dx) + " m (" +
+                             (dom.boundary[d] == AxisBoundary::periodic ? "a periodic" : "a wall") +
+                             " axis needs one, so the lattice meets the faces half a spacing inside)");
+  }
+  return dx;
+}
+
+double scene_particle_bound(const SceneSpec& spec, const Config& config) {
+  const double dx = scene_spacing(spec, config);
+  const auto& disc = config.discretization;
+  const double support = (spec.dimension == 2 ? kernel_info<2>(disc.kernel).support : kernel_info<3>(disc.kernel).support) *
+                         disc.smoothing_ratio;
+  const int layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support));
+  // Hexagonal rows are 2/sqrt(3) denser than the cubic lattice.
+  double n = 2.0 / std::sqrt(3.0);
+  for (int d = 0; d < spec.dimension; ++d)
+    n *= std::ceil((spec.domain.hi[d] - spec.domain.lo[d]) / dx) + 1.0 +
+         (spec.domain.boundary[d] == AxisBoundary::periodic ? 0.0 : 2.0 * layers);
+  return n;
+}
+
+template <int D>
+BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
+  using namespace geometry;
+  if (spec.dimension != D) throw std::logic_error("build_scene: the spec is for another dimension");
+  const auto& disc = config.discretization;
+  const auto& dom = spec.domain;
+  BuiltScene<D> out;
+  const double dx = scene_spacing(spec, config);
+  out.spacing = dx;
+  const double h = disc.smoothing_ratio * dx;
+  const double support = kernel_info<D>(disc.kernel).support * h;
+  const int default_layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support / dx));
+  out.wall_layers = default_layers;
+  const double rho0 = config.fluid.density;
+  const double m_cubic = lattice_particle_mass<D>(disc.kernel, rho0, dx, h);
+  const bool ghost = disc.boundary == "ghost";
+  if (disc.boundary != "wall_particles" && !ghost)
+    fail(spec.where, "the scene builds its walls from wall particles or ghost mirrors; discretization.boundary: " +
+                         disc.boundary + " is not available for it");
+
+  Bounds<D> box;
+  for (int d = 0; d < D; ++d) box.lo[d] = dom.lo[d], box.hi[d] = dom.hi[d];
+  Lattice<D> cubic;
+  cubic.spacing = dx;
+  cubic.origin = box.lo;
+
+  // Wall bodies first: fluid is removed where they are.
+  std::vector<ShapePtr<D>> solids;
+  std::vector<double> thickness;
+  double max_thickness = default_layers * dx;
+  for (const auto& w : spec.walls) {
+    if (ghost)
+      fail(w.where, "boundary: ghost mirrors the domain's planar faces only; wall bodies need discretization.boundary: wall_particles");
+    ShapePtr<D> s = make_shape<D>(w.shape);
+    const Bounds<D> b = s->bounds();
+    for (int d = 0; d < D; ++d) {
+      if (dom.boundary[d] == AxisBoundary::periodic && !(b.lo[d] > box.lo[d] && b.hi[d] < box.hi[d]))
+        fail(w.where, std::string("the wall body reaches across the periodic axis ") + kAxisName[d] +
+                          " (its extent must lie inside the domain's " + num(box.lo[d]) + " to " + num(box.hi[d]) + " there)");
+      if (b.lo[d] >= box.hi[d] || b.hi[d] <= box.lo[d])
+        fail(w.where, std::string("the wall body lies outside the domain along ") + kAxisName[d]);
+    }
+    solids.push_back(s);
+    const int layers = w.layers > 0 ? w.layers : default_layers;
+    thickness.push_back(layers * dx);
+    max_thickness = std::max(max_thickness, layers * dx);
+  }
+
+  // Fluid bodies.
+  const double tol = 1e-9 * dx;
+  std::vector<ShapePtr<D>> fluid_shapes;
+  for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+    const auto& f = spec.fluid[k];
+    ShapePtr<D> s = make_shape<D>(f.shape);
+    Bounds<D> b = s->bounds();
+    for (int d = 0; d < D; ++d) {
+      // Finite extents must lie in the domain; unbounded ones (half-spaces) are cut to it.
+      const double L = box.hi[d] - box.lo[d];
+      if ((std::isfinite(b.lo[d]) && b.lo[d] < box.lo[d] - 1e-9 * L) || (std::isfinite(b.hi[d]) && b.hi[d] > box.hi[d] + 1e-9 * L))
+        fail(f.where, std::string("the fluid body extends outside the domain along ") + kAxisName[d] + " (" +
+                          num(b.lo[d]) + " to " + num(b.hi[d]) + " m; domain " + num(box.lo[d]) + " to " + num(box.hi[d]) + " m)");
+      b.lo[d] = std::max(b.lo[d], box.lo[d]);
+      b.hi[d] = std::min(b.hi[d], box.hi[d]);
+    }
+    Lattice<D> lat = cubic;
+    double m = m_cubic;
+    if (f.lattice == LatticeType::hexagonal) {
+      lat.type = LatticeType::hexagonal;
+      // The first row half a spacing above the lower face, as on the cubic lattice.
+      lat.origin[1] += 0.5 * dx - 0.5 * lat.row_spacing();
+      if (dom.boundary[1] == AxisBoundary::periodic) {
+        const double rows = (box.hi[1] - box.lo[1]) / lat.row_spacing();
+        const double even = 2.0 * std::round(rows / 2.0);
+        if (even < 2.0 || std::abs(rows - even) > 1e-6 * rows)
+          fail(f.where_lattice, "a periodic y axis needs an even number of hexagonal rows (dx sqrt(3)/2 = " +
+                                    num(lat.row_spacing()) + " m apart) across the domain; its length " +
+                                    num(box.hi[1] - box.lo[1]) + " m holds " + num(rows));
+      }
+      if constexpr (D == 2) m = hexagonal_particle_mass(disc.kernel, rho0, dx, h);
+    }
+    std::vector<Vec<D>> pts;
+    std::size_t filled = 0;
+    lat.for_each_in(b, [&](Vec<D> p) {
+      // On a periodic face (the shifted hexagonal rows put points there) the point on the upper face
+      // stands for both: tested just inside, placed at the lower face.
+      Vec<D> q = p;
+      for (int d = 0; d < D; ++d) {
+        if (dom.boundary[d] != AxisBoundary::periodic) continue;
+        if (p[d] > box.hi[d] - tol) q[d] = box.hi[d] - tol, p[d] -= box.hi[d] - box.lo[d];
+        else if (p[d] < box.lo[d] + tol) return;  // the image of the point on the upper face, which counts
+      }
+      if (!(s->signed_distance(q) < 0.0)) return;
+      ++filled;
+      // Already placed by an earlier fluid body: on the same lattice exactly the points inside it; on
+      // another lattice also those closer than half a spacing to it.
+      for (std::size_t j = 0; j < fluid_shapes.size(); ++j) {
+        const double margin = spec.fluid[j].lattice == f.lattice ? 0.0 : 0.5 * dx - tol;
+        if (fluid_shapes[j]->signed_distance(q) < margin) return;
+      }
+      for (const auto& solid : solids)
+        if (solid->signed_distance(q) < 0.5 * dx - tol) return;
+      // A lattice other than the walls' may come closer than half a spacing to a domain wall.
+      for (int d = 0; d < D; ++d) {
+        if (dom.boundary[d] != AxisBoundary::wall) continue;
+        if ((!dom.open[2 * d] && p[d] - box.lo[d] < 0.5 * dx - tol) || (!dom.open[2 * d + 1] && box.hi[d] - p[d] < 0.5 * dx - tol)) return;
+      }
+      pts.push_back(p);
+    });
+    if (filled == 0)
+      fail(f.where, "the fluid body holds no lattice point at the spacing " + num(dx) + " m (it is smaller than a spacing, or outside the domain)");
+    if (pts.empty()) fail(f.where, "every lattice point of the fluid body lies in an earlier fluid body or in a wall body");
+    fluid_shapes.push_back(s);
+
+    // Initial pressure -> density. Hydrostatic: p = rho0 |g| (s_top - s), s the height against the
+    // body force and s_top the free surface, half a lattice step above the body's highest particle.
+    std::vector<double> rho(pts.size(), rho0);
+    if (f.hydrostatic || f.pressure != 0.0) {
+      std::vector<double> p(pts.size(), f.pressure);
+      if (f.hydrostatic) {
+        Vec<D> g{};
+        for (int d = 0; d < D && d < static_cast<int>(config.fluid.body_force.size()); ++d) g[d] = config.fluid.body_force[d];
+        const double gn = norm<D>(g);
+        if (!(gn > 0.0)) fail(f.where_pressure, "hydrostatic pressure needs a body force (fluid.body_force)");
+        const Vec<D> up = (-1.0 / gn) * g;
+        double top = -std::numeric_limits<double>::infinity();
+        for (const auto& q : pts) top = std::max(top, dot<D>(q, up));
+        int axis = -1;
+        for (int d = 0; d < D; ++d)
+          if (std::abs(up[d]) == 1.0) axis = d;
+        top += 0.5 * (axis == 1 ? lat.row_spacing() : dx);
+        for (std::size_t i = 0; i < pts.size(); ++i) p[i] = rho0 * gn * (top - dot<D>(pts[i], up));
+      }
+      try {
+        for (std::size_t i = 0; i < pts.size(); ++i) rho[i] = density_at_pressure(config, p[i]);
+      } catch (const std::invalid_argument& e) {
+        fail(f.where_pressure, e.what());
+      }
+    }
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      std::array<double, D> v{};
+      for (std::size_t d = 0; d < f.velocity.size(); ++d) v[d] = (*f.velocity[d])(padded<D>(pts[i]));
+      for (int d = 0; d < D; ++d)
+        if (!std::isfinite(v[d]))
+          fail(f.where, "the velocity expression '" + f.velocity[static_cast<std::size_t>(d)]->text() + "' is not finite at a particle");
+      out.particles.add(Kind::Fluid, pts[i], v, m, rho[i]);
+    }
+    out.fluid_counts.push_back(pts.size());
+  }
+  {
+    // The volume the fluid could fill: the cubic lattice cells of the domain outside the wall bodies
+    // (by the same half-spacing rule), against the cells the fluid particles stand for.
+    std::size_t free_cells = 0;
+    cubic.for_each_in(box, [&](const Vec<D>& p) {
+      for (const auto& solid : solids)
+        if (solid->signed_distance(p) < 0.5 * dx - tol) return;
+      ++free_cells;
+    });
+    double fluid_volume = 0.0;
+    for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+      Lattice<D> lat = cubic;
+      if (spec.fluid[k].lattice == LatticeType::hexagonal) lat.type = LatticeType::hexagonal;
+      fluid_volume += static_cast<double>(out.fluid_counts[k]) * lat.cell_volume();
+    }
+    out.fills_domain = fluid_volume >= 0.99 * static_cast<double>(free_cells) * cubic.cell_volume();
+    for (int f = 0; f < 2 * D; ++f) out.open_faces = out.open_faces || (dom.boundary[f / 2] != AxisBoundary::periodic && dom.open[f]);
+  }
+  add_position_noise(out.particles, disc.position_noise * dx);
+
+  // Domain walls.
+  std::array<bool, 2 * D> open{};
+  for (int d = 0; d < D; ++d)
+    for (int side = 0; side < 2; ++side)
+      open[2 * d + side] = dom.boundary[d] != AxisBoundary::wall || dom.open[2 * d + side];
+  if (ghost) {
+    out.ghost = true;
+    for (int d = 0; d < D; ++d)
+      for (int side = 0; side < 2; ++side) {
+        auto& w = out.walls[d][side];
+        w.present = !open[2 * d + side];
+        w.position = side == 0 ? box.lo[d] : box.hi[d];
+        w.no_slip = disc.wall_slip != "free_slip";
+      }
+  } else {
+    for (const auto& w : box_container_walls<D>(box.lo, box.hi, open, cubic, default_layers * dx))
+      out.particles.add(Kind::Wall, w.x, {}, m_cubic, rho0, w.normal, w.depth);
+  }
+
+  // Wall bodies: the layers inside each solid, inside the domain box (the domain walls own what lies
+  // beyond its faces), not already in an earlier body.
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    const auto& w = spec.walls[k];
+    const Bounds<D> region = box.grown(dx);
+    std::size_t added = 0;
+    for (const auto& q : wall_layer<D>(*solids[k], cubic, thickness[k], &region)) {
+      if (!box.contains(q.x)) continue;
+      bool taken = false;
+      for (std::size_t j = 0; j < k && !taken; ++j) taken = solids[j]->signed_distance(q.x) < 0.0;
+      if (taken) continue;
+      std::array<double, D> v{};
+      for (std::size_t d = 0; d < w.velocity.size(); ++d) v[d] = w.velocity[d];
+      out.particles.add(Kind::Wall, q.x, v, m_cubic, rho0, q.normal, q.depth);
+      out.particles.body.back() = static_cast<std::int32_t>(k);
+      out.particles.stationary.back() = w.belt ? 1 : 0;
+      ++added;
+    }
+    if (added == 0)
+      fail(w.where, "the wall body holds no lattice point inside the domain at the spacing " + num(dx) + " m");
+    out.body_names.push_back(w.name);
+  }
+
+  for (int d = 0; d < D; ++d) {
+    out.domain.periodic[d] = dom.boundary[d] == AxisBoundary::periodic;
+    const double grow = out.domain.periodic[d] ? 0.0 : max_thickness;
+    out.domain.lo[d] = box.lo[d] - grow;
+    out.domain.hi[d] = box.hi[d] + grow;
+  }
+  return out;
+}
+
+template BuiltScene<2> build_scene<2>(const SceneSpec&, const Config&);
+template BuiltScene<3> build_scene<3>(const SceneSpec&, const Config&);
+
+}  // namespace sphmol

@@ -1,0 +1,63 @@
+#pragma once
+// Particles of a user scene (SceneSpec, read by scene_reader.hpp). All bodies share one lattice of
+// spacing dx whose cell centres sit half a spacing inside the domain's lower faces, so fluid, domain
+// walls and wall bodies continue each other:
+//   fluid bodies: the lattice points inside the shape (hexagonal if asked, 2D), minus those already
+//     placed by an earlier fluid body and those inside a wall body or within dx/2 of its surface;
+//     mass from the lattice (scenes/lattice_mass.hpp, as the box cases), initial velocity from the
+//     body's expressions, initial density from the body's pressure through the EOS;
+//   domain walls (boundary axes `wall`, minus the open faces): wall_particles -> the lattice continued
+//     outside the box (geometry::box_container_walls); ghost -> planar mirror walls (BoxWalls), no
+//     particles;
+//   wall bodies: the lattice points inside the solid within `layers` spacings of its surface
+//     (geometry::wall_layer), with the surface normal and depth the Morris et al. (1997) wall model
+//     reads, and Particles::body = the body's index.
+// What makes no sense (an empty fill, a body outside the domain, a length that is not a whole number
+// of spacings, ghost walls with wall bodies, ...) is a ConfigError at the element's line.
+#include <string>
+#include <vector>
+
+#include "sphmol/boundary/ghost_particles.hpp"
+#include "sphmol/config/config.hpp"
+#include "sphmol/core/domain.hpp"
+#include "sphmol/core/particles.hpp"
+#include "sphmol/scene/scene_spec.hpp"
+
+namespace sphmol {
+
+template <int D>
+struct BuiltScene {
+  Particles<D> particles;
+  Domain<D> domain;
+  BoxWalls<D> walls{};  // the domain's planar walls, for boundary: ghost
+  bool ghost = false;   // `walls` is to be handed to assemble_system
+  double spacing = 0.0;
+  int wall_layers = 0;                     // layers of the domain walls
+  std::vector<std::string> body_names;     // wall bodies, by Particles::body index
+  std::vector<std::size_t> fluid_counts;   // particles of each fluid body
+  // The fluid occupies the whole domain outside the wall bodies (to 1 % by volume): no free surface
+  // unless a face is open.
+  bool fills_domain = false;
+  bool open_faces = false;                 // some face of the domain is open
+};
+
+// The particle spacing of the scene: discretization.spacing, or the domain's x length over
+// discretization.particles_across. Throws ConfigError when a periodic or wall axis is not a whole
+// number of spacings long.
+double scene_spacing(const SceneSpec& spec, const Config& config);
+
+// An upper bound on the particle count without building: the lattice points of the domain box with
+// the domain walls' layers around it (wall bodies lie inside it). For refusing a scene too large for
+// memory before anything is allocated. Throws as scene_spacing.
+double scene_particle_bound(const SceneSpec& spec, const Config& config);
+
+// Throws ConfigError (located) for every inconsistency; `spec.dimension` must be D.
+template <int D>
+BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config);
+
+// The density at which the EOS of `config` gives `pressure` [Pa] above its value at the rest density
+// (linear: rho0 + p / c^2; Tait: rho0 (1 + p / B)^(1/gamma), Niedoba 2012, eq 2.75). Throws
+// std::invalid_argument for an EOS without a rest state (ideal gas) or an unreachable pressure.
+double density_at_pressure(const Config& config, double pressure);
+
+}  // namespace sphmol

@@ -1,0 +1,71 @@
+#pragma once
+// A user scene as read from the config's `scene:` section (scene_reader.hpp), before the spacing is
+// applied: the domain box and what bounds it, the fluid bodies and the solid wall bodies, each with
+// its shape. Dimension-free: coordinates are lists of `dimension` numbers; build_scene<D>
+// (scene_builder.hpp) turns it into particles. Every element keeps `where` ("FILE:LINE: key.path"),
+// so that what the builder finds wrong (an empty fill, a body outside the domain) is a config error
+// at the user's line.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/scene/expression.hpp"
+
+namespace sphmol {
+
+struct ShapeSpec {
+  // box | sphere | cylinder | polygon | mesh | plane | union | intersection | difference
+  std::string type;
+  std::string where;
+  std::vector<double> lo, hi;                 // box: the two opposite corners
+  std::vector<double> centre;                 // sphere (a circle in 2D)
+  double radius = 0.0;                        // sphere, cylinder
+  std::vector<double> start, end;             // cylinder (3D): the centres of its two end caps
+  std::vector<std::vector<double>> vertices;  // polygon (2D): the outline, in either orientation
+  std::string file;                           // mesh (3D): the surface file, resolved to a path
+  std::vector<double> point, normal;          // plane: the solid is the side `normal` points away from
+  std::vector<ShapeSpec> shapes;              // union, intersection (all of them), difference (first minus the rest)
+};
+
+enum class AxisBoundary { periodic, wall, open };
+
+struct DomainSpec {
+  std::vector<double> lo, hi;
+  std::vector<AxisBoundary> boundary;  // per axis
+  // open[2 d + side]: face left open (side 0 the lo face, 1 the hi face). Periodic axes: false.
+  std::vector<bool> open;
+  std::string where_lo, where_hi, where_boundaries, where_open;
+};
+
+// The value of a fluid body's `pressure` key for the hydrostatic initial state.
+inline constexpr const char* kHydrostaticPressure = "hydrostatic";
+
+struct FluidBodySpec {
+  ShapeSpec shape;
+  geometry::LatticeType lattice = geometry::LatticeType::cubic;
+  // One expression per axis of x (x, y, z); empty = at rest.
+  std::vector<std::shared_ptr<const Expression>> velocity;
+  bool hydrostatic = false;  // pressure from the depth below the body's free surface under the body force
+  double pressure = 0.0;     // [Pa] above the rest state when not hydrostatic
+  std::string where, where_lattice, where_pressure;
+};
+
+struct WallBodySpec {
+  std::string name;
+  ShapeSpec shape;
+  int layers = 0;                // 0: discretization.wall_layers, or enough to fill the kernel support
+  std::vector<double> velocity;  // [m/s], constant; empty = at rest
+  bool belt = false;             // the particles stay in place and carry `velocity` (a moving surface)
+  std::string where;
+};
+
+struct SceneSpec {
+  int dimension = 2;
+  DomainSpec domain;
+  std::vector<FluidBodySpec> fluid;
+  std::vector<WallBodySpec> walls;
+  std::string where;  // the scene section
+};
+
+}  // namespace sphmol

@@ -1,0 +1,95 @@
+#include "sphmol/scene/scene_yaml.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <charconv>
+#include <sstream>
+
+namespace sphmol {
+
+namespace {
+
+// The shortest text that parses back to the same double.
+std::string num(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+std::string list(const std::vector<double>& v) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + num(v[i]);
+  return out + "]";
+}
+// Free text (paths, expressions) double-quoted with YAML escapes.
+std::string quoted(const std::string& s) {
+  YAML::Emitter e;
+  e << YAML::DoubleQuoted << s;
+  return e.c_str();
+}
+
+// A plain number as it is, any other expression quoted (so it reads back as the same text).
+std::string scalar(const std::string& text) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  return ec == std::errc{} && end == text.data() + text.size() && !text.empty() ? text : quoted(text);
+}
+
+std::string shape(const ShapeSpec& s) {
+  std::string out = "{type: " + s.type;
+  if (s.type == "box") out += ", lo: " + list(s.lo) + ", hi: " + list(s.hi);
+  else if (s.type == "sphere") out += ", centre: " + list(s.centre) + ", radius: " + num(s.radius);
+  else if (s.type == "cylinder") out += ", start: " + list(s.start) + ", end: " + list(s.end) + ", radius: " + num(s.radius);
+  else if (s.type == "polygon") {
+    out += ", vertices: [";
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) out += (i ? ", " : "") + list(s.vertices[i]);
+    out += "]";
+  } else if (s.type == "mesh") out += ", file: " + quoted(s.file);
+  else if (s.type == "plane") out += ", point: " + list(s.point) + ", normal: " + list(s.normal);
+  else {
+    out += ", shapes: [";
+    for (std::size_t i = 0; i < s.shapes.size(); ++i) out += (i ? ", " : "") + shape(s.shapes[i]);
+    out += "]";
+  }
+  return out + "}";
+}
+
+}  // namespace
+
+std::string scene_to_yaml(const SceneSpec& spec) {
+  std::ostringstream y;
+  const auto& d = spec.domain;
+  const int dim = spec.dimension;
+  y << "scene:\n  domain:\n    lo: " << list(d.lo) << "\n    hi: " << list(d.hi) << "\n    boundaries: [";
+  for (int a = 0; a < dim; ++a)
+    y << (a ? ", " : "")
+      << (d.boundary[a] == AxisBoundary::periodic ? "periodic" : d.boundary[a] == AxisBoundary::wall ? "wall" : "open");
+  y << "]\n    open_faces: [";
+  bool first = true;
+  for (int f = 0; f < 2 * dim; ++f)
+    if (d.open[f] && d.boundary[f / 2] == AxisBoundary::wall) {
+      y << (first ? "" : ", ") << "xyz"[f / 2] << (f % 2 == 0 ? "_lo" : "_hi");
+      first = false;
+    }
+  y << "]\n  fluid:\n";
+  for (const auto& b : spec.fluid) {
+    y << "    - shape: " << shape(b.shape) << "\n      lattice: "
+      << (b.lattice == geometry::LatticeType::hexagonal ? "hexagonal" : "cubic") << "\n      velocity: [";
+    for (int a = 0; a < dim; ++a)
+      y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : scalar(b.velocity[static_cast<std::size_t>(a)]->text()));
+    y << "]\n      pressure: " << (b.hydrostatic ? std::string(kHydrostaticPressure) : num(b.pressure)) << "\n";
+  }
+  if (spec.walls.empty()) {
+    y << "  walls: []\n";
+  } else {
+    y << "  walls:\n";
+    for (const auto& w : spec.walls) {
+      std::vector<double> v = w.velocity;
+      v.resize(static_cast<std::size_t>(dim), 0.0);
+      y << "    - name: " << quoted(w.name) << "\n      shape: " << shape(w.shape) << "\n      layers: " << w.layers
+        << "\n      velocity: " << list(v) << "\n      belt: " << (w.belt ? "true" : "false") << "\n";
+    }
+  }
+  return y.str();
+}
+
+}  // namespace sphmol
