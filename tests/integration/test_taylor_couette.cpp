@@ -123,16 +123,21 @@ TEST_CASE("Taylor-Couette: the annulus approaches u(r) = A r + B / r with a turn
   const Result r = run(false);
   INFO("fluid " << r.fluid << ", walls " << r.walls << ": rms " << r.rms << ", worst ring " << r.max_bin
                 << ", radial " << r.radial);
-  CHECK(r.rms < 0.03);
-  CHECK(r.max_bin < 0.03);
-  CHECK(r.radial < 0.03);
+  // Measured: rms 0.0018, worst ring 0.0029, radial 0.003. With the wall particles carrying their own
+  // omega r instead of the surface's (core/wall_motion.hpp) the fluid lagged: rms 0.026, ring 0.055.
+  CHECK(r.rms < 0.01);
+  CHECK(r.max_bin < 0.01);
+  CHECK(r.radial < 0.01);
 }
 
 TEST_CASE("Taylor-Couette: the same with a stationary rotating inner cylinder", "[wall_motion][taylor_couette]") {
   const Result r = run(true);
   INFO("fluid " << r.fluid << ", walls " << r.walls << ": rms " << r.rms << ", worst ring " << r.max_bin
                 << ", radial " << r.radial);
+  // Measured: rms 0.018, worst ring 0.0074, radial 0.021: the ring averages are as close as with the
+  // turning cylinder, the particles noisier (the fluid slides over the wall's fixed lattice). With the
+  // particles' own omega r: worst ring 0.056.
   CHECK(r.rms < 0.03);
-  CHECK(r.max_bin < 0.03);
+  CHECK(r.max_bin < 0.015);
   CHECK(r.radial < 0.03);
 }

@@ -91,9 +91,12 @@ struct Particles {
         s = std::max(s, std::sqrt(v2));
         continue;
       }
-      std::array<double, D> xr{};
-      for (int d = 0; d < D; ++d) xr[d] = x_ref[d][i];
-      s = std::max(s, motions[motion[i]].max_speed(xr));
+      std::array<double, D> xr{}, nr{};
+      for (int d = 0; d < D; ++d) {
+        xr[d] = x_ref[d][i];
+        nr[d] = wall_normal[d][i];
+      }
+      s = std::max(s, motions[motion[i]].max_speed(xr, nr, wall_depth[i]));
     }
     return s;
   }
@@ -160,7 +163,7 @@ struct Particles {
       nr[d] = wall_normal[d][i];
     }
     WallState s;
-    m.apply(f, xr, nr, s.x, s.v, s.n);
+    m.apply(f, xr, nr, wall_depth[i], s.x, s.v, s.n);
     return s;
   }
 };
