@@ -388,6 +388,29 @@ TEST_CASE("wall motion: the energy budget allows for the work of a rotating wall
   CHECK(budget[1] - budget[0] == Approx(0.5 * mass * (omega * R) * (omega * R)));
 }
 
+TEST_CASE("wall motion: the largest wall speed counts ghost walls and reads only the scene's own particles",
+          "[wall_motion][health][ghost]") {
+  // A box of fluid with ghost walls, the lid moving at 0.02 m/s: the generator appends images to
+  // mass, rho and kind only, and the wall speed must come from its walls, not past the arrays.
+  const double dx = 1e-4;
+  Config c = fluid_config(dx);
+  c.discretization.boundary = "ghost";
+  Particles<2> P;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) P.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, 1000.0 * dx * dx, 1000.0);
+  BoxWalls<2> walls{};
+  for (int d = 0; d < 2; ++d)
+    for (int side = 0; side < 2; ++side) walls[d][side] = {true, side * 8 * dx, true, {0.0, 0.0}};
+  walls[1][1].velocity = {0.02, 0.0};
+  Domain<2> dom;
+  dom.hi = {8 * dx, 8 * dx};
+  auto sys = assemble_system<2>(c, P, dom, dx, &walls);
+  std::vector<double> y = sys->initial_state(), ydot(y.size());
+  sys->rhs(0.0, y.data(), ydot.data());
+  REQUIRE(sys->generated_particles() > 0);
+  CHECK(sys->max_wall_speed() == 0.02);
+}
+
 TEST_CASE("wall motion: VTK files hold the walls where the solver places them", "[wall_motion][vtk][output]") {
   const double dx = 1e-4, R = 6e-4, omega = 0.05;
   Particles<2> P = disc_and_fluid(dx, R);

@@ -84,7 +84,8 @@ struct Particles {
   // The largest speed any wall particle reaches (over all time): bounds the work walls do on the fluid.
   double max_wall_speed() const {
     double s = 0.0;
-    for (std::size_t i = n_fluid; i < size(); ++i) {
+    // Over the scene's own walls: a particle generator (ghosts) extends only mass, rho and kind.
+    for (std::size_t i = n_fluid; i < motion.size(); ++i) {
       if (motion[i] < 0) {
         double v2 = 0.0;
         for (int d = 0; d < D; ++d) v2 += v[d][i] * v[d][i];
