@@ -18,6 +18,7 @@
 //   wall, i.e. half the lid speed: the corner singularity is smoothed over one image, nothing more.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -109,6 +110,17 @@ class GhostGenerator final : public ParticleGenerator<D> {
     return changed;
   }
   std::size_t count() const override { return source_.size(); }
+  double max_wall_speed() const override {
+    double s = 0.0;
+    for (const auto& side : walls_)
+      for (const auto& wall : side) {
+        if (!wall.present) continue;
+        double v2 = 0.0;
+        for (double c : wall.velocity) v2 += c * c;
+        s = std::max(s, std::sqrt(v2));
+      }
+    return s;
+  }
   std::size_t base() const { return n_base_; }
   const std::vector<std::uint32_t>& sources() const { return source_; }
   const std::vector<std::uint8_t>& masks() const { return mask_; }

@@ -11,6 +11,7 @@
 // capping it at 1.5 measurably moves the no-slip plane (Couette e_rms 2.7e-3 instead of 1.7e-5 at
 // t = 0.5 s); the default 8 acts only on particles closer to the wall than d_B/7.
 #include <algorithm>
+#include <array>
 
 #include "sphmol/rhs/pair_term.hpp"
 
@@ -26,6 +27,8 @@ class MorrisWallVelocity final : public PairTermFor<D, MorrisWallVelocity<D>> {
   PairRows rows() const override { return wall_rows_ ? PairRows::all : PairRows::fluid; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& pt = *w.particles;
+    std::array<const double*, D> normal;  // turned with a rotating wall (Workspace::wall_normal)
+    for (int d = 0; d < D; ++d) normal[d] = w.wall_normal[d] ? w.wall_normal[d] : pt.wall_normal[d].data();
     const bool wall_row = i >= w.n_fluid;
     // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.
     std::uint32_t k = 0;
@@ -35,7 +38,7 @@ class MorrisWallVelocity final : public PairTermFor<D, MorrisWallVelocity<D>> {
       const std::size_t b = wall_row ? i : j;  // the wall particle of the pair
       const double sign = wall_row ? -1.0 : 1.0;   // dx = x_i - x_j; we need x_fluid - x_wall
       double dA = -pt.wall_depth[b];
-      for (int d = 0; d < D; ++d) dA += pt.wall_normal[d][b] * sign * r.dx[d][k];
+      for (int d = 0; d < D; ++d) dA += normal[d][b] * sign * r.dx[d][k];
       r.vfac[k] = dA > 0.0 ? std::min(beta_max_, 1.0 + pt.wall_depth[b] / dA) : beta_max_;
     }
   }

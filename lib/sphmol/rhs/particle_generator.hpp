@@ -20,6 +20,8 @@ class ParticleGenerator {
   // rebuilt: its pairs refer to particle indices).
   virtual bool generate(std::size_t n_base, Particles<D>& particles, Workspace<D>& w) = 0;
   virtual std::size_t count() const = 0;
+  // The largest speed of the walls the generated particles stand for (the work they can do on the fluid).
+  virtual double max_wall_speed() const { return 0.0; }
 };
 
 }  // namespace sphmol

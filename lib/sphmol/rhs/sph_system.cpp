@@ -41,6 +41,9 @@ SphSystem<D>::SphSystem(Particles<D> particles, Domain<D> domain, double h, std:
   ws_.hs.assign(ws_.n, h);
   support_ = kernel_->support();
   for (auto& s : ws_.strain) s.assign(ws_.n, 0.0);
+  moving_walls_ = std::any_of(particles_.motion.begin(), particles_.motion.end(), [](std::int32_t k) { return k >= 0; });
+  if (particles_.has_turning_walls())
+    for (int d = 0; d < D; ++d) normal_now_[d] = particles_.wall_normal[d];
 }
 
 template <int D>
@@ -166,8 +169,25 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       ws_.x[d][i] = domain_.wrap(d, xs[k]);
       ws_.v[d][i] = vs[k];
     }
-    for (std::size_t i = nf; i < nb; ++i)
-      ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
+    if (!moving_walls_)
+      for (std::size_t i = nf; i < nb; ++i) ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
+  }
+  if (moving_walls_) {
+    // Walls that follow a motion (core/wall_motion.hpp): position, velocity and, when the body
+    // turns, normal at t, once per evaluation, so the pair loops read plain arrays. The trigonometry
+    // of each body's frame is evaluated once here, not per particle.
+    frames_.clear();
+    for (const auto& m : P.motions) frames_.push_back(m.frame(t));
+    const bool turning = !normal_now_[0].empty();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = nf; i < nb; ++i) {
+      const auto s = P.wall_state(i, frames_, t);
+      for (int d = 0; d < D; ++d) {
+        ws_.x[d][i] = domain_.wrap(d, s.x[d]);
+        ws_.v[d][i] = s.v[d];
+        if (turning) normal_now_[d][i] = s.n[d];
+      }
+    }
   }
   // Optional fields: per-scene branches outside every pair loop.
   auto gather = [&](std::size_t block, std::vector<double>& to) {
@@ -237,6 +257,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   }
   ws_.drhodt_wall = layout_.n_wall_density > 0 ? out + layout_.wall_density() : nullptr;
   if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
+  for (int d = 0; d < D; ++d) ws_.wall_normal[d] = normal_now_[d].empty() ? nullptr : normal_now_[d].data();
   for (const auto& term : terms_) term->apply(ws_);
   if (ord && nf > 0) {
     // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves). The
@@ -332,6 +353,7 @@ void SphSystem<D>::reorder_workspace() {
     both(wp_.v[d], td);
     both(wp_.x_ref[d], td);
     both(wp_.wall_normal[d], td);
+    if (!normal_now_[d].empty()) both(normal_now_[d], td);
   }
   for (auto* v : {&ws_.rho, &ws_.p, &ws_.c, &ws_.e, &ws_.hs, &wp_.mass, &wp_.rho, &wp_.wall_depth}) both(*v, td);
   for (auto& s : ws_.strain) both(s, td);
@@ -339,6 +361,7 @@ void SphSystem<D>::reorder_workspace() {
   if (!rho_ref_.empty()) both(rho_ref_, td);
   both(wp_.stationary, tb);
   both(wp_.body, ti);
+  both(wp_.motion, ti);
   both(wp_.kind, tk);
   both(perm_, tu);
   for (std::size_t i = 0; i < nb; ++i) inv_[perm_[i]] = static_cast<std::uint32_t>(i);

@@ -2,6 +2,8 @@
 // The particle ODE system dy/dt = f(t, y) of one scene: gathers positions and velocities from y
 // (and the prescribed wall motion at t), keeps the Verlet pair list current, evaluates the kernel
 // once per pair, then runs the scene's terms in order. Also supplies the CFL limit.
+#include <algorithm>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -93,6 +95,11 @@ class SphSystem final : public OdeSystem {
   const std::array<std::vector<double>, D>& positions() const { return ws_.x; }
   const std::array<std::vector<double>, D>& velocities() const { return ws_.v; }
 
+  // The largest speed of any wall (wall particles over all time, and generated walls): moving walls
+  // are the scene's energy input besides the body force (run/health_limits.hpp).
+  double max_wall_speed() const {
+    return std::max(particles_.max_wall_speed(), generator_ ? generator_->max_wall_speed() : 0.0);
+  }
   const StateLayout<D>& layout() const { return layout_; }
   const Particles<D>& particles() const { return particles_; }
   const Domain<D>& domain() const { return domain_; }
@@ -141,6 +148,10 @@ class SphSystem final : public OdeSystem {
   std::vector<std::uint32_t> perm_, inv_;  // inv_: state index -> workspace index
   Particles<D> wp_;
   std::vector<double> out_;
+  // Walls that follow a motion table entry (Particles::motion >= 0): set at every evaluation.
+  bool moving_walls_ = false;
+  typename Particles<D>::Frames frames_;           // each motion's frame at the evaluation's time
+  std::array<std::vector<double>, D> normal_now_;  // wall normals at that time (workspace order); empty unless walls turn
   mutable std::vector<double> rho_out_, p_out_, c_out_, e_out_, hs_out_;
 };
 

@@ -24,6 +24,9 @@ struct Workspace {
   // per-particle data needs it.
   const std::uint32_t* order = nullptr;
   const PairList* verlet = nullptr;  // the Verlet list (with skin) of this evaluation
+  // Wall normals at this evaluation's time, per workspace index: set by SphSystem when walls turn
+  // (core/wall_motion.hpp); null: the particles' own normals (walls that do not turn).
+  std::array<const double*, D> wall_normal{};
   // Seconds each OpenMP thread has spent on rows of fused pair passes, summed over evaluations (index:
   // thread number): equal entries mean balanced threads, and their sum against the 1-thread time shows
   // how much slower a thread runs beside the other (rhs/fused_pair_pass.hpp).

@@ -12,8 +12,9 @@
 //    u(rho) = int_rho0^rho p(r) / r^2 dr >= 0; a column that starts at its hydrostatic density
 //    turns it into motion where it is free to expand (the dam break). The inputs are the initial
 //    kinetic and elastic energy, the internal energy (energy equation), the work of the body force
-//    (accumulated per step from sum_i m_i g(t) . v_i) and moving walls, whose speed V bounds the
-//    fluid's by the maximum principle (KE <= M V^2 / 2). KE + E_el may exceed this budget by
+//    (accumulated per step from sum_i m_i g(t) . v_i) and moving walls, whose largest speed V (of any
+//    wall particle at any time, SphSystem::max_wall_speed) bounds the fluid's by the maximum principle
+//    (KE <= M V^2 / 2). KE + E_el may exceed this budget by
 //    kEnergySlack of it plus kEnergyFloor M U^2 / 2 (the time discretisation of the work integral).
 // Ideal-gas scenes (shock tubes) skip the speed and density bounds: supersonic flow and 4:1
 // compression are the physics there.
@@ -89,16 +90,9 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   }
   const bool ideal_gas = c.fluid.eos.type == "ideal_gas";
   const double U = std::max(velocity_scale, v0max);
-  // Moving walls (a lid, a plate) can feed the fluid up to 1/2 M V^2, V their largest speed.
-  double V_wall = 0.0;
-  {
-    const auto& P = sys.particles();
-    for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
-      double v2 = 0.0;
-      for (int d = 0; d < D; ++d) v2 += P.v[d][i] * P.v[d][i];
-      V_wall = std::max(V_wall, std::sqrt(v2));
-    }
-  }
+  // Moving walls can feed the fluid up to 1/2 M V^2, V the largest speed of any wall (a lid, a plate,
+  // a rotating wall's max |omega r|).
+  const double V_wall = sys.max_wall_speed();
   if (!ideal_gas && U > 0.0) {
     const double cs = c.fluid.eos.sound_speed;
     char buf[160];

@@ -99,7 +99,7 @@ std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart
     if (d >= D) return 0.0;
     const std::size_t i = first + k;
     if (part == VtkPart::fluid) return y[L.velocity(d) + i];
-    if (part == VtkPart::walls) return P.v[d][i];
+    if (part == VtkPart::walls) return P.wall_velocity(d, i, t);
     return sys.velocities()[d][i];
   };
   const auto field = [&](const std::vector<double>& f) {
