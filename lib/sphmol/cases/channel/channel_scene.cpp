@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 
@@ -34,14 +37,17 @@ ChannelScene build_channel_scene(const Config& config) {
   s.domain.periodic = {true, false};
   const double rho0 = config.fluid.density;
   const double m = lattice_particle_mass<2>(disc.kernel, rho0, dx, h);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) s.particles.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, m, rho0);
-  for (int k = 0; k < layers; ++k)
-    for (int i = 0; i < nx; ++i) {
-      const double depth = (k + 0.5) * dx;
-      s.particles.add(Kind::Wall, {(i + 0.5) * dx, -depth}, {0.0, 0.0}, m, rho0, {0.0, 1.0}, depth);
-      s.particles.add(Kind::Wall, {(i + 0.5) * dx, l + depth}, {g.wall_velocity, 0.0}, m, rho0, {0.0, -1.0}, depth);
-    }
+  geometry::Lattice<2> lattice;  // cell centres (i + 1/2) dx from the origin
+  lattice.spacing = dx;
+  for (const auto& x : geometry::fill<2>(geometry::BoxShape<2>({0.0, 0.0}, {nx * dx, l}), lattice))
+    s.particles.add(Kind::Fluid, x, {0.0, 0.0}, m, rho0);
+  // Walls below y = 0 and above y = l; the x faces are the periodic ends (open).
+  const auto walls =
+      geometry::box_container_walls<2>({0.0, 0.0}, {nx * dx, l}, {true, true, false, false}, lattice, layers * dx);
+  for (const auto& w : walls) {
+    const bool top = w.face == 3;
+    s.particles.add(Kind::Wall, w.x, {top ? g.wall_velocity : 0.0, 0.0}, m, rho0, w.normal, w.depth);
+  }
   return s;
 }
 

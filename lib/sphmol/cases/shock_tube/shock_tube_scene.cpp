@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
@@ -74,21 +77,29 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
     s.particles.add(kind, pos, vel, q.density * vol, q.density, normal, depth);
     s.energy.push_back(q.pressure / (gm1 * q.density));
   };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double x = -0.5 * L + (i + 0.5) * dx;
-      place(Kind::Fluid, x, (j + 0.5) * dx, x < 0.0 ? Ls : Rs, 0.0, 0.0);
-    }
+  // The tube [-L/2, L/2] (x [0, W] in y) on the lattice of cell centres (i + 1/2) dx from its lo corner.
+  geometry::Vec<D> lo{}, hi{};
+  lo[0] = -0.5 * L;
+  hi[0] = 0.5 * L;
+  if constexpr (D == 2) hi[1] = ny * dx;
+  geometry::Lattice<D> lattice;
+  lattice.spacing = dx;
+  lattice.origin = lo;
+  for (const auto& x : geometry::fill<D>(geometry::BoxShape<D>(lo, hi), lattice))
+    place(Kind::Fluid, x[0], D == 2 ? x[D - 1] : 0.0, x[0] < 0.0 ? Ls : Rs, 0.0, 0.0);
   // With ghost y walls the end walls continue through the corners (behind y = 0 and y = W): the
   // ghosts image fluid particles only, and a corner particle without wall neighbours on that diagonal
   // is pushed out through the corner (seen as a blow-up at t = 0.02 without these layers).
-  const int j_ext = (D == 2 && boundary == "ghost") ? layers : 0;
-  for (int j = -j_ext; j < ny + j_ext; ++j)
-    for (int k = 0; k < layers; ++k) {
-      const double depth = (k + 0.5) * dx;
-      place(Kind::Wall, -0.5 * L - depth, (j + 0.5) * dx, Ls, 1.0, depth);
-      place(Kind::Wall, 0.5 * L + depth, (j + 0.5) * dx, Rs, -1.0, depth);
-    }
+  // The end walls are the walls of the tube with its y faces open, extended by those layers in y.
+  std::array<bool, 2 * D> open{};
+  if constexpr (D == 2) {
+    const double ext = boundary == "ghost" ? layers * dx : 0.0;
+    lo[1] -= ext;
+    hi[1] += ext;
+    open[2] = open[3] = true;
+  }
+  for (const auto& w : geometry::box_container_walls<D>(lo, hi, open, lattice, layers * dx))
+    place(Kind::Wall, w.x[0], D == 2 ? w.x[D - 1] : 0.0, w.face == 0 ? Ls : Rs, w.normal[0], w.depth);
   if (D == 2 && boundary == "virtual_repulsive") {
     // Niedoba 2012, §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
     // rectangle enlarged by dx/2 beyond the domain boundary (which lies dx/2 outside the outermost
