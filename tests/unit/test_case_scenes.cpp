@@ -385,3 +385,23 @@ TEST_CASE("case scenes: the 3D tank has the fluid block, four side walls and a f
     CHECK(s.particles.wall_normal[face / 2][i] == (face % 2 == 0 ? 1.0 : -1.0));
   }
 }
+
+TEST_CASE("case scenes: the 3D tank's keys", "[case_scenes]") {
+  // geometry.box has three lengths in 3D, the depth last; the tank has no repulsive-wall builder.
+  const std::string yaml = verification("hydrostatic_3d");
+  const Config c = load_config_string(yaml);
+  CHECK(c.dimension == 3);
+  CHECK(c.settings<HydrostaticSettings>().box.size() == 3);
+  CHECK_THROWS_WITH(load_config_string(yaml, {"geometry.box=[0.5, 0.5]"}),
+                    Catch::Contains("geometry.box: has 2 components, expected 3"));
+  std::string no_wall_pressure = yaml;
+  no_wall_pressure.erase(no_wall_pressure.find("  wall_pressure:"), std::string("  wall_pressure: extrapolated\n").size());
+  CHECK_THROWS_WITH(load_config_string(no_wall_pressure,
+                                       {"discretization.boundary=virtual_repulsive", "discretization.repulsive.strength=1",
+                                        "discretization.repulsive.p1=12", "discretization.repulsive.p2=4",
+                                        "discretization.repulsive.r0=0.5"}),
+                    Catch::Contains("the 3D tank has no virtual_repulsive walls"));
+  // The 2D tank keeps its two lengths [width, depth].
+  CHECK_THROWS_WITH(load_config_string(verification("hydrostatic"), {"geometry.box=[1, 0.5, 0.9]"}),
+                    Catch::Contains("geometry.box: has 3 components, expected 2"));
+}
