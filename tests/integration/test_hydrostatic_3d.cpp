@@ -1,5 +1,5 @@
 // The hydrostatic tank in 3D (verification/hydrostatic_3d.yaml) over 10 s of simulated time: the
-// binary writes a 3D summary and the column holds p = rho0 g (H - z) without drifting. About 3 min
+// binary writes a 3D summary and the column holds p = rho0 g (H - z) without drifting. 74 s to 3 min
 // on one thread of a busy 2-core machine (11,800 leapfrog steps, 3456 particles); one thread, as
 // two threads on a machine busy with other jobs spend most of the run waiting for each other.
 #include <catch2/catch.hpp>

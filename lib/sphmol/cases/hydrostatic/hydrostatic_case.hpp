@@ -19,7 +19,9 @@ template <int D>
 class HydrostaticCase final : public Case<D> {
  public:
   std::unique_ptr<SphSystem<D>> build(const Config& config) override;
-  std::string reference() const override { return "hydrostatic p = rho0 g (depth - z)"; }
+  std::string reference() const override {
+    return D == 3 ? "hydrostatic p = rho0 g (depth - z)" : "hydrostatic p = rho0 g (depth - y)";
+  }
   // The free-fall speed sqrt(2 g H) of the column.
   double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * depth_); }
   bool free_surface() const override { return true; }
