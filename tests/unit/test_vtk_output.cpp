@@ -192,7 +192,7 @@ geometry: {box: [1.0, 0.9]}
 discretization: {particles_across: 10, boundary: ghost}
 time: {t_end: 0.01, integrator: leapfrog, dt: 1.0e-3}
 )";
-  HydrostaticCase c;
+  HydrostaticCase<2> c;
   auto sys = c.build(load_config_string(yaml));
   std::vector<double> y = sys->initial_state(), ydot(y.size());
   sys->rhs(0.5, y.data(), ydot.data());

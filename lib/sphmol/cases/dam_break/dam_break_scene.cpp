@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 
@@ -54,26 +57,16 @@ DamBreakScene build_dam_break_scene(const Config& config) {
   s.spacing = dx;
   s.wall_layers = layers;
   s.g = g;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double y = (j + 0.5) * dx;
-      s.particles.add(Kind::Fluid, {(i + 0.5) * dx, y}, {0.0, 0.0}, m, hydrostatic(y));
-    }
-  // Walls: bottom rows (corners included) then the two side walls up to the tank height.
-  for (int j = -layers; j < ny_tank; ++j)
-    for (int i = -layers; i < nx_tank + layers; ++i) {
-      const bool bottom = j < 0, left = i < 0, right = i >= nx_tank;
-      if (!bottom && !left && !right) continue;
-      const std::array<double, 2> x{(i + 0.5) * dx, (j + 0.5) * dx};
-      std::array<double, 2> normal{0.0, 1.0};
-      double depth = -x[1];
-      if (!bottom) {
-        normal = {left ? 1.0 : -1.0, 0.0};
-        depth = left ? -x[0] : x[0] - Lx;
-      }
-      const double rho = x[0] < a ? hydrostatic(x[1]) : rho0;
-      s.particles.add(Kind::Wall, x, {0.0, 0.0}, m, rho, normal, depth);
-    }
+  geometry::Lattice<2> lattice;  // cell centres (i + 1/2) dx from the origin
+  lattice.spacing = dx;
+  for (const auto& x : geometry::fill<2>(geometry::BoxShape<2>({0.0, 0.0}, {nx * dx, ny * dx}), lattice))
+    s.particles.add(Kind::Fluid, x, {0.0, 0.0}, m, hydrostatic(x[1]));
+  // Walls: the floor (it takes the corners) and the two side walls up to the tank height; open top.
+  for (const auto& w : geometry::box_container_walls<2>({0.0, 0.0}, {Lx, Ly}, {false, false, false, true}, lattice,
+                                                        layers * dx, 2)) {
+    const double rho = w.x[0] < a ? hydrostatic(w.x[1]) : rho0;
+    s.particles.add(Kind::Wall, w.x, {0.0, 0.0}, m, rho, w.normal, w.depth);
+  }
   // Room above the tank for splashes; fluid leaving the domain is a blow-up (run/health_check.hpp).
   const double margin = layers * dx + 2.0 * support;
   s.domain.periodic = {false, false};

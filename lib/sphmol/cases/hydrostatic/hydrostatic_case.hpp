@@ -1,9 +1,10 @@
 #pragma once
-// Water column at rest in a tank (Potapov & Reshetnikova 2021, §5): fluid [0, width] x [0, depth] starting at uniform
-// density, walls left, right and below (the side walls reach 1.2 x depth), gravity body force ramped
-// in (fluid.body_force_ramp). Reference p = rho0 g (depth - y). At output times t >= settle time
-// (2 x body_force_ramp), over fluid particles:
-//   p_rms, p_max = RMS / max of (p_i - rho0 g (depth - y_i)) / (rho0 g depth);
+// Water column at rest in a tank (Potapov & Reshetnikova 2021, §5), in 2D or 3D: fluid [0, width] x
+// [0, depth] (3D: [0, width] x [0, breadth] x [0, depth]) starting at uniform density, walls on every
+// side and below (the side walls reach 1.2 x depth), open top, gravity along the last axis ramped in
+// (fluid.body_force_ramp). Reference p = rho0 g (depth - z), z the last coordinate. At output times
+// t >= settle time (2 x body_force_ramp), over fluid particles:
+//   p_rms, p_max = RMS / max of (p_i - rho0 g (depth - z_i)) / (rho0 g depth);
 // max_drift = largest displacement of any fluid particle from its start, over every RHS evaluation of
 // the whole run (analysis/drift_monitor.hpp), in particle spacings.
 // p_i is the pressure of the RHS evaluation that ended the last step (within one step of t).
@@ -14,14 +15,17 @@
 
 namespace sphmol {
 
-class HydrostaticCase final : public Case<2> {
+template <int D>
+class HydrostaticCase final : public Case<D> {
  public:
-  std::unique_ptr<SphSystem<2>> build(const Config& config) override;
-  std::string reference() const override { return "hydrostatic p = rho0 g (depth - y)"; }
+  std::unique_ptr<SphSystem<D>> build(const Config& config) override;
+  std::string reference() const override {
+    return D == 3 ? "hydrostatic p = rho0 g (depth - z)" : "hydrostatic p = rho0 g (depth - y)";
+  }
   // The free-fall speed sqrt(2 g H) of the column.
   double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * depth_); }
   bool free_surface() const override { return true; }
-  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "p_rms"; }
   void annotate(nlohmann::json& summary) const override;

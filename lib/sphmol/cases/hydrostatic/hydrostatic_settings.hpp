@@ -8,7 +8,7 @@
 namespace sphmol {
 
 struct HydrostaticSettings final : CaseSettings {
-  std::vector<double> box;  // [width, depth] of the water column [m]
+  std::vector<double> box;  // [width, depth] (3D: [width, breadth, depth]) of the water column [m]
   std::string to_yaml() const override;
 };
 

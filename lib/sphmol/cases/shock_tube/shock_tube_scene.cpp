@@ -1,10 +1,16 @@
 #include "sphmol/cases/shock_tube/shock_tube_scene.hpp"
 #include "sphmol/cases/shock_tube/shock_tube_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include "sphmol/geometry/box_shape.hpp"
+#include "sphmol/geometry/lattice.hpp"
+#include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
@@ -74,21 +80,45 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
     s.particles.add(kind, pos, vel, q.density * vol, q.density, normal, depth);
     s.energy.push_back(q.pressure / (gm1 * q.density));
   };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double x = -0.5 * L + (i + 0.5) * dx;
-      place(Kind::Fluid, x, (j + 0.5) * dx, x < 0.0 ? Ls : Rs, 0.0, 0.0);
-    }
+  // The tube [-L/2, L/2] (x [0, W] in y) on the lattice of cell centres (i + 1/2) dx from its lo corner.
+  geometry::Vec<D> lo{}, hi{};
+  lo[0] = -0.5 * L;
+  hi[0] = 0.5 * L;
+  if constexpr (D == 2) hi[1] = ny * dx;
+  geometry::Lattice<D> lattice;
+  lattice.spacing = dx;
+  lattice.origin = lo;
+  for (const auto& x : geometry::fill<D>(geometry::BoxShape<D>(lo, hi), lattice))
+    place(Kind::Fluid, x[0], D == 2 ? x[D - 1] : 0.0, x[0] < 0.0 ? Ls : Rs, 0.0, 0.0);
   // With ghost y walls the end walls continue through the corners (behind y = 0 and y = W): the
   // ghosts image fluid particles only, and a corner particle without wall neighbours on that diagonal
   // is pushed out through the corner (seen as a blow-up at t = 0.02 without these layers).
-  const int j_ext = (D == 2 && boundary == "ghost") ? layers : 0;
-  for (int j = -j_ext; j < ny + j_ext; ++j)
-    for (int k = 0; k < layers; ++k) {
-      const double depth = (k + 0.5) * dx;
-      place(Kind::Wall, -0.5 * L - depth, (j + 0.5) * dx, Ls, 1.0, depth);
-      place(Kind::Wall, 0.5 * L + depth, (j + 0.5) * dx, Rs, -1.0, depth);
-    }
+  // The end walls are the walls of the tube with its y faces open, extended by those layers in y.
+  std::array<bool, 2 * D> open{};
+  if constexpr (D == 2) {
+    const double ext = boundary == "ghost" ? layers * dx : 0.0;
+    lo[1] -= ext;
+    hi[1] += ext;
+    open[2] = open[3] = true;
+  }
+  // Each end's layers continue the lattice from that end, so a wall particle sits exactly (k + 1/2) dx
+  // beyond it. They are listed row by row, nearest layer first, the two ends alternately: the
+  // adaptive 1D run's errors move in their third digit with the summation order (measured).
+  std::vector<geometry::WallPoint<D>> ends;
+  for (int side = 0; side < 2; ++side) {
+    std::array<bool, 2 * D> open_side = open;
+    open_side[1 - side] = true;
+    geometry::Lattice<D> from_end = lattice;
+    from_end.origin[0] = side == 0 ? lo[0] : hi[0];
+    const auto w = geometry::box_container_walls<D>(lo, hi, open_side, from_end, layers * dx);
+    ends.insert(ends.end(), w.begin(), w.end());
+  }
+  const auto order = [dx](const geometry::WallPoint<D>& w) {
+    return std::make_tuple(D == 2 ? std::lround(w.x[D - 1] / dx - 0.5) : 0L, std::lround(w.depth / dx - 0.5), w.face);
+  };
+  std::stable_sort(ends.begin(), ends.end(), [&](const auto& a, const auto& b) { return order(a) < order(b); });
+  for (const auto& w : ends)
+    place(Kind::Wall, w.x[0], D == 2 ? w.x[D - 1] : 0.0, w.face == 0 ? Ls : Rs, w.normal[0], w.depth);
   if (D == 2 && boundary == "virtual_repulsive") {
     // Niedoba 2012, §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
     // rectangle enlarged by dx/2 beyond the domain boundary (which lies dx/2 outside the outermost
