@@ -207,6 +207,25 @@ TEST_CASE("every study runs on every registered case with finite errors", "[inte
   }
 }
 
+TEST_CASE("studies of a user scene measure its quantity against a finer reference run", "[integration][studies][scene]") {
+  const std::string out = "reports/scene_quantity";
+  // compare: no --reference-dt, yet a reference run at a quarter of the CFL step measures every run.
+  REQUIRE(run(study_args("compare", "scene", out + "/compare", {"--integrators", "leapfrog", "--step-factors", "1"}),
+              out + "_compare.log") == 0);
+  const auto c = read_json(out + "/compare/comparison.json");
+  REQUIRE(c["reference_run"].is_object());
+  CHECK(c["error"] == "relative velocity error vs reference run");
+  CHECK_THAT(slurp(out + "_compare.log"), Catch::Contains("has no exact reference"));
+  for (const auto& r : c["runs"]) CHECK(finite_number(r["exact_error"]));
+  // converge in space: each level against one more level at half the finest spacing.
+  REQUIRE(run(study_args("converge", "scene", out + "/space", {"--refine", "space", "--levels", "2"}), out + "_space.log") == 0);
+  const auto s = read_json(out + "/space/convergence.json");
+  CHECK_THAT(s["error_measure"].get<std::string>(), Catch::Contains("half the finest spacing"));
+  REQUIRE(s["series"][0]["errors"].size() == 2);
+  for (const auto& e : s["series"][0]["errors"]) CHECK(finite_number(e));
+  CHECK_THAT(slurp(out + "_space.log"), Catch::Contains("reference level 2"));
+}
+
 TEST_CASE("compare names each case's own primary error and finds it finite", "[integration][compare]") {
   for (const auto& [name, key] : std::vector<std::pair<std::string, std::string>>{
            {"taylor_green", "L1_velocity"}, {"hydrostatic", "p_rms"}, {"cavity", "u_rms"}}) {

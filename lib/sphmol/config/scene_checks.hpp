@@ -25,6 +25,8 @@ struct CaseReaders {
 // Particle counts of the scene (wall particles: the layers the builders add; generated ghosts are
 // not counted) and the memory they need, estimated before anything is allocated.
 struct SceneSize {
+  SceneSize() = default;
+  SceneSize(double spacing_, double fluid_, double wall_) : spacing(spacing_), fluid(fluid_), wall(wall_) {}
   double spacing = 0.0;
   double fluid = 0.0, wall = 0.0;  // doubles: an absurd config must not overflow the count
   double bytes_per_particle = 0.0;

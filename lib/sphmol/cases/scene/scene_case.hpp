@@ -21,6 +21,9 @@ class SceneCase final : public Case<D> {
   nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "kinetic_energy_change"; }
+  // A user scene has no exact solution: the studies compare its kinetic-energy change with a
+  // finer run (Case::has_exact_reference).
+  bool has_exact_reference() const override { return false; }
   double velocity_scale(const Config& config) const override { return velocity_scale_; }
   bool free_surface() const override { return free_surface_; }
   void annotate(nlohmann::json& summary) const override;
