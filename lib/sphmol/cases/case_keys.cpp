@@ -64,11 +64,7 @@ void require_boundary(CaseReaders& r, const Config& c, const std::vector<std::st
                                         std::string(why) + " (allowed: " + join(allowed) + ")");
 }
 
-std::string yaml_list(const std::vector<double>& v) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + number_text(v[i]);
-  return out + "]";
-}
+std::string yaml_list(const std::vector<double>& v) { return sphmol::yaml_list(v); }
 
 }  // namespace sphmol::case_keys
 

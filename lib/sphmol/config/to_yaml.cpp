@@ -6,6 +6,7 @@
 #include <utility>
 #include <sstream>
 
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/probes/probe_config.hpp"
 
@@ -13,24 +14,10 @@ namespace sphmol {
 
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string list(const std::vector<double>& v) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + num(v[i]);
-  return out + "]";
-}
-
+std::string num(double v) { return number_text(v); }
+std::string list(const std::vector<double>& v) { return yaml_list(v); }
 // Free text (paths) double-quoted with YAML escapes; names from fixed lists go out plain.
-std::string quoted(const std::string& s) {
-  YAML::Emitter e;
-  e << YAML::DoubleQuoted << s;
-  return e.c_str();
-}
+std::string quoted(const std::string& s) { return yaml_quoted(s); }
 
 }  // namespace
 

@@ -71,6 +71,18 @@ std::string number_text(double v) {
   return std::string(buf, r.ptr);
 }
 
+std::string yaml_list(const std::vector<double>& v) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + number_text(v[i]);
+  return out + "]";
+}
+
+std::string yaml_quoted(const std::string& s) {
+  YAML::Emitter e;
+  e << YAML::DoubleQuoted << s;
+  return e.c_str();
+}
+
 std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) const {
   // The longest overridden prefix of `path` owns the value.
   const std::string* best = nullptr;

@@ -22,6 +22,10 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
 
 // The shortest text that reads back as the same double (for messages and the resolved YAML).
 std::string number_text(double v);
+// "[a, b, c]" of number_text, and free text double-quoted with YAML escapes: the pieces of a
+// resolved YAML file (config/to_yaml.cpp and the case modules' sections).
+std::string yaml_list(const std::vector<double>& v);
+std::string yaml_quoted(const std::string& s);
 
 // Where the YAML tree came from: the file name, and which key paths were replaced by overrides.
 class YamlOrigin {

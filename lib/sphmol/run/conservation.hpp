@@ -18,25 +18,44 @@
 
 namespace sphmol {
 
+// Sums over the fluid particles of the state y: mass, momentum, kinetic and internal energy, the sum
+// of m |v| (the momentum scale) and the largest speed.
+template <int D>
+struct FluidTotals {
+  std::array<double, D> momentum{};
+  double mass = 0.0, kinetic = 0.0, internal = 0.0, momentum_scale = 0.0, max_speed = 0.0;
+};
+
+template <int D>
+FluidTotals<D> fluid_totals(const SphSystem<D>& sys, const double* y) {
+  const auto& L = sys.layout();
+  const auto& m = sys.particles().mass;
+  FluidTotals<D> f;
+  for (std::size_t i = 0; i < L.n; ++i) {
+    double v2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double v = y[L.velocity(d) + i];
+      f.momentum[d] += m[i] * v;
+      v2 += v * v;
+    }
+    const double speed = std::sqrt(v2);
+    f.mass += m[i];
+    f.kinetic += 0.5 * m[i] * v2;
+    f.momentum_scale += m[i] * speed;
+    f.max_speed = std::max(f.max_speed, speed);
+    if (L.has_energy) f.internal += m[i] * y[L.energy() + i];
+  }
+  return f;
+}
+
 template <int D>
 class ConservationLog {
  public:
   void record(const SphSystem<D>& sys, const double* y, double t) {
     const auto& L = sys.layout();
-    const auto& m = sys.particles().mass;
-    std::array<double, D> p{};
-    double ke = 0.0, scale = 0.0, internal = 0.0;
-    for (std::size_t i = 0; i < L.n; ++i) {
-      double v2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double v = y[L.velocity(d) + i];
-        p[d] += m[i] * v;
-        v2 += v * v;
-      }
-      ke += 0.5 * m[i] * v2;
-      scale += m[i] * std::sqrt(v2);
-      if (L.has_energy) internal += m[i] * y[L.energy() + i];
-    }
+    const FluidTotals<D> f = fluid_totals(sys, y);
+    const auto& p = f.momentum;
+    const double ke = f.kinetic, scale = f.momentum_scale, internal = f.internal;
     times_.push_back(t);
     momentum_.push_back(p);
     kinetic_.push_back(ke);

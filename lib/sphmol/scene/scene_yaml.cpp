@@ -1,5 +1,7 @@
 #include "sphmol/scene/scene_yaml.hpp"
 
+#include "sphmol/config/yaml_reader.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <charconv>
@@ -9,23 +11,9 @@ namespace sphmol {
 
 namespace {
 
-// The shortest text that parses back to the same double.
-std::string num(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-std::string list(const std::vector<double>& v) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + num(v[i]);
-  return out + "]";
-}
-// Free text (paths, expressions) double-quoted with YAML escapes.
-std::string quoted(const std::string& s) {
-  YAML::Emitter e;
-  e << YAML::DoubleQuoted << s;
-  return e.c_str();
-}
+std::string num(double v) { return number_text(v); }
+std::string list(const std::vector<double>& v) { return yaml_list(v); }
+std::string quoted(const std::string& s) { return yaml_quoted(s); }
 
 // A plain number as it is, any other expression quoted (so it reads back as the same text).
 std::string scalar(const std::string& text) {

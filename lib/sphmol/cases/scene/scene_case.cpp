@@ -6,6 +6,7 @@
 
 #include "sphmol/cases/scene/scene_settings.hpp"
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/run/conservation.hpp"
 #include "sphmol/scene/scene_builder.hpp"
 
 namespace sphmol {
@@ -44,21 +45,9 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
 
 template <int D>
 nlohmann::json SceneCase<D>::measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink&) {
-  const auto& L = sys.layout();
-  const auto& m = sys.particles().mass;
-  std::array<double, D> p{};
-  double ke = 0.0, mass = 0.0, vmax = 0.0;
-  for (std::size_t i = 0; i < L.n; ++i) {
-    double v2 = 0.0;
-    for (int d = 0; d < D; ++d) {
-      const double v = y[L.velocity(d) + i];
-      p[d] += m[i] * v;
-      v2 += v * v;
-    }
-    ke += 0.5 * m[i] * v2;
-    mass += m[i];
-    vmax = std::max(vmax, std::sqrt(v2));
-  }
+  const FluidTotals<D> f = fluid_totals(sys, y);
+  const auto& p = f.momentum;
+  const double ke = f.kinetic, mass = f.mass, vmax = f.max_speed;
   if (ke0_ < 0.0) ke0_ = ke, mass0_ = mass;
   // Relative to M U^2 / 2; with no velocity scale (at rest, no body force), to the initial energy
   // or, if that is zero too, absolute [J].
