@@ -17,7 +17,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <ranges>
 
 namespace sphmol {
 
@@ -47,7 +46,15 @@ class RowSchedule {
       if (t + 1 < threads_) {
         // The first row whose prefix cost reaches the target (the prefix cost rises with i).
         const double target = cost(lo) + (cost(hi) - cost(lo)) * (t + 1) / threads_;
-        to = *std::ranges::partition_point(std::views::iota(from, hi), [&](std::size_t i) { return cost(i) < target; });
+        // Binary search over [from, hi) (std::ranges over an iota view does not build with clang 14's
+        // view of libstdc++ 12, which the fuzz targets use).
+        std::size_t a = from, b = hi;
+        while (a < b) {
+          const std::size_t mid = a + (b - a) / 2;
+          if (cost(mid) < target) a = mid + 1;
+          else b = mid;
+        }
+        to = a;
       }
       c[t].next.store(from, std::memory_order_relaxed);
       c[t].end = to;
