@@ -153,5 +153,8 @@ output:
   // The velocity scale is the stirrer's surface speed omega R.
   CHECK(s["scene"]["velocity_scale"].get<double>() == Approx(0.4));
   const auto& e = s["final_errors"];
-  MEASURED_BOUNDS
+  // The fluid starts at rest, so it gains kinetic energy from the walls, and by the maximum principle
+  // of viscous flow no fluid particle outruns the surface (a few per cent of SPH noise allowed).
+  CHECK(e["kinetic_energy"].get<double>() > 0.0);
+  CHECK(e["max_speed_ratio"].get<double>() < 1.05);
 }

@@ -349,7 +349,7 @@ TEST_CASE("scene reader: every wall motion error names its key and line", "[scen
       {moving("motion: {type: rotation, centre: [0.5, 0.5], axis: [0, 0, 1], angular_velocity: 1}"), 2,
        at + "motion.axis: unknown key (allowed here: type, stationary, centre, angular_velocity)"},
       {moving("motion: {type: rotation, centre: [0.5, 0.5, 0], angular_velocity: 1}", 3), 3,
-       at + "motion: required value missing in section 'scene.walls[0].motion' (the direction of the axis of rotation, e.g. [0, 0, 1])"},
+       at + "motion.axis: required value missing in section 'scene.walls[0].motion' (the direction of the axis of rotation, e.g. [0, 0, 1])"},
       {moving("motion: {type: rotation, centre: [0.5, 0.5, 0], axis: [0, 0], angular_velocity: 1}", 3), 3,
        at + "motion.axis: expected 3 numbers (one per axis), got 2"},
       {moving("motion: {type: pitching, centre: [0.5, 0.5, 0], axis: [0, 0, 0], angle_amplitude: 0.1, frequency: 1}", 3), 3,
