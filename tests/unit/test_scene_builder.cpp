@@ -476,3 +476,125 @@ time:
   CHECK_THAT(error({}, base.substr(0, base.find("scene:")) + "discretization:\n  spacing: 0.1\ntime:\n  t_end: 0.1\n"),
              Catch::Contains("scene: required value missing"));
 }
+
+TEST_CASE("scene builder: a rotating cylinder's wall particles carry omega x r at their surface point", "[scene][motion]") {
+  const double dx = 0.02, omega = 2.0, R = 0.15;
+  Config c = config(2, dx);
+  const auto s = build_scene<2>(read(R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 1]}
+  walls:
+    - name: stirrer
+      shape: {type: sphere, centre: [0.5, 0.4], radius: 0.15}
+      motion: {type: rotation, centre: [0.5, 0.4], angular_velocity: 2}
+)yaml",
+                                     2),
+                                c);
+  const auto& P = s.particles;
+  REQUIRE(P.motions.size() == 1u);
+  std::size_t body = 0;
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+    if (P.body[i] != 0) {
+      CHECK(P.motion[i] == -1);  // the domain's walls stay at rest
+      CHECK(P.v[0][i] == 0.0);
+      CHECK(P.v[1][i] == 0.0);
+      continue;
+    }
+    ++body;
+    CHECK(P.motion[i] == 0);
+    // The surface point x + depth n lies on the circle; its velocity is omega (-r_y, r_x).
+    const double sx = P.x[0][i] + P.wall_depth[i] * P.wall_normal[0][i] - 0.5;
+    const double sy = P.x[1][i] + P.wall_depth[i] * P.wall_normal[1][i] - 0.4;
+    CHECK(std::hypot(sx, sy) == Approx(R).epsilon(1e-9));
+    CHECK(P.v[0][i] == Approx(-omega * sy).margin(1e-12));
+    CHECK(P.v[1][i] == Approx(omega * sx).margin(1e-12));
+    // A quarter turn later the particle has turned by omega t about the centre.
+    const double t = 0.25;
+    const auto st = P.wall_state(i, t);
+    const double rx = P.x_ref[0][i] - 0.5, ry = P.x_ref[1][i] - 0.4;
+    CHECK(st.x[0] == Approx(0.5 + std::cos(omega * t) * rx - std::sin(omega * t) * ry).margin(1e-12));
+    CHECK(st.x[1] == Approx(0.4 + std::sin(omega * t) * rx + std::cos(omega * t) * ry).margin(1e-12));
+    CHECK(std::hypot(st.v[0], st.v[1]) == Approx(omega * R).epsilon(1e-9));
+  }
+  CHECK(body > 0u);
+  CHECK(P.max_wall_speed() == Approx(omega * R).epsilon(1e-9));
+}
+
+TEST_CASE("scene builder: a stationary rotation keeps the cylinder in place", "[scene][motion]") {
+  Config c = config(2, 0.02);
+  const auto s = build_scene<2>(read(R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 1]}
+  walls:
+    - shape: {type: sphere, centre: [0.5, 0.5], radius: 0.15}
+      motion: {type: rotation, centre: [0.5, 0.5], angular_velocity: -3, stationary: true}
+)yaml",
+                                     2),
+                                c);
+  const auto& P = s.particles;
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+    if (P.body[i] != 0) continue;
+    const auto st = P.wall_state(i, 0.7);
+    CHECK(st.x[0] == P.x_ref[0][i]);
+    CHECK(st.x[1] == P.x_ref[1][i]);
+    CHECK(std::hypot(st.v[0], st.v[1]) == Approx(3.0 * 0.15).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("scene builder: an oscillating box's wall particles move by x_ref + A sin(2 pi f t + phase)", "[scene][motion]") {
+  Config c = config(2, 0.02);
+  const auto s = build_scene<2>(read(R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 0.5]}
+  walls:
+    - name: paddle
+      shape: {type: box, lo: [0.4, 0.6], hi: [0.6, 0.8]}
+      motion: {type: oscillation, amplitude: [0.01, -0.005], frequency: 2, phase: 0.3}
+)yaml",
+                                     2),
+                                c);
+  const auto& P = s.particles;
+  const double A[2] = {0.01, -0.005}, w = 2.0 * M_PI * 2.0, phase = 0.3, t = 0.13;
+  std::size_t body = 0;
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+    if (P.body[i] != 0) continue;
+    ++body;
+    const auto st = P.wall_state(i, t);
+    for (int d = 0; d < 2; ++d) {
+      CHECK(P.v[d][i] == Approx(A[d] * w * std::cos(phase)));  // at t = 0
+      CHECK(st.x[d] == Approx(P.x_ref[d][i] + A[d] * std::sin(w * t + phase)).margin(1e-14));
+      CHECK(st.v[d] == Approx(A[d] * w * std::cos(w * t + phase)).margin(1e-14));
+      CHECK(st.n[d] == P.wall_normal[d][i]);
+    }
+  }
+  CHECK(body > 0u);
+}
+
+TEST_CASE("scene builder: a pitching cylinder in 3D turns about its axis", "[scene][motion]") {
+  Config c = config(3, 0.05);
+  const auto s = build_scene<3>(read(R"yaml(scene:
+  domain: {lo: [0, 0, 0], hi: [1, 1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0, 0], hi: [1, 1, 1]}
+  walls:
+    - shape: {type: cylinder, start: [0.5, 0.5, 0], end: [0.5, 0.5, 1], radius: 0.2}
+      motion: {type: pitching, centre: [0.5, 0.5, 0], axis: [0, 0, 2], angle_amplitude: 0.3, frequency: 1}
+)yaml",
+                                     3),
+                                c);
+  const auto& P = s.particles;
+  REQUIRE(P.motions.size() == 1u);
+  CHECK(P.motions[0].axis == std::array<double, 3>{0.0, 0.0, 1.0});  // normalised
+  const double t = 0.1, theta = 0.3 * std::sin(2.0 * M_PI * t);
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+    if (P.body[i] != 0) continue;
+    const auto st = P.wall_state(i, t);
+    const double rx = P.x_ref[0][i] - 0.5, ry = P.x_ref[1][i] - 0.5;
+    CHECK(st.x[0] == Approx(0.5 + std::cos(theta) * rx - std::sin(theta) * ry).margin(1e-12));
+    CHECK(st.x[1] == Approx(0.5 + std::sin(theta) * rx + std::cos(theta) * ry).margin(1e-12));
+    CHECK(st.x[2] == Approx(P.x_ref[2][i]).margin(1e-12));
+  }
+}

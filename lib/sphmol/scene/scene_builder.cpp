@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/core/wall_motion.hpp"
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
@@ -101,6 +102,32 @@ double scene_particle_bound(const SceneSpec& spec, const Config& config) {
          (spec.domain.boundary[d] == AxisBoundary::periodic ? 0.0 : 2.0 * layers);
   return n;
 }
+
+namespace {
+// The scene's motion spec as the particles' WallMotion (validated by attach_motion).
+template <int D>
+WallMotion<D> wall_motion(const WallMotionSpec& spec) {
+  WallMotion<D> m;
+  const auto copy = [](const std::vector<double>& from, auto& to) {
+    for (std::size_t d = 0; d < from.size() && d < to.size(); ++d) to[d] = from[d];
+  };
+  if (spec.type == "translation") m.kind = WallMotionKind::translation;
+  else if (spec.type == "rotation") m.kind = WallMotionKind::rotation;
+  else if (spec.type == "oscillation") m.kind = WallMotionKind::oscillation;
+  else if (spec.type == "pitching") m.kind = WallMotionKind::pitching;
+  else throw std::logic_error("wall_motion: unknown type " + spec.type);
+  m.stationary = spec.stationary;
+  copy(spec.velocity, m.velocity);
+  copy(spec.centre, m.centre);
+  if (!spec.axis.empty()) copy(spec.axis, m.axis);
+  copy(spec.amplitude, m.amplitude);
+  m.omega = spec.angular_velocity;
+  m.angle_amplitude = spec.angle_amplitude;
+  m.frequency = spec.frequency;
+  m.phase = spec.phase;
+  return m;
+}
+}  // namespace
 
 template <int D>
 BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
@@ -304,11 +331,18 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       for (std::size_t d = 0; d < w.velocity.size(); ++d) v[d] = w.velocity[d];
       out.particles.add(Kind::Wall, q.x, v, m_cubic, rho0, q.normal, q.depth);
       out.particles.body.back() = static_cast<std::int32_t>(k);
-      out.particles.stationary.back() = w.belt ? 1 : 0;
+      out.particles.stationary.back() = (w.motion ? w.motion->stationary : w.belt) ? 1 : 0;
       ++added;
     }
     if (added == 0)
       fail(w.where, "the wall body holds no lattice point inside the domain at the spacing " + num(dx) + " m");
+    if (w.motion) {
+      try {
+        out.particles.attach_motion(static_cast<std::int32_t>(k), wall_motion<D>(*w.motion));
+      } catch (const std::invalid_argument& e) {
+        fail(w.motion->where, e.what());
+      }
+    }
     out.body_names.push_back(w.name);
   }
 

@@ -159,6 +159,49 @@ std::vector<std::shared_ptr<const Expression>> read_velocity(MapReader& r, int d
   return out;
 }
 
+WallMotionSpec read_motion(MapReader& wall, int dim) {
+  static const std::vector<std::string> all = {"type",      "stationary",      "velocity",  "centre", "axis",
+                                               "angular_velocity", "amplitude", "angle_amplitude", "frequency", "phase"};
+  MapReader r0 = wall.section("motion", all);
+  WallMotionSpec m;
+  m.where = wall.where("motion");
+  if (!r0.has("type")) r0.fail_missing("type", "translation, rotation, oscillation or pitching");
+  m.type = r0.choice("type", *r0.string("type"), {"translation", "rotation", "oscillation", "pitching"});
+  const bool turns = m.type == "rotation" || m.type == "pitching";
+  if (turns && dim < 2) r0.fail("type", "a one-dimensional wall cannot " + std::string(m.type == "rotation" ? "rotate" : "pitch"));
+  const std::map<std::string, std::vector<std::string>> keys = {
+      {"translation", {"type", "stationary", "velocity"}},
+      {"rotation", {"type", "stationary", "centre", "axis", "angular_velocity"}},
+      {"oscillation", {"type", "stationary", "amplitude", "frequency", "phase"}},
+      {"pitching", {"type", "stationary", "centre", "axis", "angle_amplitude", "frequency", "phase"}}};
+  std::vector<std::string> allowed = keys.at(m.type);
+  // In 2D every rotation is about the z axis: an `axis` there would be ignored, so it is an error.
+  if (dim != 3) allowed.erase(std::remove(allowed.begin(), allowed.end(), "axis"), allowed.end());
+  MapReader r = r0.with_keys(allowed);
+  m.stationary = r.boolean("stationary").value_or(false);
+  if (m.type == "translation") {
+    m.velocity = point(r, "velocity", dim, "[m/s]");
+  } else if (m.type == "oscillation") {
+    m.amplitude = point(r, "amplitude", dim, "[m], one per axis");
+  } else {
+    m.centre = point(r, "centre", dim, "a point on the axis of rotation [m]");
+    if (dim == 3) {
+      m.axis = point(r, "axis", 3, "the direction of the axis of rotation, e.g. [0, 0, 1]");
+      double n2 = 0.0;
+      for (double a : m.axis) n2 += a * a;
+      if (!(n2 > 0.0)) r.fail("axis", "must not be zero");
+    }
+  }
+  if (m.type == "rotation") m.angular_velocity = r.required(r.real("angular_velocity"), "angular_velocity", "[rad/s], counter-clockwise about the axis");
+  if (m.type == "pitching") m.angle_amplitude = r.required(r.real("angle_amplitude"), "angle_amplitude", "[rad]");
+  if (m.type == "oscillation" || m.type == "pitching") {
+    m.frequency = r.required(r.real("frequency"), "frequency", "[Hz], > 0");
+    if (!(m.frequency > 0.0)) r.fail("frequency", "must be > 0");
+    m.phase = r.real("phase").value_or(0.0);
+  }
+  return m;
+}
+
 }  // namespace
 
 SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_file) {
@@ -198,7 +241,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     s.fluid.push_back(std::move(b));
   }
 
-  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt"});
+  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt", "motion"});
   for (std::size_t k = 0; k < walls.size(); ++k) {
     auto& w = walls[k];
     WallBodySpec b;
@@ -213,6 +256,11 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     const long long layers = w.integer("layers").value_or(0);
     if (layers < 0 || layers > 20) w.fail("layers", "must be 0 (enough to fill the kernel support) or 1 to 20");
     b.layers = static_cast<int>(layers);
+    if (w.has("motion")) {
+      if (w.has("velocity")) w.fail("velocity", "give the body either velocity or motion, not both (motion: {type: translation, velocity: [...]})");
+      if (w.has("belt")) w.fail("belt", "a body with motion keeps its place with motion.stationary: true, not belt");
+      b.motion = read_motion(w, dimension);
+    }
     if (w.has("velocity")) b.velocity = point(w, "velocity", dimension, "[m/s]");
     b.belt = w.boolean("belt").value_or(false);
     if (b.belt && b.velocity.empty()) w.fail("belt", "a belt needs the velocity its surface moves with");

@@ -6,6 +6,7 @@
 // so that what the builder finds wrong (an empty fill, a body outside the domain) is a config error
 // at the user's line.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,12 +52,29 @@ struct FluidBodySpec {
   std::string where, where_lattice, where_pressure;
 };
 
+// A wall body's prescribed rigid motion (`motion:`), as read; build_scene<D> turns it into a
+// WallMotion<D> (core/wall_motion.hpp), which defines each type's rule.
+struct WallMotionSpec {
+  std::string type;                // translation | rotation | oscillation | pitching
+  bool stationary = false;         // the particles stay in place and only carry the velocity
+  std::vector<double> velocity;    // translation [m/s]
+  std::vector<double> centre;      // rotation, pitching: a point on the axis [m]
+  std::vector<double> axis;        // rotation, pitching in 3D (as given; empty in 2D: the z axis)
+  double angular_velocity = 0.0;   // rotation [rad/s], counter-clockwise about the axis
+  std::vector<double> amplitude;   // oscillation [m]
+  double angle_amplitude = 0.0;    // pitching [rad]
+  double frequency = 0.0;          // oscillation, pitching [Hz]
+  double phase = 0.0;              // oscillation, pitching [rad]
+  std::string where;               // the motion key
+};
+
 struct WallBodySpec {
   std::string name;
   ShapeSpec shape;
   int layers = 0;                // 0: discretization.wall_layers, or enough to fill the kernel support
   std::vector<double> velocity;  // [m/s], constant; empty = at rest
   bool belt = false;             // the particles stay in place and carry `velocity` (a moving surface)
+  std::optional<WallMotionSpec> motion;  // instead of velocity and belt
   std::string where;
 };
 

@@ -53,6 +53,20 @@ std::string shape(const ShapeSpec& s) {
   return out + "}";
 }
 
+std::string motion(const WallMotionSpec& m) {
+  std::string out = "{type: " + m.type + ", stationary: " + (m.stationary ? "true" : "false");
+  if (m.type == "translation") out += ", velocity: " + list(m.velocity);
+  if (m.type == "oscillation") out += ", amplitude: " + list(m.amplitude);
+  if (m.type == "rotation" || m.type == "pitching") {
+    out += ", centre: " + list(m.centre);
+    if (!m.axis.empty()) out += ", axis: " + list(m.axis);
+  }
+  if (m.type == "rotation") out += ", angular_velocity: " + num(m.angular_velocity);
+  if (m.type == "pitching") out += ", angle_amplitude: " + num(m.angle_amplitude);
+  if (m.type == "oscillation" || m.type == "pitching") out += ", frequency: " + num(m.frequency) + ", phase: " + num(m.phase);
+  return out + "}";
+}
+
 }  // namespace
 
 std::string scene_to_yaml(const SceneSpec& spec) {
@@ -85,8 +99,9 @@ std::string scene_to_yaml(const SceneSpec& spec) {
     for (const auto& w : spec.walls) {
       std::vector<double> v = w.velocity;
       v.resize(static_cast<std::size_t>(dim), 0.0);
-      y << "    - name: " << quoted(w.name) << "\n      shape: " << shape(w.shape) << "\n      layers: " << w.layers
-        << "\n      velocity: " << list(v) << "\n      belt: " << (w.belt ? "true" : "false") << "\n";
+      y << "    - name: " << quoted(w.name) << "\n      shape: " << shape(w.shape) << "\n      layers: " << w.layers << "\n";
+      if (w.motion) y << "      motion: " << motion(*w.motion) << "\n";
+      else y << "      velocity: " << list(v) << "\n      belt: " << (w.belt ? "true" : "false") << "\n";
     }
   }
   return y.str();
