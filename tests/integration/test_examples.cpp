@@ -106,10 +106,12 @@ TEST_CASE("examples: the 3D scenes run a few steps and write their probes", "[in
     std::string t_end;  // a few dozen steps, and no less than the probes' `every`
     std::vector<std::pair<std::string, std::vector<std::string>>> probes;  // name, CSV header
   };
-  const std::vector<std::string> p{"t [s]", "p [Pa]"}, z{"t [s]", "z_surface [m]"};
+  const std::vector<std::string> p{"t [s]", "p [Pa]"}, z{"t [s]", "z_surface [m]"},
+      f{"t [s]", "Fx [N]", "Fy [N]", "Fz [N]"};
   const std::vector<Case> cases{
       {"dam_break_3d.yaml", "0.005", {{"p1", p}, {"p2", p}, {"p3", p}, {"p4", p}, {"h1", z}, {"h2", z}, {"h3", z}}},
-      {"piston_3d.yaml", "0.01", {{"far_wall", p}, {"h_mid", z}, {"h_far", z}, {"plate", {"t [s]", "Fx [N]", "Fy [N]", "Fz [N]"}}}},
+      {"piston_3d.yaml", "0.01", {{"far_wall", p}, {"h_mid", z}, {"h_far", z}, {"plate", f}}},
+      {"sloshing_3d.yaml", "0.02", {{"h_left", z}, {"h_right", z}, {"p_left", p}, {"tank", f}}},
   };
   for (const auto& c : cases) {
     INFO(c.file);
