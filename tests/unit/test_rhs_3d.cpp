@@ -449,12 +449,16 @@ TEST_CASE("every formulation assembles in 3D and evaluates to finite rates", "[r
          c.discretization.smoothing_length = "density";
          c.discretization.neighbor_search = "kdtree";
        }},
-      {"ghost walls", [](Config& c) { c.discretization.boundary = "ghost"; }},
+      {"ghost walls", [](Config& c) {
+         c.discretization.boundary = "ghost";
+         c.discretization.wall_model = "prescribed";
+       }},
       {"ghost walls under gravity",
        [](Config& c) {
          c.fluid.eos.type = "tait";
          c.fluid.body_force = {0.0, 0.0, -9.81};
          c.discretization.boundary = "ghost";
+         c.discretization.wall_model = "prescribed";
        }},
       {"virtual repulsive walls",
        [](Config& c) {

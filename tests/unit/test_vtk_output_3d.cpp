@@ -78,6 +78,7 @@ Config duct_config(const std::string& boundary) {
   c.fluid.kinematic_viscosity = 1e-3;
   c.fluid.eos.sound_speed = 2.0;
   c.discretization.boundary = boundary;
+  if (boundary != "wall_particles") c.discretization.wall_model = "prescribed";  // Morris needs wall particles
   c.discretization.neighbor_search = "cell_list";
   return c;
 }

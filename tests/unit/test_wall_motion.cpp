@@ -395,6 +395,7 @@ TEST_CASE("wall motion: the largest wall speed counts ghost walls and reads only
   const double dx = 1e-4;
   Config c = fluid_config(dx);
   c.discretization.boundary = "ghost";
+  c.discretization.wall_model = "prescribed";  // the Morris model needs wall particles
   Particles<2> P;
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) P.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, 1000.0 * dx * dx, 1000.0);
@@ -490,4 +491,22 @@ TEST_CASE("wall motion: a run restarted from a checkpoint places the walls as th
     }
   // The fluid too, up to the round-off of the restarted step times.
   for (std::size_t k = 0; k < ya.size(); ++k) REQUIRE(ya[k] == Approx(yb[k]).epsilon(1e-9).margin(1e-15));
+}
+
+TEST_CASE("assembly: the Morris wall model with ghost walls is refused, not run past the wall arrays", "[boundary][ghost]") {
+  // Before: assembled, and the Morris term read wall_depth and wall_normal at ghost image indices
+  // beyond the particles' arrays (an ASan heap-buffer-overflow).
+  const double dx = 1e-4;
+  Config c = fluid_config(dx);
+  c.discretization.boundary = "ghost";
+  c.discretization.wall_model = "morris";
+  Particles<2> P;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) P.add(Kind::Fluid, {(i + 0.5) * dx, (j + 0.5) * dx}, {0.0, 0.0}, 1000.0 * dx * dx, 1000.0);
+  BoxWalls<2> walls{};
+  for (int d = 0; d < 2; ++d)
+    for (int side = 0; side < 2; ++side) walls[d][side] = {true, side * 4 * dx, true, {0.0, 0.0}};
+  Domain<2> dom;
+  dom.hi = {4 * dx, 4 * dx};
+  CHECK_THROWS_WITH(assemble_system<2>(c, P, dom, dx, &walls), Catch::Contains("discretization.wall_model: morris needs boundary: wall_particles"));
 }

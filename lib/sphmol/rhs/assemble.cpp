@@ -124,6 +124,12 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (m116) return std::make_unique<PressureGradient116<D>>();
     return std::make_unique<PressureGradient117<D>>();
   };
+  // The Morris extrapolation reads each wall particle's normal and depth; ghost images and repulsive
+  // rows have none (the loader refuses the combination, and so must the assembly: a ghost image's
+  // index lies past the particles' wall arrays).
+  if (disc.wall_model == "morris" && disc.boundary != "wall_particles")
+    throw std::invalid_argument("discretization.wall_model: morris needs boundary: wall_particles (got '" + disc.boundary +
+                                "'); use wall_model: prescribed");
   if (disc.wall_model == "morris") add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
   else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
