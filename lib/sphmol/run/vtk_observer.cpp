@@ -80,7 +80,9 @@ std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart
   const auto& L = sys.layout();
   const auto& dom = sys.domain();
   const std::size_t nf = P.n_fluid;
-  const auto [first, last] = part_range(sys, part);
+  // Plain variables, not a structured binding: the lambdas below capture them (clang 14 cannot).
+  const auto range = part_range(sys, part);
+  const std::size_t first = range.first, last = range.second;
   const std::size_t n = last - first;
   const std::vector<double>& rho = sys.density();
   const std::vector<double>& p = sys.pressure();
