@@ -28,12 +28,6 @@ std::string trim(std::string s) {
   return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
 }
 
-void check(const MapReader& r, const std::string& key, bool ok, double value, std::string_view allowed) {
-  r.check(key, ok, value, allowed);
-}
-
-std::string shown(double v) { return number_text(v); }
-
 YAML::Node parse_yaml(const std::string& text, const std::string& name) {
   try {
     return YAML::Load(text);
@@ -128,7 +122,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
   if (module.defaults) module.defaults(c);
   if (const auto d = top.integer("dimension")) {
-    check(top, "dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
+    top.check("dimension", *d >= 1 && *d <= 3, static_cast<double>(*d), "1, 2 or 3");
     c.dimension = static_cast<int>(*d);
   }
   if (!module.supports(c.dimension))
@@ -141,11 +135,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     fluid.fail("density", "is not used by case '" + c.case_name + "' (its initial states give the densities)");
   if (module.uses_fluid_density) {
     c.fluid.density = fluid.required(fluid.real("density"), "density", "reference density rho0 in kg/m^3, > 0");
-    check(fluid, "density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
+    fluid.check("density", c.fluid.density > 0, c.fluid.density, "> 0 kg/m^3");
   }
   c.fluid.kinematic_viscosity = fluid.required(fluid.real("kinematic_viscosity"), "kinematic_viscosity",
                                                "nu in m^2/s, >= 0");
-  check(fluid, "kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
+  fluid.check("kinematic_viscosity", c.fluid.kinematic_viscosity >= 0, c.fluid.kinematic_viscosity,
         ">= 0 m^2/s");
   {
     MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
@@ -156,23 +150,23 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       c.fluid.eos.clamp_negative = *v;
     }
     if (const auto v = eos.real("background_pressure")) c.fluid.eos.background_pressure = *v;
-    check(eos, "background_pressure", c.fluid.eos.background_pressure >= 0, c.fluid.eos.background_pressure, ">= 0 Pa");
+    eos.check("background_pressure", c.fluid.eos.background_pressure >= 0, c.fluid.eos.background_pressure, ">= 0 Pa");
     if (c.fluid.eos.type == "ideal_gas") {
       if (eos.has("sound_speed"))
         eos.fail("sound_speed", "is not used with type 'ideal_gas' (c = sqrt(gamma p / rho) per particle)");
       c.fluid.eos.gamma = 1.4;
       if (const auto g = eos.real("gamma")) c.fluid.eos.gamma = *g;
-      check(eos, "gamma", c.fluid.eos.gamma > 1, c.fluid.eos.gamma, "> 1");
+      eos.check("gamma", c.fluid.eos.gamma > 1, c.fluid.eos.gamma, "> 1");
     } else {
     if (c.fluid.eos.type == "tait") {
       if (const auto g = eos.real("gamma")) c.fluid.eos.gamma = *g;
-      check(eos, "gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
+      eos.check("gamma", c.fluid.eos.gamma > 0, c.fluid.eos.gamma, "> 0");
     } else if (eos.has("gamma")) {
       eos.fail("gamma", "is used only with type 'tait' or 'ideal_gas' (got type '" + c.fluid.eos.type + "')");
     }
     c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
                                            "artificial speed of sound c in m/s, > 0");
-    check(eos, "sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
+    eos.check("sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
     }
   }
   if (const auto f = fluid.reals("body_force")) {
@@ -184,7 +178,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     c.fluid.body_force.assign(static_cast<std::size_t>(c.dimension), 0.0);
   }
   if (const auto v = fluid.real("body_force_ramp")) c.fluid.body_force_ramp = *v;
-  check(fluid, "body_force_ramp", c.fluid.body_force_ramp >= 0, c.fluid.body_force_ramp, ">= 0 s; 0 = at once");
+  fluid.check("body_force_ramp", c.fluid.body_force_ramp >= 0, c.fluid.body_force_ramp, ">= 0 s; 0 = at once");
 
   // discretization
   MapReader disc = top.section("discretization",
@@ -202,12 +196,12 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (!n && !dx)
       disc.fail_missing("particles_across", "or discretization.spacing: give exactly one of the two");
     if (n) {
-      check(disc, "particles_across", *n > 0, static_cast<double>(*n), "> 0");
+      disc.check("particles_across", *n > 0, static_cast<double>(*n), "> 0");
       // Guards the int conversion; no real run comes near.
-      check(disc, "particles_across", *n <= 1'000'000'000, static_cast<double>(*n), "<= 1e9");
+      disc.check("particles_across", *n <= 1'000'000'000, static_cast<double>(*n), "<= 1e9");
       d.particles_across = static_cast<int>(*n);
     } else {
-      check(disc, "spacing", *dx > 0, *dx, "> 0 m");
+      disc.check("spacing", *dx > 0, *dx, "> 0 m");
       d.spacing = *dx;
     }
     if (const auto k = disc.string("kernel")) d.kernel = *k;
@@ -217,16 +211,16 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       default: check_kernel<3>(disc, d.kernel); break;
     }
     if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
-    check(disc, "smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
+    disc.check("smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
     if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation", "normalised_summation", "continuity"});
     if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116"});
     if (const auto v = disc.string("viscosity"))
       d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris", "none"});
     if (const auto v = disc.real("xsph")) d.xsph = *v;
-    check(disc, "xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
+    disc.check("xsph", d.xsph >= 0 && d.xsph <= 1, d.xsph, "[0, 1]; 0 = off");
     if (const auto v = disc.real("position_noise")) {
       d.position_noise = *v;
-      check(disc, "position_noise", d.position_noise >= 0 && d.position_noise <= 0.25, d.position_noise,
+      disc.check("position_noise", d.position_noise >= 0 && d.position_noise <= 0.25, d.position_noise,
             "[0, 0.25] particle spacings; 0 = off");
       if (d.position_noise > 0 && !module.position_noise)
         disc.fail("position_noise", "is not applied by case '" + c.case_name + "' (its scene is built without noise)");
@@ -256,25 +250,25 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       MapReader rep = disc.section("repulsive", {"strength", "p1", "p2", "r0"});
       auto& r = d.repulsive;
       r.strength = rep.required(rep.real("strength"), "strength", "D of Niedoba 2012, eq 2.76 in m^2/s^2, > 0");
-      check(rep, "strength", r.strength > 0, r.strength, "> 0 m^2/s^2");
+      rep.check("strength", r.strength > 0, r.strength, "> 0 m^2/s^2");
       if (const auto v = rep.real("p1")) r.p1 = *v;
       if (const auto v = rep.real("p2")) r.p2 = *v;
       if (const auto v = rep.real("r0")) r.r0 = *v;
-      check(rep, "p2", r.p2 > 0, r.p2, "> 0");
-      check(rep, "p1", r.p1 > r.p2, r.p1, "> p2 (repulsive inside r0)");
-      check(rep, "r0", r.r0 > 0, r.r0, "> 0 (particle spacings)");
+      rep.check("p2", r.p2 > 0, r.p2, "> 0");
+      rep.check("p1", r.p1 > r.p2, r.p1, "> p2 (repulsive inside r0)");
+      rep.check("r0", r.r0 > 0, r.r0, "> 0 (particle spacings)");
     }
     if (const auto v = disc.real("wall_beta_max")) d.wall_beta_max = *v;
-    check(disc, "wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");
+    disc.check("wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");
     if (const auto v = disc.integer("wall_layers")) {
-      check(disc, "wall_layers", *v >= 0, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
-      check(disc, "wall_layers", *v <= 1000, static_cast<double>(*v), "<= 1000");
+      disc.check("wall_layers", *v >= 0, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
+      disc.check("wall_layers", *v <= 1000, static_cast<double>(*v), "<= 1000");
       d.wall_layers = static_cast<int>(*v);
     }
     if (const auto v = disc.string("neighbor_search"))
       d.neighbor_search = disc.choice("neighbor_search", *v, {"kdtree", "cell_list", "all_pairs"});
     if (const auto v = disc.real("skin")) d.skin = *v;
-    check(disc, "skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
+    disc.check("skin", d.skin >= 0, d.skin, ">= 0 (in units of h)");
     if (const auto v = disc.boolean("reorder")) d.reorder = *v;
     if (const auto v = disc.boolean("combine_terms")) d.combine_terms = *v;
     if (const auto v = disc.string("pair_passes")) d.pair_passes = disc.choice("pair_passes", *v, {"auto", "fused", "stored"});
@@ -285,20 +279,20 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       auto& a = d.artificial_viscosity;
       a.enabled = true;
       if (const auto v = av.real("alpha")) a.alpha = *v;
-      check(av, "alpha", a.alpha >= 0, a.alpha, ">= 0");
+      av.check("alpha", a.alpha >= 0, a.alpha, ">= 0");
       if (const auto v = av.real("beta")) a.beta = *v;
-      check(av, "beta", a.beta >= 0, a.beta, ">= 0");
+      av.check("beta", a.beta >= 0, a.beta, ">= 0");
       if (const auto v = av.real("eta")) a.eta = *v;
-      check(av, "eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
+      av.check("eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
     }
     if (disc.has("transport_velocity")) {
       MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "step_factor", "extra_stress"});
       auto& t = d.transport_velocity;
       t.enabled = tv.boolean("enabled").value_or(true);
       if (const auto v = tv.real("background_pressure")) t.background_pressure = *v;
-      check(tv, "background_pressure", t.background_pressure >= 0, t.background_pressure, ">= 0 Pa; 0 = rho0 c^2");
+      tv.check("background_pressure", t.background_pressure >= 0, t.background_pressure, ">= 0 Pa; 0 = rho0 c^2");
       if (const auto v = tv.real("step_factor")) t.step_factor = *v;
-      check(tv, "step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
+      tv.check("step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
       if (const auto v = tv.boolean("extra_stress")) t.extra_stress = *v;
       // Its background pressure would pull a free surface inward, and it needs one constant c.
       if (t.enabled && (module.free_surface || c.fluid.eos.type == "ideal_gas"))
@@ -316,15 +310,15 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       disc.fail("energy", "fluid.eos.type 'ideal_gas' needs discretization.energy: true (p = (gamma - 1) rho e)");
     if (d.energy && c.fluid.kinematic_viscosity != 0)
       disc.fail("energy", "the energy equation covers inviscid flow only (viscous heating is not implemented); "
-                          "fluid.kinematic_viscosity must be 0 (got " + shown(c.fluid.kinematic_viscosity) + ")");
+                          "fluid.kinematic_viscosity must be 0 (got " + number_text(c.fluid.kinematic_viscosity) + ")");
     if (d.viscosity == "none" && c.fluid.kinematic_viscosity != 0)
-      disc.fail("viscosity", "'none' with fluid.kinematic_viscosity = " + shown(c.fluid.kinematic_viscosity) +
+      disc.fail("viscosity", "'none' with fluid.kinematic_viscosity = " + number_text(c.fluid.kinematic_viscosity) +
                                  " (a viscous fluid needs 'morris' or 'strain_rate')");
     if (d.smoothing_length != "constant" && d.density != "continuity")
       disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.density: continuity (got '" +
                                         d.density + "'): a summation density would depend on h implicitly");
     if (const auto v = disc.real("density_diffusion")) d.density_diffusion = *v;
-    check(disc, "density_diffusion", d.density_diffusion >= 0, d.density_diffusion, ">= 0 (delta; 0 = off)");
+    disc.check("density_diffusion", d.density_diffusion >= 0, d.density_diffusion, ">= 0 (delta; 0 = off)");
     if (d.density_diffusion > 0 && d.density != "continuity")
       disc.fail("density_diffusion", "diffuses the continuity density; needs discretization.density: continuity (got '" +
                                          d.density + "')");
@@ -343,7 +337,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   {
     auto& t = c.time;
     t.t_end = time.required(time.real("t_end"), "t_end", "end time in s, > 0");
-    check(time, "t_end", t.t_end > 0, t.t_end, "> 0 s");
+    time.check("t_end", t.t_end > 0, t.t_end, "> 0 s");
     if (const auto v = time.string("integrator"))
       t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog", "leapfrog_kdk", "cvode_adams"});
     if (const auto v = time.string("table")) {
@@ -357,30 +351,30 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       t.table = *v;
     }
     if (const auto v = time.real("rtol")) t.rtol = *v;
-    check(time, "rtol", t.rtol > 0, t.rtol, "> 0");
+    time.check("rtol", t.rtol > 0, t.rtol, "> 0");
     if (const auto v = time.real("atol")) t.atol = *v;
-    check(time, "atol", t.atol > 0, t.atol, "> 0");
+    time.check("atol", t.atol > 0, t.atol, "> 0");
     MapReader cfl = time.section("cfl", {"acoustic", "force", "viscous"});
     // Stability ranges of the explicit schemes (config/README.md, "CFL coefficients"): a larger
     // coefficient lets the integrator take steps past the limit of its own stability region.
     if (const auto v = cfl.real("acoustic")) t.cfl.acoustic = *v;
-    check(cfl, "acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic,
+    cfl.check("acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic,
           "(0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4)");
     if (const auto v = cfl.real("force")) t.cfl.force = *v;
-    check(cfl, "force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force,
+    cfl.check("force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force,
           "(0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25)");
     if (const auto v = cfl.real("viscous")) t.cfl.viscous = *v;
-    check(cfl, "viscous", t.cfl.viscous > 0 && t.cfl.viscous <= 0.125, t.cfl.viscous,
+    cfl.check("viscous", t.cfl.viscous > 0 && t.cfl.viscous <= 0.125, t.cfl.viscous,
           "(0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; "
           "the leapfrog Couette flow diverges at 0.15");
     if (const auto v = time.real("dt")) {
-      check(time, "dt", *v > 0, *v, "> 0 s");
+      time.check("dt", *v > 0, *v, "> 0 s");
       if (t.integrator == "cvode_adams")
         time.fail("dt", "cvode_adams is adaptive only (rtol/atol, step bounded by the CFL limit); remove time.dt");
       t.dt = *v;
     }
     if (const auto v = time.integer("max_steps")) {
-      check(time, "max_steps", *v > 0, static_cast<double>(*v), "> 0");
+      time.check("max_steps", *v > 0, static_cast<double>(*v), "> 0");
       t.max_steps = static_cast<long>(*v);
     }
   }
@@ -396,10 +390,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = out.reals("times")) {
       for (std::size_t i = 0; i < v->size(); ++i) {
-        if ((*v)[i] <= 0) out.fail_element("times", i, shown((*v)[i]) + " is out of range (allowed: > 0 s)");
+        if ((*v)[i] <= 0) out.fail_element("times", i, number_text((*v)[i]) + " is out of range (allowed: > 0 s)");
         if (i > 0 && (*v)[i] <= (*v)[i - 1])
-          out.fail_element("times", i, shown((*v)[i]) + " is not after the previous time " +
-                                           shown((*v)[i - 1]) + " (times must be strictly increasing)");
+          out.fail_element("times", i, number_text((*v)[i]) + " is not after the previous time " +
+                                           number_text((*v)[i - 1]) + " (times must be strictly increasing)");
       }
       std::string dropped;
       std::size_t ndropped = 0;
@@ -407,20 +401,20 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         if (x <= c.time.t_end) {
           o.times.push_back(x);
         } else {
-          dropped += (dropped.empty() ? "" : ", ") + shown(x);
+          dropped += (dropped.empty() ? "" : ", ") + number_text(x);
           ++ndropped;
         }
       }
       if (ndropped > 0)
         c.notices.push_back(out.where("times") + ": dropped " + std::to_string(ndropped) +
-                            " output time(s) past time.t_end = " + shown(c.time.t_end) + ": " + dropped);
+                            " output time(s) past time.t_end = " + number_text(c.time.t_end) + ": " + dropped);
     }
     // --- output.every (an evenly spaced alternative to output.times) ---
     if (const auto v = out.real("every")) {
       if (out.has("times")) out.fail("every", "give either output.times or output.every, not both");
-      check(out, "every", *v > 0 && *v <= c.time.t_end, *v, "> 0 s and at most time.t_end");
+      out.check("every", *v > 0 && *v <= c.time.t_end, *v, "> 0 s and at most time.t_end");
       const double n = std::floor(c.time.t_end / *v * (1 + 1e-12));
-      if (n > 1e6) out.fail("every", shown(*v) + " s gives " + shown(n) + " output times (at most 1e6)");
+      if (n > 1e6) out.fail("every", number_text(*v) + " s gives " + number_text(n) + " output times (at most 1e6)");
       // k * every rounds off: a time within 1e-9 every of t_end is t_end.
       for (long k = 1; k <= static_cast<long>(n) && k * *v < c.time.t_end - 1e-9 * *v; ++k) o.times.push_back(k * *v);
       o.every = *v;
@@ -439,7 +433,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = out.boolean("plots")) o.plots = *v;
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
-    check(out, "checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
+    out.check("checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
