@@ -37,7 +37,8 @@ TEST_CASE("config: box cases, Tait and boundary keys load and round-trip", "[con
   CHECK(error_of(cavity) == "<no error>");
   const auto c = sphmol::load_config_string(cavity, {"fluid.eos.type=tait", "fluid.eos.gamma=7.5", "fluid.eos.clamp_negative=true",
                                                      "discretization.boundary=ghost", "discretization.wall_slip=free_slip",
-                                                     "fluid.body_force_ramp=0.5"});
+                                                     "fluid.body_force_ramp=0.5", "discretization.laplacian_correction=moment"});
+  CHECK(c.discretization.laplacian_correction == "moment");
   CHECK(c.fluid.eos.gamma == 7.5);
   CHECK(c.fluid.eos.clamp_negative);
   CHECK(c.discretization.wall_model == "prescribed");
@@ -63,6 +64,9 @@ TEST_CASE("config: nonsense boundary / EOS combinations are errors", "[config]")
              Contains("discretization.repulsive.p1: 3 is out of range"));
   CHECK_THAT(set(cavity, {"discretization.boundary=ghost", "discretization.wall_pressure=extrapolated"}),
              Contains("applies to boundary: wall_particles only"));
+  CHECK_THAT(set(cavity, {"discretization.viscosity=strain_rate", "discretization.laplacian_correction=moment"}),
+             Contains("discretization.laplacian_correction: corrects the Morris viscosity only"));
+  CHECK_THAT(set(cavity, {"discretization.laplacian_correction=tensor"}), Contains("allowed: none, moment"));
   CHECK_THAT(set(cavity, {"fluid.eos.gamma=7"}), Contains("only with type 'tait' or 'ideal_gas'"));
   CHECK_THAT(set(cavity, {"fluid.eos.clamp_negative=true"}), Contains("applies to type: tait only"));
   // Another case's geometry keys are unknown keys of this one.

@@ -152,6 +152,17 @@ TEST_CASE("Morris viscosity approximates nu * laplacian(u) for a quadratic profi
   CHECK(std::abs(f.dvdt[1][c]) < 1e-12);
 }
 
+TEST_CASE("Morris viscosity normalised by its second moment is exact for a quadratic profile", "[rhs]") {
+  Fixture f(20, false);
+  f.pairs();
+  const double nu = 1e-3, mu = nu * f.rho0;
+  for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[0][i] = f.w.x[1][i] * f.w.x[1][i];  // u = y^2, lap u = 2
+  MorrisViscosity<2, true>(mu).apply(f.w);
+  const std::size_t c = f.centre();
+  CHECK(f.dvdt[0][c] == Approx(2.0 * nu).epsilon(1e-10));
+  CHECK(std::abs(f.dvdt[1][c]) < 1e-12);
+}
+
 TEST_CASE("strain rate of a linear shear flow, in the interior and at wall particles", "[rhs]") {
   const double gamma = 0.7;
   Fixture f(16, true, 3);

@@ -79,6 +79,9 @@ struct DiscretizationConfig {
   std::string density = "summation";             // summation | normalised_summation (Niedoba 2012, eq 2.58) | continuity (Niedoba 2012, eq 2.61)
   std::string momentum = "symmetric_117";          // symmetric_117 (Vukčević 2012, eq 117) | symmetric_116 (Vukčević 2012, eq 116)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (Vukčević 2012, eqs 117/122) | none (inviscid)
+  // Morris viscosity only: "none", or "moment" (each row divided by its discrete second moment, which
+  // makes the Laplacian exact for quadratic fields on a full support; physics/morris_viscosity.hpp).
+  std::string laplacian_correction = "none";
   double xsph = 0.0;                // XSPH epsilon (Vukčević et al. 2012, eq 21), 0 <= eps <= 1; 0 = off
   double position_noise = 0.0;      // scenes that allow it: seeded random displacement of the initial lattice [spacings], [0, 0.25]
   std::string boundary = "wall_particles";        // wall_particles | ghost | virtual_repulsive

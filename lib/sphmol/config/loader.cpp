@@ -183,7 +183,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   // discretization
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
-                                "momentum", "viscosity", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
+                                "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
                                 "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
                                 "position_noise", "density_diffusion"});
@@ -257,6 +257,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       rep.check("p2", r.p2 > 0, r.p2, "> 0");
       rep.check("p1", r.p1 > r.p2, r.p1, "> p2 (repulsive inside r0)");
       rep.check("r0", r.r0 > 0, r.r0, "> 0 (particle spacings)");
+    }
+    if (const auto v = disc.string("laplacian_correction")) {
+      d.laplacian_correction = disc.choice("laplacian_correction", *v, {"none", "moment"});
+      if (d.laplacian_correction != "none" && d.viscosity != "morris")
+        disc.fail("laplacian_correction", "corrects the Morris viscosity only (discretization.viscosity is '" + d.viscosity + "')");
     }
     if (const auto v = disc.real("wall_beta_max")) d.wall_beta_max = *v;
     disc.check("wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");

@@ -59,6 +59,7 @@ std::string to_yaml(const Config& c) {
     << "  density: " << d.density << "\n"
     << "  momentum: " << d.momentum << "\n"
     << "  viscosity: " << d.viscosity << "\n"
+    << "  laplacian_correction: " << d.laplacian_correction << "\n"
     << "  xsph: " << num(d.xsph) << "\n"
     << "  boundary: " << d.boundary << "\n"
     << "  wall_pressure: " << d.wall_pressure << "\n";

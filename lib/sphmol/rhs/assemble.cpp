@@ -139,7 +139,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
     add("discretization.momentum", pressure());
-    add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
+    if (disc.laplacian_correction == "moment") add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true>>(mu));
+    else add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
   } else if (disc.viscosity == "none") {
     if (!wc_row) add("discretization.momentum", pressure());
   } else {
