@@ -40,6 +40,13 @@ struct Particles {
   // The solid body a wall particle belongs to (an index into the scene's list of wall bodies, for
   // force probes and per-body motion); -1 for fluid particles and for walls of no named body.
   std::vector<std::int32_t> body;
+  // Per wall body (indexed by body): 1 for a free-slip body, whose particles exert no viscous stress
+  // (boundary/free_slip_walls.hpp). Shorter than the body count, or empty: the rest are no-slip.
+  std::vector<std::uint8_t> free_slip_body;
+  bool free_slip(std::size_t i) const {
+    const std::int32_t b = body[i];
+    return b >= 0 && static_cast<std::size_t>(b) < free_slip_body.size() && free_slip_body[static_cast<std::size_t>(b)] != 0;
+  }
   // The prescribed motions of wall bodies (core/wall_motion.hpp) and, per particle, the index of the
   // one it follows; -1 (the default) for a wall that moves with its own v (x_ref + v t, or stays at
   // x_ref when stationary) and for fluid particles.

@@ -78,8 +78,8 @@ std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceStat
         cx -= mj * model.pi(vx, r * r, h, 0.5 * (s.c[i] + s.c[j]), 0.5 * (s.rho[i] + s.rho[j])) * F;
       double cv = 0.0;
       if (model.dynamic_viscosity > 0.0) {
-        double beta = 1.0;
-        if (model.morris_wall_velocity) {
+        double beta = P.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
+        if (model.morris_wall_velocity && beta > 0.0) {
           double dA = -P.wall_depth[j];
           for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
           beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;

@@ -1,11 +1,14 @@
 #include "sphmol/rhs/assemble.hpp"
 
+#include <algorithm>
+
 #include <functional>
 #include <stdexcept>
 #include <string_view>
 
 #include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
+#include "sphmol/boundary/free_slip_walls.hpp"
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
@@ -133,6 +136,10 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.wall_model == "morris") add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
   else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
+  // Free-slip wall bodies: after the wall model, which sets every wall pair's factor.
+  if (disc.viscosity != "none" &&
+      std::any_of(particles.free_slip_body.begin(), particles.free_slip_body.end(), [](std::uint8_t f) { return f != 0; }))
+    add("discretization.viscosity", std::make_unique<FreeSlipWalls<D>>(particles.free_slip_body, disc.viscosity == "strain_rate"));
   if (disc.viscosity == "strain_rate") {
     add("discretization.viscosity", std::make_unique<StrainRate<D>>());
     add("discretization.momentum", pressure());

@@ -344,6 +344,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       }
     }
     out.body_names.push_back(w.name);
+    out.particles.free_slip_body.push_back(w.free_slip ? 1 : 0);
   }
 
   for (int d = 0; d < D; ++d) {

@@ -241,7 +241,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     s.fluid.push_back(std::move(b));
   }
 
-  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt", "motion"});
+  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt", "motion", "slip"});
   for (std::size_t k = 0; k < walls.size(); ++k) {
     auto& w = walls[k];
     WallBodySpec b;
@@ -264,6 +264,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     if (w.has("velocity")) b.velocity = point(w, "velocity", dimension, "[m/s]");
     b.belt = w.boolean("belt").value_or(false);
     if (b.belt && b.velocity.empty()) w.fail("belt", "a belt needs the velocity its surface moves with");
+    if (const auto v = w.string("slip")) b.free_slip = w.choice("slip", *v, {"no_slip", "free_slip"}) == "free_slip";
     s.walls.push_back(std::move(b));
   }
   return s;

@@ -74,6 +74,7 @@ struct WallBodySpec {
   int layers = 0;                // 0: discretization.wall_layers, or enough to fill the kernel support
   std::vector<double> velocity;  // [m/s], constant; empty = at rest
   bool belt = false;             // the particles stay in place and carry `velocity` (a moving surface)
+  bool free_slip = false;        // `slip: free_slip`: no viscous stress from the body
   std::optional<WallMotionSpec> motion;  // instead of velocity and belt
   std::string where;
 };

@@ -90,6 +90,7 @@ std::string scene_to_yaml(const SceneSpec& spec) {
       y << "    - name: " << quoted(w.name) << "\n      shape: " << shape(w.shape) << "\n      layers: " << w.layers << "\n";
       if (w.motion) y << "      motion: " << motion(*w.motion) << "\n";
       else y << "      velocity: " << list(v) << "\n      belt: " << (w.belt ? "true" : "false") << "\n";
+      y << "      slip: " << (w.free_slip ? "free_slip" : "no_slip") << "\n";
     }
   }
   return y.str();
