@@ -232,4 +232,11 @@ probes:
   CHECK(no.summary["final_errors"]["max_speed"].get<double>() > 0.1);
   INFO(no.kept);
   CHECK(drag(no.kept) < -1e-4);
+  // The probe does not normalise its pair sums as the corrected Laplacian does: refused.
+  std::string y = yaml;
+  y.replace(y.find("SLIP"), 4, "no_slip");
+  y.replace(y.find("  density: summation"), 20, "  density: summation\n  laplacian_correction: moment");
+  const auto corrected = run_scene("slip-corrected", y);
+  CHECK(corrected.code == 2);
+  CHECK_THAT(corrected.err, Catch::Matchers::Contains("probes[0].body: a force probe needs discretization.laplacian_correction: none"));
 }
