@@ -23,6 +23,7 @@ struct ShockTubeBin {
 //   shock:            rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R ahead);
 //   contact:          between tail and shock, the rightmost x where rho rises (leftwards) through
 //                     (rho*_L + rho*_R)/2.
+// The summary reports each with its offset from the exact position in spacings of the denser side.
 // NaN when a crossing is not found.
 struct ShockTubeWaves {
   double shock, contact, rarefaction_head, rarefaction_tail;
@@ -43,7 +44,9 @@ class ShockTubeCase final : public Case<D> {
  private:
   std::optional<ExactRiemannSolver> exact_;
   double gamma_ = 1.4, spacing_ = 0.0, length_ = 0.0, width_ = 0.0;
-  std::string boundary_;
+  std::string boundary_, setup_;
+  double smoothing_ = 0.0, mass_left_ = 0.0, mass_right_ = 0.0;  // masses: of the particles next to the tube ends
+  std::size_t fluid_left_ = 0, fluid_right_ = 0;
   int wall_layers_ = 0;
   bool profiles_ = true;
 };
