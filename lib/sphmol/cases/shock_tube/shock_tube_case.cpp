@@ -72,6 +72,7 @@ std::unique_ptr<SphSystem<D>> ShockTubeCase<D>::build(const Config& config) {
   length_ = config.settings<ShockTubeSettings>().tube_length;
   width_ = config.settings<ShockTubeSettings>().tube_width;
   wall_layers_ = scene.wall_layers;
+  side_rows_ = scene.side_rows;
   setup_ = st.setup;
   smoothing_ = st.smoothing;
   fluid_left_ = fluid_right_ = 0;
@@ -92,6 +93,13 @@ std::unique_ptr<SphSystem<D>> ShockTubeCase<D>::build(const Config& config) {
   // With a constant h the kernel pass reads one h; the per-particle h0 (equal-mass spacings) needs a variable one.
   if (config.discretization.smoothing_length != "constant") sys->set_initial_smoothing_lengths(scene.h0);
   return sys;
+}
+
+template <int D>
+double ShockTubeCase<D>::local_spacing(int side, double rho) const {
+  const double m = side == 0 ? mass_left_ : mass_right_;
+  const double dy = D == 2 ? width_ / side_rows_[static_cast<std::size_t>(side)] : 1.0;
+  return m / (rho * dy);
 }
 
 template <int D>
@@ -180,10 +188,18 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
   auto offset = [this](double sph, double exact) {
     return std::isnan(sph) || std::isnan(exact) ? nlohmann::json(nullptr) : nlohmann::json((sph - exact) / spacing_);
   };
-  auto wave = [&](double sph, double exact, double crossing) {
-    return nlohmann::json{
-        {"sph", pos(sph)}, {"exact", exact}, {"exact_crossing", pos(crossing)}, {"offset_spacings", offset(sph, crossing)}};
+  // local: the x spacing of the gas at the wave, on its denser side (rarefaction and contact: the
+  // left gas; shock: the shocked right gas), for the left-facing fan and right-moving shock the
+  // detector reads.
+  auto wave = [&](double sph, double exact, double crossing, double local) {
+    nlohmann::json j{
+        {"sph", pos(sph)}, {"exact", exact}, {"exact_crossing", pos(crossing)}, {"offset_spacings", offset(sph, crossing)},
+        {"local_spacing", local}};
+    j["offset_local_spacings"] = std::isnan(sph) || std::isnan(crossing) ? nlohmann::json(nullptr)
+                                                                         : nlohmann::json((sph - crossing) / local);
+    return j;
   };
+  const double rho_l = exact_->sample(x0, t, 0.0).rho;
   const double inv_n = 1.0 / static_cast<double>(n);
   return {{"t", t},
           {"L1_rho", l1[0] * inv_n},
@@ -195,10 +211,11 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
           {"L1_mid_p", l1_mid[2] * inv_mid},
           {"L1_mid_e", l1_mid[3] * inv_mid},
           {"waves",
-           {{"shock", wave(w.shock, ex.right_head, wx.shock)},
-            {"contact", wave(w.contact, ex.contact, wx.contact)},
-            {"rarefaction_head", wave(w.rarefaction_head, ex.left_head, wx.rarefaction_head)},
-            {"rarefaction_tail", wave(w.rarefaction_tail, ex.left_tail, wx.rarefaction_tail)}}}};
+           {{"shock", wave(w.shock, ex.right_head, wx.shock, local_spacing(1, exact_->rho_star_right()))},
+            {"contact", wave(w.contact, ex.contact, wx.contact, local_spacing(0, exact_->rho_star_left()))},
+            {"rarefaction_head", wave(w.rarefaction_head, ex.left_head, wx.rarefaction_head, local_spacing(0, rho_l))},
+            {"rarefaction_tail",
+             wave(w.rarefaction_tail, ex.left_tail, wx.rarefaction_tail, local_spacing(0, exact_->rho_star_left()))}}}};
 }
 
 template <int D>
@@ -222,7 +239,9 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
       {"waves", "threshold crossings on the x-binned profile: rarefaction head/tail where u passes 5%/95% of u*, "
                 "shock where u falls through u*/2, contact where rho passes (rho*_L + rho*_R)/2. exact: the wave's exact "
                 "position (fan head and tail: its edges); exact_crossing: the same threshold crossing on the exact profile; "
-                "offset_spacings = (sph - exact_crossing) / discretization.spacing (the denser side's spacing)"}};
+                "offset_spacings = (sph - exact_crossing) / discretization.spacing (the denser side's spacing); "
+                "offset_local_spacings = (sph - exact_crossing) / local_spacing, the x spacing m / (rho dy) (1D: m / rho) "
+                "of the gas at the wave on its denser side at the exact density there"}};
   summary["setup"] = {{"type", setup_}, {"smoothing", smoothing_}, {"fluid_left", fluid_left_}, {"fluid_right", fluid_right_},
                       {"mass_left", mass_left_}, {"mass_right", mass_right_}};
   if (profiles_) {

@@ -98,6 +98,7 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
       rows = std::max(1, static_cast<int>(std::lround(Wd / a)));
       dy = Wd / rows;
     }
+    s.side_rows[static_cast<std::size_t>(side)] = rows;
     // The column width that gives each particle its mass at density rho.
     auto column_width = [&](double rho) {
       if (!equal_mass) return dx;

@@ -23,6 +23,7 @@
 // fixed wall particles continuing the lattice and holding the initial state of their side; the
 // waves do not reach them by t = 0.2 (fastest: rarefaction head at x = -c_L t = -0.24, shock at
 // about +0.31), so they only keep the end particles from expanding into vacuum.
+#include <array>
 #include <vector>
 
 #include "sphmol/boundary/ghost_particles.hpp"
@@ -41,6 +42,7 @@ struct ShockTubeScene {
   BoxWalls<D> walls{};         // the ghost walls (only y, only with boundary: ghost)
   double spacing = 0.0;
   int columns = 0, rows = 1, wall_layers = 0;
+  std::array<int, 2> side_rows{1, 1};  // rows across the tube of the left and right gas (2D)
 };
 
 template <int D>
