@@ -1,11 +1,11 @@
 #pragma once
-// Artificial thermal conductivity of Price (2008, J. Comput. Phys. 227:10040, §4: the dissipative
-// term in the thermal energy and its signal speed):
+// Artificial thermal conductivity of Price (2008, J. Comput. Phys. 227:10040: the dissipative term in
+// the thermal energy and its signal speed for hydrodynamics without gravity):
 //   de_i/dt += sum_j (m_j / rhobar_ij) alpha_u v_sig^u (e_i - e_j) r_hat_ij . grad_i W_ij,
 //   v_sig^u = sqrt(|p_i - p_j| / rhobar_ij),   rhobar_ij = (rho_i + rho_j)/2.
-// It smooths the jump in e at a contact discontinuity (where p is continuous, so v_sig^u vanishes
-// in the settled flow) that the pressure-gradient term would otherwise turn into a pressure "blip"
-// and a spurious wall-heating spike (Price 2008, Figs 2-4). r_hat . grad W = dW/dr = r F_ij < 0,
+// It conducts only where p jumps (v_sig^u ~ sqrt(|p_i - p_j|)): at a contact discontinuity whose
+// smoothed density puts a pressure "blip" across the jump in e, it spreads e until the pressures
+// balance, and then stops (Price 2008); across a contact in pressure balance it does nothing. r_hat . grad W = dW/dr = r F_ij < 0,
 // so heat flows from the hotter to the colder particle of each pair; the pair contributions
 // m_i m_j (...) are antisymmetric, so sum_i m_i de_i/dt = 0 (total energy conserved) when every
 // neighbour is itself a fluid particle. Wall particles (fixed e) exchange heat one way only.

@@ -7,8 +7,8 @@
 // Pi_ij is symmetric in i, j, so the pair forces are antisymmetric and momentum is conserved; the
 // heating is >= 0. Sound speeds c_i come from the EOS (Workspace::c), h_ij = (h_i + h_j)/2.
 //
-// The signal-velocity form of Monaghan (1997, J. Comput. Phys. 136:298, eqs 4.1-4.2), as written by
-// Price (2008, J. Comput. Phys. 227:10040, §4) for shock tubes, replaces Pi_ij by
+// The signal-velocity form of Monaghan (1997, J. Comput. Phys. 136:298), as written by Price (2008,
+// J. Comput. Phys. 227:10040) for shock tubes, replaces Pi_ij by
 //   Pi_ij = -alpha v_sig w_ij / rhobar_ij,  v_sig = (c_i + c_j - beta w_ij)/2,  w_ij = v_ij . x_ij / |x_ij|
 // for approaching pairs (w_ij < 0): linear in w_ij with a signal speed instead of the quadratic
 // theta_ij of h_ij-scaled velocities, so it needs no eta and spreads a shock over fewer particles

@@ -3,7 +3,7 @@
 // shock_tube.setup chooses how the density jump is carried:
 //   equal_mass (default): every particle has the mass m = rho_dense dx^D of the denser side's
 //     lattice (spacing dx); the lighter side's particles lie (rho_dense / rho_light)^(1/D) dx apart,
-//     so the particle spacing, not the mass, carries the jump (Monaghan 1997, §5; Price 2008, §5.1).
+//     so the particle spacing, not the mass, carries the jump (the shock-tube setup of Monaghan 1997 and Price 2008).
 //     In 2D the lighter side has the whole number of rows across W nearest to W / (that spacing), and
 //     its column spacing makes the mass exactly m.
 //   equal_spacing: one square lattice of spacing dx on both sides, m = rho dx^D with the left or right
