@@ -77,7 +77,8 @@ std::vector<Scenario> scenarios() {
   return {
       {"poiseuille.yaml", {"time.t_end=1.0"}, 10, true},
       {"shock_tube.yaml", {}, 20, false},  // free-slip ghost walls in y
-      {"shock_tube.yaml", {"time.t_end=0.2", "discretization.boundary=wall_particles"}, 20, true},  // periodic y
+      // periodic y; at the shipped h0 = 1.3 dx twice the pair radius does not fit the width
+      {"shock_tube.yaml", {"time.t_end=0.2", "discretization.boundary=wall_particles", "discretization.smoothing_ratio=1.0"}, 20, true},
       {"cavity.yaml", {"time.t_end=1.0"}, 30, true},
       {"cavity.yaml", {"time.t_end=1.0", "discretization.boundary=ghost", "discretization.wall_model=prescribed"}, 30, false},
       {"hydrostatic.yaml", {"time.t_end=1.0"}, 30, true},

@@ -2,6 +2,7 @@
 // the lattice loops they are built from: each reference below is such a loop, written out once here,
 // and every particle (position, kind, velocity, mass, density, normal, depth, stationary; the shock
 // tube's energy too) must match, for several sizes and wall layer counts and every wall treatment.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -350,6 +351,54 @@ TEST_CASE("case scenes: the shock tube's kit particles equal the lattice loops",
       const auto want1 = shock_tube_reference<1>(c1, c1.settings<ShockTubeSettings>().tube_length, 0.0, e1);
       require_same<1>(want1, s1.particles, s1.spacing, true, e1, s1.energy);
     }
+}
+
+TEST_CASE("case scenes: the equal-mass shock tube (Sod data) spaces the light side (rho_L/rho_R)^(1/D) wider", "[case_scenes]") {
+  for (const double smoothing : {0.0, 1.0}) {
+    INFO("smoothing " << smoothing);
+    const std::vector<std::string> set = {"shock_tube.smoothing=" + std::to_string(smoothing)};
+    const Config c1 = load_config_string(verification("sod_1d"), set);
+    const auto s1 = build_shock_tube_scene<1>(c1);
+    const double dx = 1.25e-3, m = 1.0 * dx;
+    std::vector<double> left, right;
+    for (std::size_t i = 0; i < s1.particles.n_fluid; ++i) {
+      CHECK(s1.particles.mass[i] == Approx(m).epsilon(1e-14));
+      CHECK(s1.h0[i] == Approx(1.0 * m / s1.particles.rho[i]).epsilon(1e-14));
+      (s1.particles.x[0][i] < 0.0 ? left : right).push_back(s1.particles.x[0][i]);
+    }
+    std::sort(left.begin(), left.end());
+    std::sort(right.begin(), right.end());
+    CHECK(left.size() + right.size() == 450);
+    // Away from the jump: spacing dx on the left, 8 dx on the right; the tube ends within half a spacing.
+    CHECK(left[1] - left[0] == Approx(dx).epsilon(1e-9));
+    CHECK(right.back() - right[right.size() - 2] == Approx(8.0 * dx).epsilon(1e-9));
+    CHECK(std::abs(left.front() + 0.5) < dx);
+    CHECK(std::abs(right.back() - 0.5) < 8.0 * dx);
+    if (smoothing == 0.0) {
+      CHECK(left.front() == Approx(-0.5 + 0.5 * dx).margin(1e-12));
+      CHECK(right.back() == Approx(0.5 - 4.0 * dx).margin(1e-9));
+      CHECK(left.back() == Approx(-0.5 * dx).margin(1e-15));
+      CHECK(right.front() == Approx(4.0 * dx).margin(1e-15));
+      CHECK(s1.particles.rho[s1.particles.n_fluid - 1] == 0.125);
+    }
+    // 2D: 14 rows on the left, 5 across W = 0.035 on the right; equal masses everywhere.
+    const Config c2 = load_config_string(verification("sod"), set);
+    const auto s2 = build_shock_tube_scene<2>(c2);
+    CHECK(s2.side_rows == std::array<int, 2>{14, 5});
+    const double m2 = 2.5e-3 * 2.5e-3;
+    std::size_t n_right = 0;
+    for (std::size_t i = 0; i < s2.particles.n_fluid; ++i) {
+      CHECK(s2.particles.mass[i] == Approx(m2).epsilon(1e-14));
+      CHECK(s2.h0[i] == Approx(1.3 * std::sqrt(m2 / s2.particles.rho[i])).epsilon(1e-14));
+      if (s2.particles.x[0][i] > 0.0) {
+        ++n_right;
+        const double row = s2.particles.x[1][i] / 7e-3 - 0.5;  // rows at (j + 1/2) W / 5
+        CHECK(std::abs(row - std::round(row)) < 1e-9);
+      }
+    }
+    CHECK(n_right % 5 == 0);
+    if (smoothing == 0.0) CHECK(n_right == 5 * 70);
+  }
 }
 
 TEST_CASE("case scenes: the 3D tank has the fluid block, four side walls and a floor", "[case_scenes]") {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "sphmol/core/state_layout.hpp"
+#include "sphmol/physics/artificial_conductivity.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/physics/continuity_density.hpp"
 #include "sphmol/physics/energy_equation.hpp"
@@ -248,6 +249,104 @@ TEST_CASE("artificial viscosity: momentum and energy conserved, heats, only appr
     } else {
       CHECK(g.dvdt[0][0] == 0.0);
     }
+  }
+}
+
+TEST_CASE("signal-velocity viscosity (Monaghan 1997): conserves, heats, the pair value of its formula", "[physics]") {
+  Fixture<2> f;
+  random_cloud(f, 22, true);
+  ArtificialViscosity<2, true, SignalVelocityPi>(SignalVelocityPi{1.0, 2.0}).apply(f.w);
+  CHECK(abs_force(f) > 0.0);
+  CHECK(momentum_rate(f, 0) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  CHECK(momentum_rate(f, 1) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  CHECK(energy_rate(f) == Approx(0.0).margin(1e-10 * abs_force(f)));
+  double heat = 0.0;
+  for (std::size_t i = 0; i < f.P.size(); ++i) heat += f.P.mass[i] * f.de[i];
+  CHECK(heat > 0.0);
+  // Two particles 0.05 apart approaching at 2 s (w = -2): Pi = -alpha (cbar - beta w / 2) w / rhobar with
+  // cbar = 1.5, rhobar = 1.5, alpha = 1, beta = 2: Pi = 3.5 * 2 / 1.5; a_0 = -m Pi F dx.
+  for (double s : {1.0, -1.0}) {
+    Fixture<1> g;
+    g.domain.lo = {-1.0};
+    g.domain.hi = {1.0};
+    g.domain.periodic = {false};
+    g.P.add(Kind::Fluid, {-0.025}, {s}, 0.7, 1.0);
+    g.P.add(Kind::Fluid, {0.025}, {-s}, 0.7, 2.0);
+    g.finish(0.05);
+    g.w.c = {1.0, 2.0};
+    ArtificialViscosity<1, false, SignalVelocityPi>(SignalVelocityPi{1.0, 2.0}).apply(g.w);
+    if (s > 0) {
+      const double pi = (1.5 + 2.0) * 2.0 / 1.5;
+      const std::size_t k = 0;  // the one pair of row 0
+      REQUIRE(g.w.pairs.offset[1] == 1);
+      CHECK(g.dvdt[0][0] == Approx(-0.7 * pi * g.w.F[k] * g.w.dx[0][k]));
+      CHECK(g.dvdt[0][0] < 0.0);
+      CHECK(g.dvdt[0][1] == Approx(-g.dvdt[0][0]));
+    } else {
+      CHECK(g.dvdt[0][0] == 0.0);
+      CHECK(g.dvdt[0][1] == 0.0);
+    }
+  }
+}
+
+// Random internal energies on the random cloud (the fixture's e is uniform).
+void random_energy(Fixture<2>& f, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> U(0.5, 2.0);
+  for (auto& e : f.w.e) e = U(gen);
+}
+
+TEST_CASE("artificial conductivity (Price 2008): zero for uniform e or p, conserves energy, heat flows downhill", "[physics]") {
+  {  // uniform e (random p): no conduction
+    Fixture<2> f;
+    random_cloud(f, 31, true);
+    ArtificialConductivity<2>(1.0).apply(f.w);
+    for (const double de : f.de) CHECK(de == 0.0);
+  }
+  {  // uniform p (random e): v_sig^u = 0, no conduction (a contact in pressure balance stays sharp)
+    Fixture<2> f;
+    random_cloud(f, 32, true);
+    random_energy(f, 33);
+    f.w.p.assign(f.P.size(), 0.7);
+    ArtificialConductivity<2>(1.0).apply(f.w);
+    for (const double de : f.de) CHECK(de == 0.0);
+  }
+  {  // random e and p: the energy exchanged sums to zero, and it is not zero everywhere
+    Fixture<2> f;
+    random_cloud(f, 34, true);
+    random_energy(f, 35);
+    ArtificialConductivity<2>(1.0).apply(f.w);
+    double total = 0.0, magnitude = 0.0;
+    for (std::size_t i = 0; i < f.P.size(); ++i) {
+      total += f.P.mass[i] * f.de[i];
+      magnitude += f.P.mass[i] * std::abs(f.de[i]);
+    }
+    CHECK(magnitude > 0.0);
+    CHECK(total == Approx(0.0).margin(1e-12 * magnitude));
+    // Linear in alpha_u.
+    Fixture<2> g;
+    random_cloud(g, 34, true);
+    random_energy(g, 35);
+    ArtificialConductivity<2>(0.25).apply(g.w);
+    for (std::size_t i = 0; i < f.P.size(); ++i) CHECK(g.de[i] == Approx(0.25 * f.de[i]).margin(1e-14));
+  }
+  {  // two particles: the hotter one cools at the rate of the formula, the colder one heats
+    Fixture<1> g;
+    g.domain.lo = {-1.0};
+    g.domain.hi = {1.0};
+    g.domain.periodic = {false};
+    g.P.add(Kind::Fluid, {-0.025}, {0.0}, 0.7, 1.0);
+    g.P.add(Kind::Fluid, {0.025}, {0.0}, 0.7, 2.0);
+    g.finish(0.05);
+    g.w.e = {3.0, 1.0};
+    g.w.p = {1.2, 0.8};  // p_i - p_j = 0.4, rhobar = 1.5
+    ArtificialConductivity<1>(1.0).apply(g.w);
+    REQUIRE(g.w.pairs.offset[1] == 1);
+    const double dWdr = g.w.F[0] * 0.05;  // F = (dW/dr) / r
+    CHECK(dWdr < 0.0);
+    CHECK(g.de[0] == Approx(0.7 / 1.5 * std::sqrt(0.4 / 1.5) * 2.0 * dWdr));
+    CHECK(g.de[0] < 0.0);
+    CHECK(g.de[1] == Approx(-g.de[0]));
   }
 }
 

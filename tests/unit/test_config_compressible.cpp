@@ -76,3 +76,42 @@ TEST_CASE("compressible config: nonsense combinations name both keys", "[config]
   CHECK(error_of({"discretization.smoothing_length=density"}) == "<no error>");  // continuity + 2.67 is fine
   CHECK(error_of({"discretization.smoothing_length=constant", "discretization.neighbor_search=all_pairs"}) == "<no error>");
 }
+
+TEST_CASE("shock_tube config: setup, smoothing, viscosity form and conductivity keys", "[config]") {
+  const std::string sod = std::string(SPHMOL_SOURCE_DIR) + "/verification/sod_1d.yaml";
+  const Config c = load_config(sod);
+  const auto& st = c.settings<ShockTubeSettings>();
+  CHECK(st.setup == "equal_mass");
+  CHECK(st.smoothing == 1.0);
+  CHECK(c.discretization.artificial_viscosity.form == "monaghan_1997");
+  CHECK(c.discretization.artificial_viscosity.beta == 2.0);
+  CHECK_FALSE(c.discretization.artificial_conductivity.enabled);
+  // Defaults: equal masses across a jump smooth it over one spacing; equal spacing keeps it sharp;
+  // the signal-velocity form defaults to beta = 2 (Price 2008).
+  const Config d = load_config_string(
+      "case: shock_tube\ndimension: 1\nfluid: {kinematic_viscosity: 0, eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "geometry: {tube_length: 1.0}\nshock_tube: {left: {density: 1, pressure: 1}, right: {density: 0.125, pressure: 0.1}}\n"
+      "discretization: {spacing: 0.01, kernel: truncated_exponential, density: continuity, energy: true, "
+      "smoothing_length: ode, neighbor_search: kdtree, artificial_viscosity: {form: monaghan_1997}, "
+      "artificial_conductivity: {}}\ntime: {t_end: 0.2}\n");
+  CHECK(d.settings<ShockTubeSettings>().setup == "equal_mass");
+  CHECK(d.settings<ShockTubeSettings>().smoothing == 1.0);
+  CHECK(d.discretization.artificial_viscosity.beta == 2.0);
+  CHECK(d.discretization.artificial_conductivity.enabled);
+  CHECK(d.discretization.artificial_conductivity.alpha == 1.0);
+  CHECK(load_config(shock).settings<ShockTubeSettings>().smoothing == 0.0);  // equal_spacing
+  // Round trip of the new keys.
+  const Config r = load_config_string(to_yaml(d));
+  CHECK(r.settings<ShockTubeSettings>().smoothing == 1.0);
+  CHECK(r.discretization.artificial_viscosity.form == "monaghan_1997");
+  CHECK(r.discretization.artificial_conductivity.enabled);
+  // Errors.
+  CHECK(error_of({"shock_tube.setup=equal_mass"}) == "<no error>");
+  CHECK_THAT(error_of({"shock_tube.setup=equal_mass", "discretization.smoothing_length=constant"}),
+             Contains("shock_tube.setup: 'equal_mass' with a density jump needs a variable smoothing length"));
+  CHECK_THAT(error_of({"shock_tube.setup=equal_mas"}), Contains("shock_tube.setup") && Contains("equal_spacing"));
+  CHECK_THAT(error_of({"shock_tube.smoothing=-1"}), Contains("shock_tube.smoothing"));
+  CHECK_THAT(error_of({"discretization.artificial_viscosity.form=monaghan_1997"}),
+             Contains("discretization.artificial_viscosity.eta") && Contains("monaghan_1992"));
+  CHECK_THAT(error_of({"discretization.artificial_conductivity.alpha=-1"}), Contains("discretization.artificial_conductivity.alpha"));
+}

@@ -55,12 +55,20 @@ struct RepulsiveConfig {  // Niedoba 2012, eq 2.76, for boundary: virtual_repuls
   double r0 = 1.0;        // cut-off radius in particle spacings, > 0 and inside the kernel support
 };
 
-// Monaghan artificial viscosity (Niedoba 2012, eq 2.70); absent from the YAML = off.
+// Monaghan artificial viscosity; absent from the YAML = off. form: monaghan_1992 (Niedoba 2012,
+// eq 2.70, theta_ij quadratic with eta) or monaghan_1997 (signal velocity, physics/artificial_viscosity.hpp).
 struct ArtificialViscosityConfig {
   bool enabled = false;
+  std::string form = "monaghan_1992";
   double alpha = 1.0;  // >= 0
-  double beta = 1.0;   // >= 0
-  double eta = 0.1;    // eta / h_ij, > 0
+  double beta = 1.0;   // >= 0 (monaghan_1997: default 2, Price 2008)
+  double eta = 0.1;    // eta / h_ij, > 0 (monaghan_1992 only)
+};
+
+// Artificial thermal conductivity (Price 2008; physics/artificial_conductivity.hpp); absent = off.
+struct ArtificialConductivityConfig {
+  bool enabled = false;
+  double alpha = 1.0;  // alpha_u >= 0
 };
 
 // Transport-velocity formulation (Adami, Hu & Adams 2013; physics/transport_velocity.hpp); absent = off.
@@ -108,6 +116,7 @@ struct DiscretizationConfig {
   // bit-identical, off only to measure the gain.
   bool combine_terms = true;
   ArtificialViscosityConfig artificial_viscosity;
+  ArtificialConductivityConfig artificial_conductivity;
   TransportVelocityConfig transport_velocity;
   bool energy = false;              // energy equation (Niedoba 2012, eq 2.66/2.65), e in the state
   std::string smoothing_length = "constant";  // constant | density (Niedoba 2012, eq 2.67) | ode (Niedoba 2012, eq 2.68)

@@ -185,7 +185,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
-                                "artificial_viscosity", "energy", "smoothing_length", "transport_velocity",
+                                "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity",
                                 "position_noise", "density_diffusion"});
   {
     auto& d = c.discretization;
@@ -280,15 +280,27 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.reorder && d.boundary == "ghost")
       disc.fail("reorder", "not available with boundary 'ghost' (mirror images refer to the previous particle order)");
     if (disc.has("artificial_viscosity")) {
-      MapReader av = disc.section("artificial_viscosity", {"alpha", "beta", "eta"});
+      MapReader av = disc.section("artificial_viscosity", {"form", "alpha", "beta", "eta"});
       auto& a = d.artificial_viscosity;
       a.enabled = true;
+      if (const auto v = av.string("form")) a.form = av.choice("form", *v, {"monaghan_1992", "monaghan_1997"});
+      if (a.form == "monaghan_1997") {
+        a.beta = 2.0;  // Price 2008: v_sig = (c_i + c_j - 2 w_ij)/2
+        if (av.has("eta")) av.fail("eta", "is used by form 'monaghan_1992' only (the signal-velocity form has no eta)");
+      }
       if (const auto v = av.real("alpha")) a.alpha = *v;
       av.check("alpha", a.alpha >= 0, a.alpha, ">= 0");
       if (const auto v = av.real("beta")) a.beta = *v;
       av.check("beta", a.beta >= 0, a.beta, ">= 0");
       if (const auto v = av.real("eta")) a.eta = *v;
       av.check("eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
+    }
+    if (disc.has("artificial_conductivity")) {
+      MapReader ac = disc.section("artificial_conductivity", {"alpha"});
+      auto& a = d.artificial_conductivity;
+      a.enabled = true;
+      if (const auto v = ac.real("alpha")) a.alpha = *v;
+      ac.check("alpha", a.alpha >= 0, a.alpha, ">= 0");
     }
     if (disc.has("transport_velocity")) {
       MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "step_factor", "extra_stress"});
@@ -311,6 +323,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = disc.string("smoothing_length"))
       d.smoothing_length = disc.choice("smoothing_length", *v, {"constant", "density", "ode"});
     // Combinations that have no meaning, named by both keys.
+    if (d.artificial_conductivity.enabled && !d.energy)
+      disc.fail("artificial_conductivity", "conducts internal energy; needs discretization.energy: true");
     if (c.fluid.eos.type == "ideal_gas" && !d.energy)
       disc.fail("energy", "fluid.eos.type 'ideal_gas' needs discretization.energy: true (p = (gamma - 1) rho e)");
     if (d.energy && c.fluid.kinematic_viscosity != 0)

@@ -80,8 +80,12 @@ std::string to_yaml(const Config& c) {
     << "  pair_passes: " << d.pair_passes << "\n"
     << "  combine_terms: " << (d.combine_terms ? "true" : "false") << "\n";
   if (d.artificial_viscosity.enabled)
-    y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
-      << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";
+    y << "  artificial_viscosity: {form: " << d.artificial_viscosity.form << ", alpha: " << num(d.artificial_viscosity.alpha)
+      << ", beta: " << num(d.artificial_viscosity.beta)
+      << (d.artificial_viscosity.form == "monaghan_1992" ? ", eta: " + num(d.artificial_viscosity.eta) : std::string())
+      << "}\n";
+  if (d.artificial_conductivity.enabled)
+    y << "  artificial_conductivity: {alpha: " << num(d.artificial_conductivity.alpha) << "}\n";
   if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
   if (d.transport_velocity.enabled)
     y << "  transport_velocity: {background_pressure: " << num(d.transport_velocity.background_pressure)

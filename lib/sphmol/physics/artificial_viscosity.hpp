@@ -6,7 +6,16 @@
 //   de_i/dt += 1/2 sum_j m_j Pi_ij v_ij . grad_i W_ij         (its work, eq 2.72; only with energy)
 // Pi_ij is symmetric in i, j, so the pair forces are antisymmetric and momentum is conserved; the
 // heating is >= 0. Sound speeds c_i come from the EOS (Workspace::c), h_ij = (h_i + h_j)/2.
+//
+// The signal-velocity form of Monaghan (1997, J. Comput. Phys. 136:298), as written by Price (2008,
+// J. Comput. Phys. 227:10040) for shock tubes, replaces Pi_ij by
+//   Pi_ij = -alpha v_sig w_ij / rhobar_ij,  v_sig = (c_i + c_j - beta w_ij)/2,  w_ij = v_ij . x_ij / |x_ij|
+// for approaching pairs (w_ij < 0): linear in w_ij with a signal speed instead of the quadratic
+// theta_ij of h_ij-scaled velocities, so it needs no eta and spreads a shock over fewer particles
+// (Price 2008: alpha = 1, beta = 2). Force and heating are the same pair sums as above.
 #include <algorithm>
+#include <cmath>
+#include <type_traits>
 
 #include "sphmol/rhs/pair_term.hpp"
 
@@ -22,11 +31,26 @@ struct MonaghanPi {
   }
 };
 
-template <int D, bool WithEnergy>
-class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, WithEnergy>> {
+// Monaghan (1997)'s Pi_ij for one pair, same arguments as MonaghanPi (h_ij unused). vx = 0 at r2 = 0
+// (a particle's own row entry or coincident particles), where F = 0 too: no division by zero.
+struct SignalVelocityPi {
+  double alpha, beta;
+  double operator()(double vx, double r2, double /*hij*/, double cbar, double rhobar) const {
+    const double w = r2 > 0.0 ? std::min(vx, 0.0) / std::sqrt(r2) : 0.0;
+    return -alpha * (cbar - 0.5 * beta * w) * w / rhobar;  // v_sig = (c_i + c_j - beta w)/2 = cbar - beta w/2
+  }
+};
+
+template <int D, bool WithEnergy, class Pi = MonaghanPi>
+class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, WithEnergy, Pi>> {
  public:
+  explicit ArtificialViscosity(Pi pi) : pi_(pi) {}
   ArtificialViscosity(double alpha, double beta, double eta_factor) : pi_{alpha, beta, eta_factor} {}
-  std::string_view name() const override { return WithEnergy ? "artificial_viscosity+heating" : "artificial_viscosity"; }
+  std::string_view name() const override {
+    if constexpr (std::is_same_v<Pi, SignalVelocityPi>)
+      return WithEnergy ? "artificial_viscosity_signal_velocity+heating" : "artificial_viscosity_signal_velocity";
+    return WithEnergy ? "artificial_viscosity+heating" : "artificial_viscosity";
+  }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
     {
@@ -49,7 +73,7 @@ class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, W
   }
 
  private:
-  MonaghanPi pi_;
+  Pi pi_;
 };
 
 }  // namespace sphmol

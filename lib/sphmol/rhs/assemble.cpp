@@ -15,6 +15,7 @@
 #include "sphmol/core/join.hpp"
 #include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
+#include "sphmol/physics/artificial_conductivity.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/continuity_density.hpp"
@@ -111,8 +112,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const auto& av = disc.artificial_viscosity;
   // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
   // formulation), equal to the four separate terms to round-off.
+  const bool signal_velocity = av.form == "monaghan_1997";
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
-                      av.enabled && !disc.energy;
+                      av.enabled && !signal_velocity && !disc.energy;
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
@@ -154,9 +156,14 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
   if (av.enabled && !wc_row) {
-    if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
+    const SignalVelocityPi sv{av.alpha, av.beta};
+    if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
+    else if (signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false, SignalVelocityPi>>(sv));
+    else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
     else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
   }
+  if (disc.artificial_conductivity.enabled)
+    add("discretization.artificial_conductivity", std::make_unique<ArtificialConductivity<D>>(disc.artificial_conductivity.alpha));
   if (disc.energy) {
     if (m116) add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
     else add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());

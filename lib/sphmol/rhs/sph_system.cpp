@@ -63,6 +63,13 @@ void SphSystem<D>::configure_fields(const StateFields& fields, std::vector<doubl
 }
 
 template <int D>
+void SphSystem<D>::set_initial_smoothing_lengths(const std::vector<double>& h0) {
+  if (h0.size() != n_base_) throw std::invalid_argument("set_initial_smoothing_lengths: needs one h per particle");
+  std::copy(h0.begin(), h0.end(), ws_.hs.begin());
+  h_ref_ = ws_.hs;
+}
+
+template <int D>
 std::vector<double> SphSystem<D>::initial_state() const {
   std::vector<double> y(layout_.size());
   const std::size_t n = layout_.n;

@@ -35,6 +35,9 @@ class SphSystem final : public OdeSystem {
   // Adds the optional state blocks (before initial_state()). `energy` holds e for all particles
   // (fluid: initial value; walls: the fixed value the EOS uses); empty when the scene has no energy.
   void configure_fields(const StateFields& fields, std::vector<double> energy);
+  // Per-particle h(0) for scenes whose particle spacing varies (the equal-mass shock tube): the state's
+  // h(0) and the reference h of smoothing_length: density. After configure_fields, before initial_state().
+  void set_initial_smoothing_lengths(const std::vector<double>& h0);
 
   std::size_t size() const override { return layout_.size(); }
   void rhs(double t, const double* y, double* ydot) override;

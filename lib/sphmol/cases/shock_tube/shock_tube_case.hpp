@@ -3,6 +3,7 @@
 // over all fluid particles and over the mid-line particles (|y - W/2| < dx; with y periodic every row is
 // a mid-line, with walls the rows next to them differ), wave positions detected on the x-binned SPH profile, and a CSV of the binned profile with the exact
 // solution at each output time.
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -23,6 +24,8 @@ struct ShockTubeBin {
 //   shock:            rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R ahead);
 //   contact:          between tail and shock, the rightmost x where rho rises (leftwards) through
 //                     (rho*_L + rho*_R)/2.
+// The summary reports each with its offset from the exact profile's crossing, in spacings of the
+// denser side and in local particle spacings (the x spacing of the gas at the wave, see local_spacing).
 // NaN when a crossing is not found.
 struct ShockTubeWaves {
   double shock, contact, rarefaction_head, rarefaction_tail;
@@ -43,7 +46,13 @@ class ShockTubeCase final : public Case<D> {
  private:
   std::optional<ExactRiemannSolver> exact_;
   double gamma_ = 1.4, spacing_ = 0.0, length_ = 0.0, width_ = 0.0;
-  std::string boundary_;
+  std::string boundary_, setup_;
+  double smoothing_ = 0.0, mass_left_ = 0.0, mass_right_ = 0.0;  // masses: of the particles next to the tube ends
+  std::size_t fluid_left_ = 0, fluid_right_ = 0;
+  std::array<int, 2> side_rows_{1, 1};
+  // The x distance between neighbouring particles of one side at density rho: they keep their mass
+  // and (the flow being planar) their row spacing, so it is m / (rho dy), in 1D m / rho.
+  double local_spacing(int side, double rho) const;
   int wall_layers_ = 0;
   bool profiles_ = true;
 };

@@ -8,9 +8,6 @@
 #include <tuple>
 #include <vector>
 
-#include "sphmol/geometry/box_shape.hpp"
-#include "sphmol/geometry/lattice.hpp"
-#include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
@@ -37,17 +34,18 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
   const int layers = disc.wall_layers > 0 ? disc.wall_layers
                                           : static_cast<int>(std::ceil(kernel_info<D>(disc.kernel).support * h / dx)) + 1;
   const double gm1 = config.fluid.eos.gamma - 1.0;
-  const auto& Ls = config.settings<ShockTubeSettings>().left;
-  const auto& Rs = config.settings<ShockTubeSettings>().right;
+  const auto& Ls = g.left;
+  const auto& Rs = g.right;
   const double vol = std::pow(dx, D);
+  const bool equal_mass = g.setup == "equal_mass";
+  const double rho_dense = std::max(Ls.density, Rs.density);
+  const double m_equal = rho_dense * vol;
 
   ShockTubeScene<D> s;
   s.spacing = dx;
   s.columns = nx;
   s.rows = ny;
   s.wall_layers = layers;
-  s.domain.lo[0] = -0.5 * L - layers * dx;
-  s.domain.hi[0] = 0.5 * L + layers * dx;
   s.domain.periodic[0] = false;
   const std::string& boundary = disc.boundary;
   if constexpr (D == 2) {
@@ -71,54 +69,94 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
   } else if (boundary != "wall_particles") {
     throw std::invalid_argument("discretization.boundary: the 1D shock tube has no side walls");
   }
-  auto place = [&](Kind kind, double x, double y, const ShockTubeState& q, double sign, double depth) {
-    std::array<double, D> pos{}, vel{}, normal{};
-    pos[0] = x;
-    if constexpr (D == 2) pos[1] = y;
-    vel[0] = kind == Kind::Fluid ? q.velocity : 0.0;
-    normal[0] = sign;
-    s.particles.add(kind, pos, vel, q.density * vol, q.density, normal, depth);
-    s.energy.push_back(q.pressure / (gm1 * q.density));
+  // The initial state at x: a step, or the smoothed step of shock_tube.smoothing.
+  const double width = g.smoothing * dx;
+  auto state_at = [&](double x) {
+    const double f = width > 0.0 ? 1.0 / (1.0 + std::exp(-x / width)) : (x < 0.0 ? 0.0 : 1.0);
+    return ShockTubeState{Ls.density + (Rs.density - Ls.density) * f, Ls.pressure + (Rs.pressure - Ls.pressure) * f,
+                          Ls.velocity + (Rs.velocity - Ls.velocity) * f};
   };
-  // The tube [-L/2, L/2] (x [0, W] in y) on the lattice of cell centres (i + 1/2) dx from its lo corner.
-  geometry::Vec<D> lo{}, hi{};
-  lo[0] = -0.5 * L;
-  hi[0] = 0.5 * L;
-  if constexpr (D == 2) hi[1] = ny * dx;
-  geometry::Lattice<D> lattice;
-  lattice.spacing = dx;
-  lattice.origin = lo;
-  for (const auto& x : geometry::fill<D>(geometry::BoxShape<D>(lo, hi), lattice))
-    place(Kind::Fluid, x[0], D == 2 ? x[D - 1] : 0.0, x[0] < 0.0 ? Ls : Rs, 0.0, 0.0);
-  // With ghost y walls the end walls continue through the corners (behind y = 0 and y = W): the
-  // ghosts image fluid particles only, and a corner particle without wall neighbours on that diagonal
-  // is pushed out through the corner (seen as a blow-up at t = 0.02 without these layers).
-  // The end walls are the walls of the tube with its y faces open, extended by those layers in y.
-  std::array<bool, 2 * D> open{};
-  if constexpr (D == 2) {
-    const double ext = boundary == "ghost" ? layers * dx : 0.0;
-    lo[1] -= ext;
-    hi[1] += ext;
-    open[2] = open[3] = true;
-  }
-  // Each end's layers continue the lattice from that end, so a wall particle sits exactly (k + 1/2) dx
-  // beyond it. They are listed row by row, nearest layer first, the two ends alternately: the
-  // adaptive 1D run's errors move in their third digit with the summation order (measured).
-  std::vector<geometry::WallPoint<D>> ends;
+  // One point of the scene before it is sorted into the particle list.
+  struct Point {
+    Kind kind;
+    double x, y, mass, depth;  // depth: beyond the end of the fluid (walls)
+    ShockTubeState q;
+    long row, layer;  // row index across the tube (2D), wall layer beyond the end (walls)
+    int face;         // 0: left end, 1: right end
+  };
+  std::vector<Point> points;
+  const double y_ext = D == 2 && boundary == "ghost" ? 1.0 : 0.0;  // end walls continue behind the ghost walls
   for (int side = 0; side < 2; ++side) {
-    std::array<bool, 2 * D> open_side = open;
-    open_side[1 - side] = true;
-    geometry::Lattice<D> from_end = lattice;
-    from_end.origin[0] = side == 0 ? lo[0] : hi[0];
-    const auto w = geometry::box_container_walls<D>(lo, hi, open_side, from_end, layers * dx);
-    ends.insert(ends.end(), w.begin(), w.end());
+    const ShockTubeState& q_side = side == 0 ? Ls : Rs;
+    const double sign = side == 0 ? -1.0 : 1.0;
+    // Rows across the tube and their spacing: the denser side's lattice, or (equal mass) the whole
+    // number of rows nearest to the lighter side's spacing.
+    int rows = ny;
+    double dy = dx;
+    if (D == 2 && equal_mass) {
+      const double a = dx * std::pow(rho_dense / q_side.density, 1.0 / D);
+      rows = std::max(1, static_cast<int>(std::lround(Wd / a)));
+      dy = Wd / rows;
+    }
+    s.side_rows[static_cast<std::size_t>(side)] = rows;
+    // The column width that gives each particle its mass at density rho.
+    auto column_width = [&](double rho) {
+      if (!equal_mass) return dx;
+      return D == 2 ? m_equal / (rho * dy) : m_equal / rho;
+    };
+    auto mass_of = [&](double rho) { return equal_mass ? m_equal : rho * vol; };
+    auto add_column = [&](Kind kind, double xc, const ShockTubeState& q, long layer, double depth) {
+      const long lo_row = kind == Kind::Wall ? -static_cast<long>(y_ext * layers) : 0;
+      const long hi_row = kind == Kind::Wall ? rows + static_cast<long>(y_ext * layers) : rows;
+      for (long j = lo_row; j < hi_row; ++j)
+        points.push_back({kind, xc, D == 2 ? (static_cast<double>(j) + 0.5) * dy : 0.0, mass_of(q.density), depth, q, j, layer, side});
+    };
+    // Fluid columns from the diaphragm outwards while their centres lie inside the tube.
+    double edge = 0.0;
+    const double half = 0.5 * L;
+    for (long k = 0;; ++k) {
+      double xc;
+      if (width > 0.0) {  // the width at the column's own centre, by two fixed-point steps
+        double w = column_width(state_at(edge).density);
+        for (int it = 0; it < 2; ++it) w = column_width(state_at(edge + sign * 0.5 * w).density);
+        xc = edge + sign * 0.5 * w;
+        if (std::abs(xc) > half) break;
+        edge += sign * w;
+      } else {  // a uniform lattice from x = 0: centres (k + 1/2) w exactly
+        const double w = column_width(q_side.density);
+        xc = sign * (static_cast<double>(k) + 0.5) * w;
+        if (std::abs(xc) > half) break;
+        edge = sign * (static_cast<double>(k) + 1.0) * w;
+      }
+      add_column(Kind::Fluid, xc, width > 0.0 ? state_at(xc) : q_side, 0, 0.0);
+    }
+    // The end walls: `layers` more columns at the end state, continuing the last column's lattice.
+    const ShockTubeState q_end = width > 0.0 ? state_at(edge) : q_side;
+    const double w_end = column_width(q_end.density);
+    for (long k = 0; k < layers; ++k)
+      add_column(Kind::Wall, edge + sign * (static_cast<double>(k) + 0.5) * w_end, q_end, k, (static_cast<double>(k) + 0.5) * w_end);
+    const double x_far = edge + sign * layers * w_end;
+    if (side == 0) s.domain.lo[0] = x_far;
+    else s.domain.hi[0] = x_far;
   }
-  const auto order = [dx](const geometry::WallPoint<D>& w) {
-    return std::make_tuple(D == 2 ? std::lround(w.x[D - 1] / dx - 0.5) : 0L, std::lround(w.depth / dx - 0.5), w.face);
-  };
-  std::stable_sort(ends.begin(), ends.end(), [&](const auto& a, const auto& b) { return order(a) < order(b); });
-  for (const auto& w : ends)
-    place(Kind::Wall, w.x[0], D == 2 ? w.x[D - 1] : 0.0, w.face == 0 ? Ls : Rs, w.normal[0], w.depth);
+  // Fluid first, row by row in x (the lattice fill's order); then the end walls row by row, nearest
+  // layer first, the two ends alternately: the adaptive 1D run's errors move in their third digit
+  // with the summation order (measured).
+  std::stable_sort(points.begin(), points.end(), [](const Point& a, const Point& b) {
+    if (a.kind != b.kind) return a.kind == Kind::Fluid;
+    if (a.kind == Kind::Fluid) return std::tie(a.y, a.x) < std::tie(b.y, b.x);
+    return std::make_tuple(a.row, a.layer, a.face) < std::make_tuple(b.row, b.layer, b.face);
+  });
+  for (const auto& pt : points) {
+    std::array<double, D> pos{}, vel{}, normal{};
+    pos[0] = pt.x;
+    if constexpr (D == 2) pos[1] = pt.y;
+    vel[0] = pt.kind == Kind::Fluid ? pt.q.velocity : 0.0;
+    if (pt.kind == Kind::Wall) normal[0] = pt.face == 0 ? 1.0 : -1.0;  // out of the end wall, into the tube
+    s.particles.add(pt.kind, pos, vel, pt.mass, pt.q.density, normal, pt.depth);
+    s.energy.push_back(pt.q.pressure / (gm1 * pt.q.density));
+    s.h0.push_back(disc.smoothing_ratio * std::pow(pt.mass / pt.q.density, 1.0 / D));
+  }
   if (D == 2 && boundary == "virtual_repulsive") {
     // Niedoba 2012, §3.3, Fig 3.3: virtual particles on the lines y = -dx and y = W + dx, i.e. the wall
     // rectangle enlarged by dx/2 beyond the domain boundary (which lies dx/2 outside the outermost
@@ -140,6 +178,7 @@ ShockTubeScene<D> build_shock_tube_scene(const Config& config) {
         const ShockTubeState& q = x < 0.0 ? Ls : Rs;
         s.particles.add(Kind::Wall, pos, vel, q.density * vol, q.density, normal, 0.0);
         s.energy.push_back(q.pressure / (gm1 * q.density));
+        s.h0.push_back(disc.smoothing_ratio * dx);
       }
   }
   return s;
