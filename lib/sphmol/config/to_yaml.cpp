@@ -82,6 +82,10 @@ std::string to_yaml(const Config& c) {
     y << "  artificial_viscosity: {alpha: " << num(d.artificial_viscosity.alpha) << ", beta: "
       << num(d.artificial_viscosity.beta) << ", eta: " << num(d.artificial_viscosity.eta) << "}\n";
   if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
+  if (d.particle_shifting.enabled)
+    y << "  particle_shifting: {coefficient: " << num(d.particle_shifting.coefficient)
+      << ", velocity: " << num(d.particle_shifting.velocity)
+      << ", correction: " << (d.particle_shifting.correction ? "true" : "false") << "}\n";
   if (d.transport_velocity.enabled)
     y << "  transport_velocity: {background_pressure: " << num(d.transport_velocity.background_pressure)
       << ", step_factor: " << num(d.transport_velocity.step_factor)
