@@ -17,7 +17,7 @@ using namespace sphmol;
 
 namespace {
 
-using K = WendlandC2<2>;
+using K = WendlandC2Kernel<2>;
 
 // n x n fluid lattice in [0, 1)^2, periodic or open, optionally jittered; h = 2 dx as the Taylor-Green case.
 struct Lattice {

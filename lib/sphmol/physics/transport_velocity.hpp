@@ -1,14 +1,7 @@
 #pragma once
 // Transport-velocity formulation of Adami, Hu & Adams (2013), J. Comput. Phys. 241:292, written for the
 // method of lines. Particles move with the transport velocity v~ = v + du instead of v:
-//   dx_i/dt += du_i,   du_i = -tau p_b sum_j m_j (1/rho_i^2 + 1/rho_j^2) grad_i W_ij
-// which is their eq. 13, -(tau p_b / m_i) sum_j (V_i^2 + V_j^2) grad_i W_ij with V = m / rho, whenever the
-// masses are equal, but written like the momentum equation's pressure term (physics/pressure_gradient.hpp)
-// so that both have the same equilibrium when they are not: uniform summation density. Adami's volume
-// form is at rest only at uniform volumes; where masses differ (the Taylor-Green case puts its initial
-// pressure into the masses) the two then disagree once the flow has decayed, and the shift keeps moving
-// particles that the pressure pushes back: measured at Re 10, a velocity residual of 0.3 % of U that
-// decayed at 0.08 1/s, a hundred times slower than any viscous mode.
+//   dx_i/dt += du_i,   du_i = -(tau p_b / m_i) sum_j (V_i^2 + V_j^2) grad_i W_ij,   V = m / rho   (their eq. 13)
 // a background pressure p_b that acts on the particle positions only, never on the momentum, so it
 // keeps the particles evenly spread (no tensile clumping where the gauge pressure is negative, no
 // streamline-aligned lattice) without the spurious force a background pressure in the momentum adds.
@@ -43,14 +36,15 @@ class TransportVelocityShift final : public PairTermFor<D, TransportVelocityShif
   }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-    const double qi = 1.0 / (w.rho[i] * w.rho[i]);
+    const double Vi = m[i] / w.rho[i];
     double s[D] = {};
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
-      const double f = m[j] * (qi + 1.0 / (w.rho[j] * w.rho[j])) * r.F[k];
+      const double Vj = m[j] / w.rho[j];
+      const double f = (Vi * Vi + Vj * Vj) * r.F[k];
       for (int d = 0; d < D; ++d) s[d] += f * r.dx[d][k];
     }
-    const double c = -tau_ * pb_;
+    const double c = -tau_ * pb_ / m[i];
     for (int d = 0; d < D; ++d) {
       const double du = c * s[d];
       if (du_) (*du_)[d][i] = du;
