@@ -14,7 +14,8 @@
 // first-order Taylor correction of the shifted values of Lind et al. becomes, per unit time,
 //   dv_i/dt += (du_i . grad) v_i = sum_j V_j (v_j - v_i) (du_i . grad_i W_ij)
 // and the same for rho when the density is in the state (continuity); summation density needs none.
-// Neighbours that are wall particles enter with their volumes and velocities. Free surfaces (where
+// h is the scene's smoothing length (with a variable h, the initial one: the shift only needs its
+// scale). Neighbours that are wall particles enter with their volumes and velocities. Free surfaces (where
 // grad C does not vanish in a uniform arrangement) are not treated: the loader refuses them.
 #include "sphmol/rhs/pair_term.hpp"
 
