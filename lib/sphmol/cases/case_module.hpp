@@ -34,6 +34,9 @@ struct CaseModule {
   bool provides_energy = false;        // the scene sets an initial internal energy (discretization.energy)
   bool position_noise = false;         // the scene applies discretization.position_noise
   bool free_surface = false;           // the fluid has a free surface (no transport velocity there)
+  // Case::velocity_scale reads the config alone (not the built scene), so the loader can derive
+  // defaults from it before the scene exists: fluid.eos.sound_speed = 10 U, the shifting velocity.
+  bool velocity_scale_from_config = false;
 
   // Case-specific defaults of shared keys, applied before the shared sections are read. May be empty.
   std::function<void(Config&)> defaults;

@@ -30,7 +30,7 @@ struct CaseSettings {
 
 struct EosConfig {
   std::string type = "linear";  // "linear": p = c^2 rho (Morris, Vukčević et al. 2012, eq 20); "linear_relative": p = c^2 (rho - rho0)
-  double sound_speed = 0.0;     // c [m/s], required, > 0
+  double sound_speed = 0.0;     // c [m/s], > 0; when not given, 10 U of the case's velocity scale (loader)
   double background_pressure = 0.0;  // [Pa] added to every particle's pressure after the EOS, >= 0
   bool clamp_negative = false;       // "tait": p = max(p, 0) (free surfaces with summation density)
   // "tait": p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (Niedoba 2012, eq 2.75), gamma > 0, default 7.
@@ -79,6 +79,14 @@ struct TransportVelocityConfig {
   bool extra_stress = true;          // the A = rho v (v~ - v) term in the momentum equation
 };
 
+// Fickian particle shifting (Lind et al. 2012; physics/particle_shifting.hpp); absent = off.
+struct ParticleShiftingConfig {
+  bool enabled = false;      // true when the map is given, unless it says enabled: false
+  double coefficient = 4.0;  // A in du = -A h U grad C, > 0 (4: the delta+-SPH shift of Sun et al. 2017)
+  double velocity = 0.0;     // U [m/s], > 0; the loader sets the scene's velocity scale when not given
+  bool correction = true;    // Taylor correction of v (and of rho in the state) to the shifted positions
+};
+
 struct DiscretizationConfig {
   int particles_across = 0;         // fluid particles across the channel height (> 0); or spacing
   double spacing = 0.0;             // particle spacing dx [m]; exactly one of the two is given
@@ -118,6 +126,7 @@ struct DiscretizationConfig {
   ArtificialViscosityConfig artificial_viscosity;
   ArtificialConductivityConfig artificial_conductivity;
   TransportVelocityConfig transport_velocity;
+  ParticleShiftingConfig particle_shifting;
   bool energy = false;              // energy equation (Niedoba 2012, eq 2.66/2.65), e in the state
   std::string smoothing_length = "constant";  // constant | density (Niedoba 2012, eq 2.67) | ode (Niedoba 2012, eq 2.68)
 };

@@ -94,6 +94,38 @@ void check_kernel(const MapReader& r, const std::string& name) {
   }
 }
 
+// Defaults derived from the scene's velocity scale U (Case::velocity_scale), for the cases that know
+// it from the config alone: the artificial sound speed c = 10 U (Mach 0.1, density variations ~ Ma^2
+// = 1 %; Monaghan 1994) and the particle-shifting velocity. Without U, both must be given.
+void resolve_velocity_defaults(Config& c, const CaseModule& module, MapReader& fluid, MapReader& disc) {
+  const bool need_c = c.fluid.eos.type != "ideal_gas" && !(c.fluid.eos.sound_speed > 0.0);
+  auto& ps = c.discretization.particle_shifting;
+  const bool need_u = ps.enabled && !(ps.velocity > 0.0);
+  if (!need_c && !need_u) return;
+  double U = 0.0;
+  if (module.velocity_scale_from_config) {
+    if (c.dimension == 1) U = make_case<1>(c)->velocity_scale(c);
+    else if (c.dimension == 2) U = make_case<2>(c)->velocity_scale(c);
+    else U = make_case<3>(c)->velocity_scale(c);
+  }
+  const bool known = std::isfinite(U) && U > 0.0;
+  if (need_c) {
+    MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
+    if (!known)
+      eos.fail_missing("sound_speed", "artificial speed of sound c in m/s, > 0 (case '" + c.case_name +
+                                          "' gives no velocity scale to derive c = 10 U from)");
+    c.fluid.eos.sound_speed = 10.0 * U;
+    c.notices.push_back(eos.where("sound_speed") + ": not given: c = 10 U = " + number_text(c.fluid.eos.sound_speed) +
+                        " m/s from the scene's velocity scale U = " + number_text(U) + " m/s");
+  }
+  if (need_u) {
+    MapReader sh = disc.section("particle_shifting", {"enabled", "coefficient", "velocity", "correction"});
+    if (!known)
+      sh.fail_missing("velocity", "U in m/s, > 0 (case '" + c.case_name + "' gives no velocity scale)");
+    ps.velocity = U;
+  }
+}
+
 Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   Config c;
   c.source = origin.file();
@@ -164,9 +196,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     } else if (eos.has("gamma")) {
       eos.fail("gamma", "is used only with type 'tait' or 'ideal_gas' (got type '" + c.fluid.eos.type + "')");
     }
-    c.fluid.eos.sound_speed = eos.required(eos.real("sound_speed"), "sound_speed",
-                                           "artificial speed of sound c in m/s, > 0");
-    eos.check("sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
+    // Absent: 10 U from the case's velocity scale, once the case's sections are read (below).
+    if (const auto v = eos.real("sound_speed")) {
+      c.fluid.eos.sound_speed = *v;
+      eos.check("sound_speed", c.fluid.eos.sound_speed > 0, c.fluid.eos.sound_speed, "> 0 m/s");
+    }
     }
   }
   if (const auto f = fluid.reals("body_force")) {
@@ -185,7 +219,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
-                                "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity",
+                                "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting",
                                 "position_noise", "density_diffusion"});
   {
     auto& d = c.discretization;
@@ -316,6 +350,23 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         disc.fail("transport_velocity", "needs a confined liquid with a constant sound speed (no free surface, not "
                                         "ideal_gas); case '" + c.case_name + "' has " +
                                         (module.free_surface ? "a free surface" : "a gas"));
+    }
+    if (disc.has("particle_shifting")) {
+      MapReader sh = disc.section("particle_shifting", {"enabled", "coefficient", "velocity", "correction"});
+      auto& p = d.particle_shifting;
+      p.enabled = sh.boolean("enabled").value_or(true);
+      if (const auto v = sh.real("coefficient")) p.coefficient = *v;
+      sh.check("coefficient", p.coefficient > 0, p.coefficient, "> 0 (du = -A h U grad C)");
+      if (const auto v = sh.real("velocity")) {
+        p.velocity = *v;
+        sh.check("velocity", p.velocity > 0, p.velocity, "> 0 m/s; absent = the scene's velocity scale");
+      }
+      if (const auto v = sh.boolean("correction")) p.correction = *v;
+      // Grad C does not vanish at a free surface, so the shift would pull the surface particles inward.
+      if (p.enabled && module.free_surface)
+        disc.fail("particle_shifting", "needs a flow without a free surface; case '" + c.case_name + "' has one");
+      if (p.enabled && d.transport_velocity.enabled)
+        disc.fail("particle_shifting", "is an alternative to discretization.transport_velocity: give one of the two");
     }
     if (const auto v = disc.boolean("energy")) d.energy = *v;
     if (d.energy && !module.provides_energy)
@@ -457,6 +508,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
+  resolve_velocity_defaults(c, module, fluid, disc);
   // Probes (probes/probe_config.hpp) after the case: a force probe names one of its wall bodies.
   c.probes = read_probes(top, c, c.case_settings->wall_bodies());
   check_scene(c, readers, own.size);

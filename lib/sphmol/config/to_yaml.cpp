@@ -87,6 +87,10 @@ std::string to_yaml(const Config& c) {
   if (d.artificial_conductivity.enabled)
     y << "  artificial_conductivity: {alpha: " << num(d.artificial_conductivity.alpha) << "}\n";
   if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
+  if (d.particle_shifting.enabled)
+    y << "  particle_shifting: {coefficient: " << num(d.particle_shifting.coefficient)
+      << ", velocity: " << num(d.particle_shifting.velocity)
+      << ", correction: " << (d.particle_shifting.correction ? "true" : "false") << "}\n";
   if (d.transport_velocity.enabled)
     y << "  transport_velocity: {background_pressure: " << num(d.transport_velocity.background_pressure)
       << ", step_factor: " << num(d.transport_velocity.step_factor)

@@ -31,6 +31,8 @@
 #include "sphmol/physics/strain_rate.hpp"
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/physics/particle_shifting.hpp"
 #include "sphmol/physics/transport_velocity.hpp"
 #include "sphmol/physics/weakly_compressible_row.hpp"
 #include "sphmol/physics/xsph.hpp"
@@ -182,6 +184,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.transport_velocity", std::make_unique<TransportVelocityShift<D>>(
         tv.background_pressure > 0.0 ? tv.background_pressure : fluid.density * c * c, tv.step_factor * h / c, du));
     if (du) add("discretization.transport_velocity.extra_stress", std::make_unique<TransportVelocityStress<D>>(du));
+  }
+  if (const auto& ps = disc.particle_shifting; ps.enabled) {
+    if (!(ps.velocity > 0.0)) throw std::invalid_argument("discretization.particle_shifting.velocity: must be > 0");
+    add("discretization.particle_shifting", std::make_unique<ParticleShifting<D>>(
+        ps.coefficient, ps.velocity, h, kernel_info<D>(disc.kernel).W(spacing, h), ps.correction));
   }
   // Reads the complete drho/dt (Niedoba 2012, eq 2.68), so after every density sum.
   if (disc.smoothing_length == "ode") add("discretization.smoothing_length", std::make_unique<SmoothingLengthRate<D>>());

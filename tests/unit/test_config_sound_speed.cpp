@@ -1,0 +1,94 @@
+// The sound speed default: c = 10 U from the case's velocity scale when fluid.eos.sound_speed is not
+// given (config/loader.cpp), with a notice; an error at the key for cases that give no velocity scale;
+// an explicit value always wins. The same velocity scale is the default particle-shifting velocity.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "sphmol/config/config.hpp"
+#include "config_test_base.hpp"
+
+using namespace sphmol;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+
+std::string shipped(const std::string& name) {
+  std::ifstream in(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// `text` without its one line that contains `key`.
+std::string without_line(std::string text, const std::string& key) {
+  const auto at = text.find(key);
+  REQUIRE(at != std::string::npos);
+  const auto begin = text.rfind('\n', at) + 1, end = text.find('\n', at);
+  return text.erase(begin, end - begin + 1);
+}
+
+bool has_notice(const Config& c, const std::string& part) {
+  for (const auto& n : c.notices)
+    if (n.find(part) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("config: without sound_speed, c = 10 U from the case's velocity scale", "[config][sound_speed]") {
+  // The shipped file gives no sound speed: it relies on this default.
+  const std::string tg = shipped("taylor_green.yaml");
+  REQUIRE(tg.find("sound_speed:") == std::string::npos);
+  SECTION("taylor_green: U = geometry.velocity_amplitude") {
+    const Config c = load_config_string(tg, {}, "tg.yaml");
+    CHECK(c.fluid.eos.sound_speed == Approx(10.0));
+    CHECK(has_notice(c, "fluid.eos.sound_speed: not given: c = 10 U = 10 m/s"));
+    const Config slow = load_config_string(tg, {"geometry.velocity_amplitude=0.1"}, "tg.yaml");
+    CHECK(slow.fluid.eos.sound_speed == Approx(1.0));
+    // Written back explicitly, so the config.yaml of a run reproduces it.
+    CHECK_THAT(to_yaml(slow), Contains("sound_speed: 1"));
+  }
+  SECTION("couette: U = the wall speed") {
+    const Config c = load_config_string(config_test::with("    sound_speed: 0.01", "    type: linear"), {}, "case.yaml");
+    CHECK(c.fluid.eos.sound_speed == Approx(1.25e-4));
+  }
+  SECTION("an explicit sound speed is kept") {
+    const Config c = load_config_string(tg, {"geometry.velocity_amplitude=0.1", "fluid.eos.sound_speed=10"}, "tg.yaml");
+    CHECK(c.fluid.eos.sound_speed == 10.0);
+    CHECK_FALSE(has_notice(c, "sound_speed"));
+  }
+  SECTION("a case without a velocity scale from its config still needs it") {
+    const std::string cavity = without_line(shipped("cavity.yaml"), "sound_speed:");
+    CHECK_THROWS_WITH(load_config_string(cavity, {}, "cavity.yaml"),
+                      StartsWith("cavity.yaml:") && Contains("fluid.eos.sound_speed: required value missing") &&
+                          Contains("gives no velocity scale"));
+  }
+}
+
+TEST_CASE("config: particle shifting takes the scene's velocity scale unless given", "[config][particle_shifting]") {
+  const std::string tg = without_line(shipped("taylor_green.yaml"), "transport_velocity:");
+  const Config c = load_config_string(tg, {"discretization.particle_shifting={coefficient: 2}",
+                                           "geometry.velocity_amplitude=0.5"}, "tg.yaml");
+  REQUIRE(c.discretization.particle_shifting.enabled);
+  CHECK(c.discretization.particle_shifting.coefficient == 2.0);
+  CHECK(c.discretization.particle_shifting.velocity == Approx(0.5));
+  const Config given = load_config_string(tg, {"discretization.particle_shifting={velocity: 3}"}, "tg.yaml");
+  CHECK(given.discretization.particle_shifting.velocity == 3.0);
+  CHECK(given.discretization.particle_shifting.coefficient == 4.0);
+  // Round trip through to_yaml.
+  const Config back = load_config_string(to_yaml(c), {}, "back.yaml");
+  CHECK(back.discretization.particle_shifting.velocity == c.discretization.particle_shifting.velocity);
+  CHECK(back.discretization.particle_shifting.coefficient == 2.0);
+  CHECK(back.discretization.particle_shifting.correction);
+  // Errors name the key.
+  CHECK_THROWS_WITH(load_config_string(tg, {"discretization.particle_shifting={coefficient: 0}"}, "tg.yaml"),
+                    Contains("discretization.particle_shifting.coefficient: 0 is out of range"));
+  CHECK_THROWS_WITH(load_config_string(shipped("taylor_green.yaml"), {"discretization.particle_shifting={}"}, "tg.yaml"),
+                    Contains("is an alternative to discretization.transport_velocity"));
+  CHECK_THROWS_WITH(load_config_string(shipped("hydrostatic.yaml"), {"discretization.particle_shifting={velocity: 1}"}, "h.yaml"),
+                    Contains("needs a flow without a free surface"));
+}
