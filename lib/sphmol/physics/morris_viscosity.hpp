@@ -4,7 +4,8 @@
 // with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. No dimension enters:
 // the kernel's second moment, int r^2 W'(r)/r n n dV = -I, is the same in 1, 2 and 3D, so the sum is
 // nu laplacian(v) in each. Fluid-wall velocity
-// differences are scaled by the wall model's factor (rhs/workspace.hpp, vfac).
+// differences are scaled by the wall model's factor (rhs/workspace.hpp, vfac), and a wall particle's
+// velocity is the wall model's no-slip velocity where it sets one (v_viscous).
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
@@ -17,6 +18,8 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D>> {
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
+    const double* vj[D];  // the wall model's no-slip wall velocities, if it sets them (rhs/workspace.hpp)
+    for (int d = 0; d < D; ++d) vj[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
     double a[D] = {};
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
@@ -26,7 +29,7 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D>> {
         r2 += dx * dx;
       }
       const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * r.F[k] * r2 / (r2 + eta2);
-      for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - w.v[d][j]);
+      for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - vj[d][j]);
     }
     for (int d = 0; d < D; ++d) w.dvdt[d][i] += a[d];
   }
