@@ -65,7 +65,8 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
   // It is exact for a linear field, also where the support is cut by a wall. The Shepard average
   // (a alone, zeroth order) is biased there by about h du/dy: at the table point 0.6 spacings below
   // the lid (y = 0.9766 L, 40 across, h = 2 dx) it read 0.785 U against Ghia's 0.841 U, and the three
-  // table points within one h of the lid made up 94 % of u_rms^2 (Re 100, t = 20 s). Falls back to Shepard where the fit is singular (too few neighbours).
+  // table points within one h of the lid made up 96 % of u_rms^2 (Re 100, t = 20 s). Falls back to
+  // Shepard where the fit is singular (too few neighbours).
   auto interpolate = [&](double px, double py, int c) {
     double A[3][3] = {}, b[3] = {};
     for (std::size_t i = 0; i < n; ++i) {
