@@ -29,6 +29,7 @@ nlohmann::json final_checkpoint(const fs::path& dir) {
 
 nlohmann::json run(const fs::path& dir, const std::string& file, const std::vector<std::string>& sets) {
   fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());  // for the log beside the run's folder
   std::vector<std::string> args{"--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/" + file, "--threads", "1",
                                 "-q", "--output", dir.string(), "--set", "output.plots=false"};
   for (const auto& s : sets) args.insert(args.end(), {"--set", s});
