@@ -30,7 +30,8 @@ def main() -> int:
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--set", action="append", default=[], help="further sph-mol overrides key=value")
     ap.add_argument("--reuse", action="store_true",
-                    help="take OUTPUT/Re<N>/summary.json of a completed earlier run instead of running it again")
+                    help="take OUTPUT/Re<N>/summary.json of an earlier run (completed, or interrupted: its last "
+                         "output counts) instead of running it again")
     a = ap.parse_args()
     if a.across <= 0 or a.t_end <= 0 or a.threads <= 0:
         ap.error("--across, --t-end and --threads must be positive")
@@ -54,7 +55,7 @@ def main() -> int:
         if a.reuse and os.path.isfile(summary):
             with open(summary) as f:
                 s = json.load(f)
-            if s.get("status") != "completed":
+            if s.get("status") not in ("completed", "interrupted") or not s.get("errors"):
                 s = None
         if s is None:
             print("running Re", re, file=sys.stderr)
@@ -62,21 +63,22 @@ def main() -> int:
             with open(summary) as f:
                 s = json.load(f)
         e = s["final_errors"]
-        rows.append((re, e["u_rms"], e["u_max"], e["v_rms"], e["v_max"], bool(e["steady"]), s.get("wall_seconds", 0.0)))
+        rows.append((re, e["u_rms"], e["u_max"], e["v_rms"], e["v_max"], bool(e["steady"]), s["errors"][-1]["t"],
+                     s.get("wall_seconds", 0.0)))
     csv = os.path.join(a.output, "cavity_re_sweep.csv")
     with open(csv, "w") as f:
-        f.write("Re [-],u_rms/U [-],u_max/U [-],v_rms/U [-],v_max/U [-],steady,wall [s]\n")
+        f.write("Re [-],u_rms/U [-],u_max/U [-],v_rms/U [-],v_max/U [-],steady,t [s],wall [s]\n")
         for r in rows:
-            f.write(f"{r[0]},{r[1]:.6g},{r[2]:.6g},{r[3]:.6g},{r[4]:.6g},{int(r[5])},{r[6]:.1f}\n")
+            f.write(f"{r[0]},{r[1]:.6g},{r[2]:.6g},{r[3]:.6g},{r[4]:.6g},{int(r[5])},{r[6]:.6g},{r[7]:.1f}\n")
     gnuplot = shutil.which("gnuplot")
     if not gnuplot:
         print("gnuplot not found: wrote", csv, "only", file=sys.stderr)
         return 0
     script = (
-        "set terminal pngcairo size 800,560 font ',11'\n"
+        "set terminal pngcairo size 800,560 font ',11' noenhanced\n"
         "set output 'cavity_re_sweep.png'\n"
         "set datafile separator ','\n"
-        f"set title 'lid-driven cavity, {a.across} x {a.across}, t = {a.t_end:g} s: error against Ghia et al. (1982)'\n"
+        f"set title 'lid-driven cavity, {a.across} x {a.across}: centre-line error against Ghia et al. (1982) at the last output'\n"
         "set xlabel 'Re'\nset ylabel 'centre-line error / U'\nset logscale x\nset xrange [70:1400]\n"
         "set key top left\nset grid\n"
         "plot 'cavity_re_sweep.csv' every ::1 using 1:2 with linespoints pt 7 lw 2 title 'u_rms (x = L/2)', \\\n"
