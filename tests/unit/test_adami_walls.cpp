@@ -12,6 +12,8 @@
 #include "sphmol/physics/morris_viscosity.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 
+#include "config_test_base.hpp"
+#include "sphmol/config/config.hpp"
 #include "workspace_pairs.hpp"
 
 using namespace sphmol;
@@ -166,4 +168,22 @@ TEST_CASE("extrapolated wall pressure carries the wall's acceleration (Adami et 
   }
   const auto [pb, eb] = run(false, t_up);
   for (std::size_t k = 0; k < pb.size(); ++k) CHECK(pb[k] == Approx(p0).epsilon(1e-14));
+}
+
+TEST_CASE("config: wall_model adami brings the extrapolated wall pressure and refuses what would replace it", "[walls][config]") {
+  const std::string cavity = "case: cavity\nfluid:\n  density: 1\n  kinematic_viscosity: 0.01\n  eos:\n    sound_speed: 10\n"
+                             "geometry:\n  box: [1, 1]\n  wall_velocity: 1\ndiscretization:\n  particles_across: 20\n"
+                             "time:\n  t_end: 1\n";
+  const auto c = load_config_string(cavity, {"discretization.wall_model=adami"});
+  CHECK(c.discretization.wall_model == "adami");
+  CHECK(c.discretization.wall_pressure == "extrapolated");
+  CHECK(load_config_string(cavity, {"discretization.wall_model=adami", "discretization.wall_pressure=extrapolated"})
+            .discretization.wall_pressure == "extrapolated");
+  using Catch::Matchers::Contains;
+  CHECK_THAT(config_test::error_of(cavity, {"discretization.wall_model=adami", "discretization.wall_pressure=rest"}),
+             Contains("discretization.wall_pressure: wall_model: adami extrapolates the wall pressure"));
+  CHECK_THAT(config_test::error_of(cavity, {"discretization.wall_model=adami", "discretization.viscosity=strain_rate"}),
+             Contains("discretization.wall_model: adami's no-slip wall velocity"));
+  CHECK_THAT(config_test::error_of(cavity, {"discretization.wall_model=adami", "discretization.boundary=ghost"}),
+             Contains("discretization.wall_model: adami extrapolates through wall particles"));
 }
