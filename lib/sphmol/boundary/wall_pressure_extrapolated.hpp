@@ -1,14 +1,19 @@
 #pragma once
 // Wall-particle pressure extrapolated from the fluid (Adami, Hu & Adams 2012, J. Comput. Phys.
-// 231:7057, eq. 27), for a wall at rest or moving uniformly:
-//   p_w = (sum_f p_f W_wf + g . sum_f rho_f (x_w - x_f) W_wf) / sum_f W_wf
-// and the wall density from the inverse EOS. A wall held at rest density has p = 0 (Tait, gauge EOS),
+// 231:7057, eq. 27):
+//   p_w = (sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf) / sum_f W_wf
+// and the wall density from the inverse EOS (their eq. 28). a_w is the acceleration of the wall's
+// material at the particle (zero for walls at rest, translating, or a belt such as a cavity lid;
+// wall_acceleration below), needed for oscillating and rotating walls. Time derivatives are central
+// differences over +-1e-6 s: error ~1e-12 omega^2 relative, far below the pressure's round-off.
+// A wall held at rest density has p = 0 (Tait, gauge EOS),
 // which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (Vukčević
 // 2012, eq 117) turns it into a force drawing the first fluid rows into the wall (the walls' p = 0
 // pushes less than the fluid they stand for would; tests/unit/test_boundaries_3d.cpp). Wall rows list only fluid
 // neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass.
 #include <array>
 #include <functional>
+#include <optional>
 
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/rhs/term.hpp"
@@ -27,11 +32,14 @@ class WallPressureExtrapolated final : public Term<D> {
     const double f = body_force_ramp_factor(w.t, ramp_);
     for (std::size_t i = w.n_fluid; i < w.n; ++i) {
       if (w.particles->kind[i] != Kind::Wall || P.offset[i] == P.offset[i + 1]) continue;
+      double ge[D];  // g - a_w
+      for (int d = 0; d < D; ++d) ge[d] = f * g_[d];
+      if (const auto a = wall_acceleration(*w.particles, i, w.t)) for (int d = 0; d < D; ++d) ge[d] -= (*a)[d];
       double sw = 0.0, sp = 0.0;
       for (std::uint32_t k = P.offset[i]; k < P.offset[i + 1]; ++k) {
         const std::uint32_t j = P.j[k];
         double gr = 0.0;  // dx = x_w - x_f
-        for (int d = 0; d < D; ++d) gr += f * g_[d] * w.dx[d][k];
+        for (int d = 0; d < D; ++d) gr += ge[d] * w.dx[d][k];
         sw += w.W[k];
         sp += (w.p[j] + w.rho[j] * gr) * w.W[k];
       }
@@ -39,6 +47,35 @@ class WallPressureExtrapolated final : public Term<D> {
       w.p[i] = sp / sw;
       w.rho[i] = rho_of_p_(w.p[i]);
     }
+  }
+
+ // The acceleration of the wall's material at wall particle i at time t; none for a wall that does
+  // not accelerate. A moving body: the central difference of the particle's velocity. A body held in
+  // place (core/wall_motion.hpp, stationary) carries a velocity field v(x, t) through fixed particles:
+  // the material acceleration dv/dt + (v . grad) v, whose convective part for a rotation at rate
+  // omega is omega k x v (the centripetal -omega^2 r of a spinning cylinder); zero for a belt.
+  static std::optional<std::array<double, D>> wall_acceleration(const Particles<D>& pt, std::size_t i, double t) {
+    if (i >= pt.motion.size() || pt.motion[i] < 0) return std::nullopt;
+    const auto& m = pt.motions[pt.motion[i]];
+    if (m.kind == WallMotionKind::translation) return std::nullopt;  // constant velocity
+    constexpr double dt = 1e-6;
+    const auto up = pt.wall_state(i, t + dt), down = pt.wall_state(i, t - dt);
+    std::array<double, D> a{};
+    for (int d = 0; d < D; ++d) a[d] = (up.v[d] - down.v[d]) / (2.0 * dt);
+    if (m.stationary && m.rotates()) {
+      const auto now = pt.wall_state(i, t);
+      const double rate = m.frame(t).rate;
+      if constexpr (D == 2) {
+        a[0] -= rate * now.v[1];
+        a[1] += rate * now.v[0];
+      } else if constexpr (D == 3) {
+        const auto& k = m.axis;
+        a[0] += rate * (k[1] * now.v[2] - k[2] * now.v[1]);
+        a[1] += rate * (k[2] * now.v[0] - k[0] * now.v[2]);
+        a[2] += rate * (k[0] * now.v[1] - k[1] * now.v[0]);
+      }
+    }
+    return a;
   }
 
  private:

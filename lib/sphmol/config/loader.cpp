@@ -261,11 +261,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = disc.string("boundary"))
       d.boundary = disc.choice("boundary", *v, {"wall_particles", "ghost", "virtual_repulsive"});
-    if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris"});
+    if (const auto v = disc.string("wall_model")) d.wall_model = disc.choice("wall_model", *v, {"prescribed", "morris", "adami"});
     // Combinations that mean nothing are errors, not silently ignored keys.
     if (d.boundary != "wall_particles") {
-      if (disc.has("wall_model") && d.wall_model == "morris")
-        disc.fail("wall_model", "morris extrapolates through wall particles; boundary '" + d.boundary +
+      if (disc.has("wall_model") && d.wall_model != "prescribed")
+        disc.fail("wall_model", d.wall_model + " extrapolates through wall particles; boundary '" + d.boundary +
                                     "' has none (ghost velocities already carry the wall condition)");
       d.wall_model = "prescribed";
     }
@@ -277,6 +277,16 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.wall_pressure = disc.choice("wall_pressure", *v, {"rest", "extrapolated", "dynamic"});
       if (d.wall_pressure != "rest" && d.boundary != "wall_particles")
         disc.fail("wall_pressure", "applies to boundary: wall_particles only");
+    }
+    // Adami et al. (2012) is one boundary: no-slip wall velocities and the extrapolated wall pressure.
+    if (d.wall_model == "adami") {
+      if (disc.has("wall_pressure") && d.wall_pressure != "extrapolated")
+        disc.fail("wall_pressure", "wall_model: adami extrapolates the wall pressure (Adami et al. 2012); '" +
+                                       d.wall_pressure + "' would replace it (use wall_model: morris or prescribed)");
+      d.wall_pressure = "extrapolated";
+      if (d.viscosity == "strain_rate")
+        disc.fail("wall_model", "adami's no-slip wall velocity enters viscosity: morris (or none); viscosity: strain_rate "
+                                "takes the wall velocity per pair from wall_model: morris or prescribed");
     }
     if (disc.has("repulsive") && d.boundary != "virtual_repulsive")
       disc.fail("repulsive", "parameters of Niedoba 2012, eq 2.76 apply to boundary: virtual_repulsive only");

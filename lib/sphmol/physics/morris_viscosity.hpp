@@ -4,7 +4,8 @@
 // with eta^2 = 0.01 h^2 guarding r -> 0. Here x_ij . grad_i W_ij = F_ij r_ij^2. No dimension enters
 // in the continuum: the kernel's second moment, int r^2 W'(r)/r n n dV = -I, is the same in 1, 2 and
 // 3D, so the sum is nu laplacian(v) in each. Fluid-wall velocity differences are scaled by the wall
-// model's factor (rhs/workspace.hpp, vfac).
+// model's factor (rhs/workspace.hpp, vfac), and a wall particle's velocity is the wall model's
+// no-slip velocity where it sets one (v_viscous).
 //
 // On particles the second moment is a sum, and with eta it is not -I: on a cubic lattice with the cubic
 // spline at h = 1.3 dx it is 0.985 I in 3D (0.9998 I in 2D), a viscosity 1.5 % low at every resolution
@@ -13,9 +14,10 @@
 //   M_i = -(1/D) sum_j (m_j / rho_j) F_ij r_ij^2 * r_ij^2 / (r_ij^2 + eta^2),
 // which makes the sum exact for quadratic fields wherever the support is full and isotropic: the
 // scalar normalisation of the corrective smoothed particle method's second derivative (Chen, Beraun &
-// Carney 1999; compared with other corrections by Korzilius et al. 2017) applied to Morris' form. M_i uses the geometric volumes of wall particles too (the
-// extrapolation factor is a velocity model, not quadrature). Rows of unequal M_i exchange unequal
-// forces, so momentum is conserved only to the moment's variation (exactly on a lattice).
+// Carney 1999; compared with other corrections by Korzilius et al. 2017) applied to Morris' form.
+// M_i uses the geometric volumes of wall particles too (the extrapolation factor is a velocity model,
+// not quadrature). Rows of unequal M_i exchange unequal forces, so momentum is conserved only to the
+// moment's variation (exactly on a lattice).
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
@@ -28,6 +30,8 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
+    const double* vj[D];  // the wall model's no-slip wall velocities, if it sets them (rhs/workspace.hpp)
+    for (int d = 0; d < D; ++d) vj[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
     double a[D] = {};
     double moment = 0.0;  // sum_j V_j F_ij r^4 / (r^2 + eta^2), negative
     for (std::uint32_t k = 0; k < r.n; ++k) {
@@ -39,7 +43,7 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
       }
       const double g = r.F[k] * r2 / (r2 + eta2);
       const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g;
-      for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - w.v[d][j]);
+      for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - vj[d][j]);
       if constexpr (Normalised) moment += m[j] / w.rho[j] * g * r2;
     }
     double scale = 1.0;

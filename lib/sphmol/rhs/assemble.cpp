@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "sphmol/boundary/adami_wall_velocity.hpp"
 #include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/free_slip_walls.hpp"
@@ -134,11 +135,18 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   // The Morris extrapolation reads each wall particle's normal and depth; ghost images and repulsive
   // rows have none (the loader refuses the combination, and so must the assembly: a ghost image's
   // index lies past the particles' wall arrays).
-  if (disc.wall_model == "morris" && disc.boundary != "wall_particles")
-    throw std::invalid_argument("discretization.wall_model: morris needs boundary: wall_particles (got '" + disc.boundary +
+  if (disc.wall_model != "prescribed" && disc.boundary != "wall_particles")
+    throw std::invalid_argument("discretization.wall_model: " + disc.wall_model + " needs boundary: wall_particles (got '" + disc.boundary +
                                 "'); use wall_model: prescribed");
   if (disc.wall_model == "morris") add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
-  else if (disc.wall_model != "prescribed")
+  else if (disc.wall_model == "adami") {
+    // Adami et al. (2012): no-slip velocities for the viscous term, and the extrapolated pressure.
+    if (disc.wall_pressure != "extrapolated")
+      throw std::invalid_argument("discretization.wall_model: adami needs wall_pressure: extrapolated (got '" + disc.wall_pressure + "')");
+    if (disc.viscosity == "strain_rate")
+      throw std::invalid_argument("discretization.wall_model: adami needs viscosity: morris or none");
+    add("discretization.wall_model", std::make_unique<AdamiWallVelocity<D>>());
+  } else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   // Free-slip wall bodies: after the wall model, which sets every wall pair's factor.
   if (disc.viscosity != "none" &&

@@ -44,6 +44,10 @@ struct Workspace {
   // for a fluid-wall pair it is set by the wall model (1 for prescribed wall velocities, Morris'
   // extrapolation factor beta otherwise), so terms need no branch on particle kind or configuration.
   std::vector<double> vfac;
+  // Velocities the viscous terms read for the other particle of a pair, for a wall model that gives
+  // wall particles a velocity of their own for the viscous term (boundary/adami_wall_velocity.hpp);
+  // empty: the velocities v.
+  std::array<std::vector<double>, D> v_viscous;
   std::array<std::vector<double>, D * D> strain;  // strain-rate tensor eps_ab, row-major
 
   // Outputs for fluid particles (point into the caller's ydot).

@@ -1,5 +1,6 @@
 #include "sphmol/time/leapfrog_base.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -27,16 +28,40 @@ void LeapfrogBase::initialize(OdeSystem& sys, double t0, double* y) {
 }
 
 double LeapfrogBase::step_toward(double tout) {
+  const bool fixed = opt_.fixed_step.has_value();
+  double dt = fixed ? *opt_.fixed_step : cfl_step_;
   if (t_ >= tout) return t_;
-  double dt = opt_.fixed_step ? *opt_.fixed_step : cfl_step_;
+  // On a fixed step's grid point that stands for tout (below): already there.
+  if (fixed && std::abs(tout - t_) <= 1e-9 * dt) return tout;
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw BlowUp(t_, -1, "step-size collapse: the CFL step is " + std::to_string(dt));
-  // Land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
-  const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
-  if (last) dt = tout - t_;
   if (stats_.steps >= opt_.max_steps)
     throw std::runtime_error(name() + ": time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " +
                              std::to_string(t_));
+  double t_new = 0.0;
+  if (fixed) {
+    // Steps on the grid t_k = k dt, each computed from k (not accumulated), so that where the run
+    // stops for output cannot change the step sequence: accumulated t_ + dt drifts by round-off, and
+    // the step shortened to land on an output time then differs in its last bits from run to run
+    // with other output lists, which a chaotic flow (cavity at Re 1000) amplifies to O(1) within
+    // seconds. An output time within 1e-9 dt of a grid point is that grid point; one between grid
+    // points splits the step there (the only case where output times change the solution).
+    const double k_near = std::nearbyint(t_ / dt);
+    const double k = std::abs(t_ - k_near * dt) <= 1e-9 * dt ? k_near : std::floor(t_ / dt);
+    const double t_grid = (k + 1.0) * dt;
+    const bool lands = std::abs(t_grid - tout) <= 1e-9 * dt;
+    t_new = (lands || t_grid < tout) ? t_grid : tout;
+    dt = t_new - t_;
+    step(dt);
+    t_ = t_new;
+    ++stats_.steps;
+    stats_.last_step = dt;
+    after_step(t_, y_, dt);
+    return lands ? tout : t_;
+  }
+  // CFL step: land exactly on the output time; absorb a remainder below 1e-9 dt into this step.
+  const bool last = t_ + dt * (1.0 + 1e-9) >= tout;
+  if (last) dt = tout - t_;
   step(dt);
   t_ = last ? tout : t_ + dt;
   ++stats_.steps;
@@ -46,13 +71,14 @@ double LeapfrogBase::step_toward(double tout) {
 }
 
 void LeapfrogBase::advance(double tout) {
-  while (t_ < tout) step_toward(tout);
+  for (double t = t_; t < tout;) t = step_toward(tout);
 }
 
 nlohmann::json LeapfrogBase::save_state() const {
   // Hex of the raw doubles: exact, and NaN/inf survive (JSON numbers would not).
   nlohmann::json j{{"f", encode_doubles(f_)}, {"cfl_step", encode_doubles({cfl_step_})}, {"steps", stats_.steps},
-                   {"last_step", encode_doubles({stats_.last_step})}};
+                   {"last_step", encode_doubles({stats_.last_step})},
+                   {"t", encode_doubles({t_})}};  // the grid time, which may differ from the run's t in the last bit
   save_extra(j);
   return j;
 }
@@ -69,6 +95,14 @@ void LeapfrogBase::restore_state(const nlohmann::json& s) {
   cfl_step_ = h[0];
   stats_.steps = s.at("steps").get<long>();
   stats_.last_step = decode_doubles(s.at("last_step").get<std::string>()).at(0);
+  // The grid time it stopped at stands for the checkpoint's time (initialize set t_ to it): one that
+  // does not is not this run's.
+  if (s.contains("t")) {
+    const double tg = decode_doubles(s.at("t").get<std::string>()).at(0);
+    if (!std::isfinite(tg) || std::abs(tg - t_) > 1e-9 * std::max(1.0, std::abs(t_)))
+      throw std::runtime_error(name() + ": checkpoint step time " + std::to_string(tg) + " does not match its time " + std::to_string(t_));
+    t_ = tg;
+  }
   restore_extra(s);
 }
 

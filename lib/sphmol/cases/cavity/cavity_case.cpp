@@ -60,16 +60,45 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
     return r;
   }
 
-  // Shepard interpolation of velocity component c at (px, py).
-  auto shepard = [&](double px, double py, int c) {
-    double num = 0.0, den = 0.0;
+  // Velocity component c at (px, py) by linear moving least squares (Lancaster & Salkauskas 1981; in
+  // SPH, Dilts 1999): u ~ a + b . (x - p) fitted with weights V_i W(|x_i - p|), and a is the value.
+  // It is exact for a linear field, also where the support is cut by a wall. The Shepard average
+  // (a alone, zeroth order) is biased there by about h du/dy: at the table point 0.6 spacings below
+  // the lid (y = 0.9766 L, 40 across, h = 2 dx) it read 0.785 U against Ghia's 0.841 U, and the three
+  // table points within one h of the lid made up 96 % of u_rms^2 (Re 100, t = 20 s). Falls back to
+  // Shepard where the fit is singular (too few neighbours).
+  auto interpolate = [&](double px, double py, int c) {
+    double A[3][3] = {}, b[3] = {};
     for (std::size_t i = 0; i < n; ++i) {
-      const double r2 = std::hypot(y[lay.position(0) + i] - px, y[lay.position(1) + i] - py);
-      const double w = K.W(r2, h) * m[i] / rho[i];
-      num += w * y[lay.velocity(c) + i];
-      den += w;
+      const double ex = y[lay.position(0) + i] - px, ey = y[lay.position(1) + i] - py;
+      const double w = K.W(std::hypot(ex, ey), h) * m[i] / rho[i];
+      if (w == 0.0) continue;
+      const double q[3] = {1.0, ex, ey};
+      for (int a = 0; a < 3; ++a) {
+        b[a] += w * q[a] * y[lay.velocity(c) + i];
+        for (int e = 0; e < 3; ++e) A[a][e] += w * q[a] * q[e];
+      }
     }
-    return den > 0.0 ? num / den : 0.0;
+    if (A[0][0] <= 0.0) return 0.0;
+    // Cramer's rule for the first unknown, on the system scaled by h so the entries are O(1).
+    const double s = 1.0 / h;
+    const double M[3][3] = {{A[0][0], A[0][1] * s, A[0][2] * s},
+                            {A[1][0] * s, A[1][1] * s * s, A[1][2] * s * s},
+                            {A[2][0] * s, A[2][1] * s * s, A[2][2] * s * s}};
+    const double r[3] = {b[0], b[1] * s, b[2] * s};
+    const auto det3 = [](const double (&X)[3][3]) {
+      return X[0][0] * (X[1][1] * X[2][2] - X[1][2] * X[2][1]) - X[0][1] * (X[1][0] * X[2][2] - X[1][2] * X[2][0]) +
+             X[0][2] * (X[1][0] * X[2][1] - X[1][1] * X[2][0]);
+    };
+    const double det = det3(M);
+    if (!(std::abs(det) > 1e-10 * std::pow(A[0][0], 3))) return b[0] / A[0][0];
+    double M0[3][3];
+    for (int a = 0; a < 3; ++a) {
+      M0[a][0] = r[a];
+      M0[a][1] = M[a][1];
+      M0[a][2] = M[a][2];
+    }
+    return det3(M0) / det;
   };
   // One file per centre line, so that every column is numeric.
   std::ostringstream csv_u, csv_v;
@@ -81,7 +110,7 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
   for (std::size_t k = 0; k < ghia_->y.size(); ++k) {
     const double yy = ghia_->y[k];
     if (yy <= 0.0 || yy >= 1.0) continue;
-    const double u = shepard(0.5 * L_, yy * L_, 0) / U_;
+    const double u = interpolate(0.5 * L_, yy * L_, 0) / U_;
     line.push_back(u);
     const double e = u - ghia_->u[k];
     su += e * e;
@@ -92,7 +121,7 @@ nlohmann::json CavityCase::measure(const SphSystem<2>& sys, const double* y, dou
   for (std::size_t k = 0; k < ghia_->x.size(); ++k) {
     const double xx = ghia_->x[k];
     if (xx <= 0.0 || xx >= 1.0) continue;
-    const double v = shepard(xx * L_, 0.5 * L_, 1) / U_;
+    const double v = interpolate(xx * L_, 0.5 * L_, 1) / U_;
     line.push_back(v);
     const double e = v - ghia_->v[k];
     sv += e * e;
@@ -139,7 +168,7 @@ void CavityCase::annotate(nlohmann::json& summary) const {
   summary["Re"] = Re_;
   summary["lid_velocity"] = U_;
   summary["compared"] = ghia_.has_value();
-  summary["interpolation"] = "Shepard (kernel-weighted, fluid particles)";
+  summary["interpolation"] = "linear moving least squares (kernel-weighted, fluid particles)";
   summary["steadiness"] =
       "per convective time L/U between the last two outputs: relative kinetic-energy change (ke_rate) and RMS "
       "change of the centre-line velocities / U (centreline_rate); steady if both < 5e-3";
@@ -147,7 +176,7 @@ void CavityCase::annotate(nlohmann::json& summary) const {
   if (ghia_) {
     std::ostringstream r;
     r << " vs Ghia, Ghia & Shin (1982) Tables I and II at Re = " << Re_
-      << "; SPH velocities Shepard-interpolated to the table points, output time t";
+      << "; SPH velocities interpolated to the table points by linear moving least squares, output time t";
     const std::string ref = r.str();
     summary["csv_files"]["centreline_u_t<t>.csv"] = "u/U on the vertical centre line x = L/2" + ref;
     summary["csv_files"]["centreline_v_t<t>.csv"] = "v/U on the horizontal centre line y = L/2" + ref;

@@ -4,7 +4,8 @@
 // tables have that Re (else the run reports "no reference" and no errors). At output times:
 //   u_rms, u_max = RMS / max over the table points of (u_sph(0.5, y) - u_ghia) / U, and v likewise on
 //   y = 0.5; the table's end points on the walls (prescribed values, not results) are left out.
-// SPH values at a point are Shepard-interpolated: sum_j V_j u_j W / sum_j V_j W over fluid particles.
+// SPH values at a point are interpolated by linear moving least squares over the fluid particles
+// (weights V_j W; exact for a linear field, also next to a wall).
 // Steadiness, per output, as changes per convective time L/U since the previous output (so that it does
 // not depend on the output spacing):
 //   ke_rate = |KE(t_k) - KE(t_{k-1})| / KE(t_k) / ((t_k - t_{k-1}) U / L),
