@@ -239,4 +239,11 @@ probes:
   const auto corrected = run_scene("slip-corrected", y);
   CHECK(corrected.code == 2);
   CHECK_THAT(corrected.err, Catch::Matchers::Contains("probes[0].body: a force probe needs discretization.laplacian_correction: none"));
+  // Nor does it know the Adami wall velocities.
+  y = yaml;
+  y.replace(y.find("SLIP"), 4, "no_slip");
+  y.replace(y.find("  density: summation"), 20, "  density: summation\n  wall_model: adami");
+  const auto adami = run_scene("slip-adami", y);
+  CHECK(adami.code == 2);
+  CHECK_THAT(adami.err, Catch::Matchers::Contains("a force probe needs discretization.wall_model: morris or prescribed (not adami)"));
 }

@@ -167,6 +167,7 @@ std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const
       else if (d.viscosity == "strain_rate") why = "discretization.viscosity: morris or none (not strain_rate)";
       else if (d.transport_velocity.enabled) why = "no discretization.transport_velocity";
       else if (d.smoothing_length != "constant") why = "discretization.smoothing_length: constant";
+      else if (d.wall_model == "adami") why = "discretization.wall_model: morris or prescribed (not adami)";
       else if (d.laplacian_correction != "none") why = "discretization.laplacian_correction: none (not " + d.laplacian_correction + ")";
       if (!why.empty()) r.fail("body", "a force probe needs " + why + ": it sums the pair forces of wall particles");
       p.where = r.where("body");
