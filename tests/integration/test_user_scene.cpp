@@ -204,11 +204,14 @@ output:
 probes:
   - {name: drag, type: force, body: plate}
 )yaml";
-  auto with = [&](const std::string& slip) {
+  // The scene with the plate's slip and an extra discretization line.
+  auto variant = [&](const std::string& slip, const std::string& discretization = "") {
     std::string y = yaml;
     y.replace(y.find("SLIP"), 4, slip);
-    return run_scene("slip-" + slip, y, "probe_drag.csv");
+    y.replace(y.find("  density: summation\n"), 21, "  density: summation\n" + discretization);
+    return y;
   };
+  auto with = [&](const std::string& slip) { return run_scene("slip-" + slip, variant(slip), "probe_drag.csv"); };
   // The force probe's last row: t, Fx, Fy.
   auto drag = [](const std::string& csv) {
     std::istringstream in(csv.substr(csv.rfind('\n', csv.size() - 2) + 1));
@@ -233,17 +236,11 @@ probes:
   INFO(no.kept);
   CHECK(drag(no.kept) < -1e-4);
   // The probe does not normalise its pair sums as the corrected Laplacian does: refused.
-  std::string y = yaml;
-  y.replace(y.find("SLIP"), 4, "no_slip");
-  y.replace(y.find("  density: summation"), 20, "  density: summation\n  laplacian_correction: moment");
-  const auto corrected = run_scene("slip-corrected", y);
+  const auto corrected = run_scene("slip-corrected", variant("no_slip", "  laplacian_correction: moment\n"));
   CHECK(corrected.code == 2);
   CHECK_THAT(corrected.err, Catch::Matchers::Contains("probes[0].body: a force probe needs discretization.laplacian_correction: none"));
   // Nor does it know the Adami wall velocities.
-  y = yaml;
-  y.replace(y.find("SLIP"), 4, "no_slip");
-  y.replace(y.find("  density: summation"), 20, "  density: summation\n  wall_model: adami");
-  const auto adami = run_scene("slip-adami", y);
+  const auto adami = run_scene("slip-adami", variant("no_slip", "  wall_model: adami\n"));
   CHECK(adami.code == 2);
   CHECK_THAT(adami.err, Catch::Matchers::Contains("a force probe needs discretization.wall_model: morris or prescribed (not adami)"));
 }

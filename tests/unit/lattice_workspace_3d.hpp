@@ -46,21 +46,8 @@ struct LatticeWorkspace3 {
     dom.lo = {0.0, 0.0, -wall_layers * dx};
     dom.hi = {1.0, 1.0, 1.0};
     dom.periodic = {periodic[0], periodic[1], periodic[2] && wall_layers == 0};
-    w.n = P.size();
-    w.n_fluid = P.n_fluid;
-    w.particles = &P;
-    w.domain = &dom;
-    w.h = h;
+    load_workspace(w, P, dom, h);
     w.W0 = sphmol::CubicSpline<3>::W(0.0, h);
-    for (int d = 0; d < 3; ++d) {
-      w.x[d] = P.x[d];
-      w.v[d] = P.v[d];
-    }
-    w.rho = P.rho;
-    w.p.assign(w.n, 0.0);
-    w.c.assign(w.n, 0.0);
-    w.e.assign(w.n, 0.0);
-    w.hs.assign(w.n, h);
     for (auto& s : w.strain) s.assign(w.n, 0.0);
     clear_rates();
   }

@@ -40,24 +40,13 @@ struct WallFixture {
     dom.lo = {0.0, -layers * dx};
     dom.hi = {1.0, 1.0 + 4.0 * h};
     dom.periodic = {true, false};
-    w.n = P.size();
-    w.n_fluid = P.n_fluid;
-    w.particles = &P;
-    w.domain = &dom;
-    w.h = h;
+    load_workspace(w, P, dom, h);
     for (int d = 0; d < 2; ++d) {
-      w.x[d] = P.x[d];
-      w.v[d] = P.v[d];
       dxdt[d].assign(P.n_fluid, 0.0);
       dvdt[d].assign(P.n_fluid, 0.0);
       w.dxdt[d] = dxdt[d].data();
       w.dvdt[d] = dvdt[d].data();
     }
-    w.rho = P.rho;
-    w.p.assign(w.n, 0.0);
-    w.c.assign(w.n, 0.0);
-    w.e.assign(w.n, 0.0);
-    w.hs.assign(w.n, h);
   }
   void pairs() { build_workspace_pairs<2, WendlandC2Kernel<2>>(w, P, dom, 2.0 * h * 1.1, verlet); }
   // The Shepard-weighted fluid average of field f at wall particle i, summed here independently of the term.

@@ -40,21 +40,8 @@ struct Lattice {
     dom.lo = {0.0, 0.0};
     dom.hi = {1.0, 1.0};
     dom.periodic = {periodic, periodic};
-    w.n = P.size();
-    w.n_fluid = P.n_fluid;
-    w.particles = &P;
-    w.domain = &dom;
-    w.h = h;
+    load_workspace(w, P, dom, h);
     w.W0 = K::W(0.0, h);
-    for (int d = 0; d < 2; ++d) {
-      w.x[d] = P.x[d];
-      w.v[d] = P.v[d];
-    }
-    w.rho = P.rho;
-    w.p.assign(w.n, 0.0);
-    w.c.assign(w.n, 0.0);
-    w.e.assign(w.n, 0.0);
-    w.hs.assign(w.n, h);
     build_workspace_pairs<2, K>(w, P, dom, K::support * h * 1.2, verlet);
     SummationDensity<2>().apply(w);
     clear();

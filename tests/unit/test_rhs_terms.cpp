@@ -47,25 +47,14 @@ struct Fixture {
     dom.lo = {0.0, -wall_layers * dx};
     dom.hi = {1.0, 1.0};
     dom.periodic = {periodic, periodic && wall_layers == 0};
-    w.n = P.size();
-    w.n_fluid = P.n_fluid;
-    w.particles = &P;
-    w.domain = &dom;
-    w.h = h;
+    load_workspace(w, P, dom, h);
     w.W0 = CubicSpline<2>::W(0.0, h);
     for (int d = 0; d < 2; ++d) {
-      w.x[d] = P.x[d];
-      w.v[d] = P.v[d];
       dxdt[d].assign(P.n_fluid, 0.0);
       dvdt[d].assign(P.n_fluid, 0.0);
       w.dxdt[d] = dxdt[d].data();
       w.dvdt[d] = dvdt[d].data();
     }
-    w.rho = P.rho;
-    w.p.assign(w.n, 0.0);
-    w.c.assign(w.n, 0.0);
-    w.e.assign(w.n, 0.0);
-    w.hs.assign(w.n, h);
     for (auto& s : w.strain) s.assign(w.n, 0.0);
   }
   void pairs() {

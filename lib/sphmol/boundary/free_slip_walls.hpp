@@ -5,7 +5,6 @@
 // pairs is the usual free-slip condition for wall particles (the velocity seen behind a flat wall
 // equals the fluid particle's own, so the normal derivative of the tangential velocity vanishes).
 // Runs after the wall model, which sets the factor of every wall pair first.
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,9 +31,7 @@ class FreeSlipWalls final : public PairTermFor<D, FreeSlipWalls<D>> {
       for (std::uint32_t k = 0; k < r.n; ++k) r.vfac[k] *= f;
       return;
     }
-    // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.
-    std::uint32_t k = static_cast<std::uint32_t>(std::lower_bound(r.j, r.j + r.n, static_cast<std::uint32_t>(w.n_fluid)) - r.j);
-    for (; k < r.n; ++k) r.vfac[k] *= factor(body[r.j[k]]);
+    for (std::uint32_t k = r.first_wall(w.n_fluid); k < r.n; ++k) r.vfac[k] *= factor(body[r.j[k]]);
   }
 
  private:

@@ -30,9 +30,7 @@ class MorrisWallVelocity final : public PairTermFor<D, MorrisWallVelocity<D>> {
     std::array<const double*, D> normal;  // turned with a rotating wall (Workspace::wall_normal)
     for (int d = 0; d < D; ++d) normal[d] = w.wall_normal[d] ? w.wall_normal[d] : pt.wall_normal[d].data();
     const bool wall_row = i >= w.n_fluid;
-    // Rows are sorted and walls follow the fluid, so a fluid row's wall pairs form its tail.
-    std::uint32_t k = 0;
-    if (!wall_row) k = static_cast<std::uint32_t>(std::lower_bound(r.j, r.j + r.n, static_cast<std::uint32_t>(w.n_fluid)) - r.j);
+    std::uint32_t k = wall_row ? 0 : r.first_wall(w.n_fluid);
     for (; k < r.n; ++k) {
       const std::size_t j = r.j[k];
       const std::size_t b = wall_row ? i : j;  // the wall particle of the pair

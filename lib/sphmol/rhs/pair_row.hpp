@@ -3,6 +3,7 @@
 // W_ij, F_ij = (dW/dr)/r and the wall model's velocity factor, k = 0 .. n-1. The row is either a slice
 // of the stored active-pair list (Workspace::pairs) or a per-thread buffer filled just before the
 // row's terms run (rhs/fused_pair_pass.hpp); a term cannot tell the two apart.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -19,6 +20,12 @@ struct PairRow {
   const double* W = nullptr;
   const double* F = nullptr;
   double* vfac = nullptr;  // writable: the wall model sets it before the viscous terms read it
+
+  // The first wall pair of a fluid row: rows are sorted and walls follow the fluid, so a fluid row's
+  // wall pairs form its tail [first_wall(n_fluid), n).
+  std::uint32_t first_wall(std::size_t n_fluid) const {
+    return static_cast<std::uint32_t>(std::lower_bound(j, j + n, static_cast<std::uint32_t>(n_fluid)) - j);
+  }
 };
 
 // Row i of the stored active-pair list.
