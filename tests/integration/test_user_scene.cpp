@@ -244,3 +244,60 @@ probes:
   CHECK(adami.code == 2);
   CHECK_THAT(adami.err, Catch::Matchers::Contains("a force probe needs discretization.wall_model: morris or prescribed (not adami)"));
 }
+
+TEST_CASE("user scene: a tank shaken at resonance is not called blown up for the energy its walls put in",
+          "[integration][scene][motion][health]") {
+  // A 2D tank, 0.6 m long with water 0.12 m deep, oscillating along x at its first sloshing mode
+  // (f = 0.85 Hz, amplitude 0.01 m). The tank does pressure work every period: at 1.26 s the fluid's
+  // kinetic plus elastic energy (0.39 J/m) passed the old bound, initial energy + gravity work +
+  // M V^2/2 with V the tank's top speed (allowed 0.389 J/m), and the run ended as blown up. In the
+  // tank's frame the walls do no work and the frame's acceleration is a body force, which the check
+  // now accounts for.
+  const std::string yaml = R"yaml(case: scene
+dimension: 2
+fluid:
+  density: 1000.0
+  kinematic_viscosity: 0.0
+  eos: {type: tait, sound_speed: 21.7, gamma: 7.0}
+  body_force: [0.0, -9.81]
+scene:
+  domain: {lo: [-0.06, -0.04], hi: [0.66, 0.34], boundaries: [open, open]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [0.6, 0.12]}
+      pressure: hydrostatic
+  walls:
+    - name: tank
+      shape:
+        type: difference
+        shapes:
+          - {type: box, lo: [-0.04, -0.04], hi: [0.64, 0.34]}
+          - {type: box, lo: [0, 0], hi: [0.6, 0.3]}
+      layers: 3
+      motion: {type: oscillation, amplitude: [0.01, 0.0], frequency: 0.85}
+discretization:
+  spacing: 0.01
+  kernel: wendland_c2
+  smoothing_ratio: 1.414
+  density: continuity
+  density_diffusion: 0.1
+  viscosity: none
+  artificial_viscosity: {alpha: 0.02, beta: 0.0, eta: 0.1}
+  wall_pressure: extrapolated
+  wall_model: prescribed
+  skin: 0.3
+time:
+  t_end: 2.0
+  integrator: leapfrog
+  cfl: {acoustic: 0.2, force: 0.25}
+output:
+  times: [2.0]
+  profiles: false
+  plots: false
+)yaml";
+  const auto r = run_scene("sloshing", yaml);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.summary["status"] == "completed");
+  // The wave grows: the fluid moves faster than the tank's top speed 2 pi f A = 0.053 m/s.
+  CHECK(r.summary["final_errors"]["max_speed"].get<double>() > 0.1);
+}

@@ -92,6 +92,7 @@ class SphSystem final : public OdeSystem {
   // pairs (every term of the pass adds nothing for W = F = 0, PairTerm::zero_beyond_support).
   std::vector<bool> pair_passes_keep_skin_pairs() const;
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
+  bool has_generator() const { return generator_ != nullptr; }
   // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.
   std::size_t base_particles() const { return n_base_; }
   // Positions and velocities of all particles, generated ones included, at the most recent evaluation.

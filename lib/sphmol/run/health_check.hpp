@@ -7,6 +7,7 @@
 // BlowUp naming the time, the particle and the cause; keeps a copy of the last state that passed,
 // for the run to write.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -47,21 +48,27 @@ class HealthCheck {
 
   const std::vector<double>& last_good_state() const { return last_good_; }
   double last_good_time() const { return last_good_t_; }
-  // Work done on the fluid by the body force since t0 (trapezoidal rule over the accepted steps).
+  // Work done on the fluid by the body force since t0 (trapezoidal rule over the accepted steps); in
+  // the walls' moving frame, with the frame's inertial force.
   double body_force_work() const { return work_; }
 
  private:
+  // The power of the body force on the fluid, sum_i m_i g(t) . v_i; in the walls' frame
+  // (HealthLimits::WallFrame) that of g(t) - A(t) on the velocities relative to the frame.
   double body_force_power(const double* y, double t) const {
     const auto& L = sys_.layout();
     const auto& m = sys_.particles().mass;
+    const auto& fr = limits_.frame;
     const double f = body_force_ramp_factor(t, limits_.g_ramp);
     double p = 0.0;
     for (int d = 0; d < D; ++d) {
-      if (limits_.g[d] == 0.0) continue;
+      const double g = f * limits_.g[d] - (fr.on ? fr.A(d, t) : 0.0);
+      if (g == 0.0) continue;
+      const double V = fr.on ? fr.V(d, t) : 0.0;
       const double* v = y + L.velocity(d);
       double s = 0.0;  // serial: a sum must not depend on the thread count
-      for (std::size_t i = 0; i < L.n; ++i) s += m[i] * v[i];
-      p += f * limits_.g[d] * s;
+      for (std::size_t i = 0; i < L.n; ++i) s += m[i] * (v[i] - V);
+      p += g * s;
     }
     return p;
   }
@@ -72,12 +79,20 @@ class HealthCheck {
     const auto& m = sys_.particles().mass;
     const long n = static_cast<long>(L.n);
     // Serial: the kinetic energy (and so the message) must not depend on the thread count.
+    // The kinetic energy relative to the walls' frame when there is one (health_limits.hpp).
+    std::array<double, D> V{};
+    if (limits_.frame.on)
+      for (int d = 0; d < D; ++d) V[d] = limits_.frame.V(d, t);
     double vmax2 = 0.0, ke = 0.0;
     for (long i = 0; i < n; ++i) {
-      double v2 = 0.0;
-      for (int d = 0; d < D; ++d) v2 += y[L.velocity(d) + i] * y[L.velocity(d) + i];
+      double v2 = 0.0, w2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double v = y[L.velocity(d) + i], w = v - V[d];
+        v2 += v * v;
+        w2 += w * w;
+      }
       vmax2 = std::max(vmax2, v2);
-      ke += 0.5 * m[i] * v2;
+      ke += 0.5 * m[i] * w2;
     }
     if (vmax2 > limits_.max_speed * limits_.max_speed)
       for (long i = 0; i < n; ++i) {
@@ -122,8 +137,11 @@ class HealthCheck {
       if (ke + el > allowed)
         throw BlowUp(t, -1, "kinetic energy " + shown(ke) + unit + " plus elastic energy " + shown(el) + unit +
                                 " exceeds what the scene puts in (" + shown(budget) + unit +
-                                ": initial kinetic, elastic and internal energy, body-force work, moving-wall bound "
-                                "M V^2/2; allowed " + shown(allowed) + unit + ")");
+                                (limits_.frame.on ? ": in the walls' moving frame, initial kinetic, elastic and internal energy and the work of "
+                                                      "the body force and the frame's inertial force"
+                                                    : ": initial kinetic, elastic and internal energy, body-force work, "
+                                                      "moving-wall bound M V^2/2") +
+                                "; allowed " + shown(allowed) + unit + ")");
     }
   }
 

@@ -14,7 +14,12 @@
 //    kinetic and elastic energy, the internal energy (energy equation), the work of the body force
 //    (accumulated per step from sum_i m_i g(t) . v_i) and moving walls, whose largest speed V (of any
 //    wall particle at any time, SphSystem::max_wall_speed) bounds the fluid's by the maximum principle
-//    (KE <= M V^2 / 2). KE + E_el may exceed this budget by
+//    (KE <= M V^2 / 2). That bound does not hold for walls that keep doing pressure work (a tank
+//    shaken at resonance). So when every wall particle follows one rigid translation (a translating
+//    or oscillating tank, all walls of the scene), the energies are measured in the walls' frame
+//    instead: there the walls are at rest and the frame's acceleration A(t) acts as a body force
+//    -A(t), whose work is accumulated with the body force's (Landau & Lifshitz 1976, §39: the
+//    inertial force -m A in a translating frame). KE + E_el may exceed this budget by
 //    kEnergySlack of it plus kEnergyFloor M U^2 / 2 (the time discretisation of the work integral).
 // Ideal-gas scenes (shock tubes) skip the speed and density bounds: supersonic flow and 4:1
 // compression are the physics there.
@@ -23,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "sphmol/config/config.hpp"
@@ -49,6 +55,21 @@ struct HealthLimits {
   std::array<double, 3> g{};    // body force per unit mass, for its work
   double g_ramp = 0.0;
 
+  // The walls' common translating frame, when every wall particle follows one translation or
+  // oscillation (see the file comment): its velocity V(t) and acceleration A(t) (WallMotion's rules).
+  struct WallFrame {
+    bool on = false;
+    bool oscillation = false;      // else a constant translation
+    std::array<double, 3> velocity{}, amplitude{};
+    double omega = 0.0, phase = 0.0;  // oscillation: 2 pi f [rad/s], phase [rad]
+    double V(int d, double t) const {
+      return oscillation ? amplitude[d] * omega * std::cos(omega * t + phase) : velocity[d];
+    }
+    double A(int d, double t) const {
+      return oscillation ? -amplitude[d] * omega * omega * std::sin(omega * t + phase) : 0.0;
+    }
+  } frame;
+
   // u(rho) = int_rho0^rho p / r^2 dr of the weakly compressible EOS [J/kg], 0 without one. The
   // constant part of p (p = c^2 rho, a background pressure) does no net work and is left out.
   struct Elastic {
@@ -72,19 +93,59 @@ struct HealthLimits {
   } elastic;
 };
 
+// The frame of the walls when all of them (and at least one) follow one moving rigid translation:
+// the same translation or oscillation (not `stationary`, which leaves the walls in place), and no
+// generated (ghost) walls, which stay where the domain is.
+template <int D>
+HealthLimits::WallFrame common_wall_frame(const SphSystem<D>& sys) {
+  HealthLimits::WallFrame f;
+  const auto& P = sys.particles();
+  if (sys.has_generator() || P.size() == P.n_fluid) return f;
+  const WallMotion<D>* first = nullptr;
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+    const std::int32_t k = P.motion[i];
+    if (k < 0) return f;
+    const WallMotion<D>& m = P.motions[static_cast<std::size_t>(k)];
+    const bool translates = m.kind == WallMotionKind::translation || m.kind == WallMotionKind::oscillation;
+    if (!translates || m.stationary) return f;
+    if (first == nullptr) {
+      first = &m;
+      continue;
+    }
+    if (&m == first) continue;
+    bool same = m.kind == first->kind && m.frequency == first->frequency && m.phase == first->phase;
+    for (int d = 0; d < D; ++d) same = same && m.velocity[d] == first->velocity[d] && m.amplitude[d] == first->amplitude[d];
+    if (!same) return f;
+  }
+  f.on = true;
+  f.oscillation = first->kind == WallMotionKind::oscillation;
+  for (int d = 0; d < D; ++d) {
+    f.velocity[d] = first->velocity[d];
+    f.amplitude[d] = first->amplitude[d];
+  }
+  f.omega = 2.0 * std::numbers::pi * first->frequency;
+  f.phase = first->phase;
+  return f;
+}
+
 // `velocity_scale` and `free_surface` come from the case (Case::velocity_scale, Case::free_surface).
 template <int D>
 HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const SphSystem<D>& sys,
                            const double* y0) {
   HealthLimits lim;
+  lim.frame = common_wall_frame(sys);
   const auto& L = sys.layout();
   const auto& m = sys.particles().mass;
   double mass = 0.0, ke0 = 0.0, e0 = 0.0, v0max = 0.0;
   for (std::size_t i = 0; i < L.n; ++i) {
-    double v2 = 0.0;
-    for (int d = 0; d < D; ++d) v2 += y0[L.velocity(d) + i] * y0[L.velocity(d) + i];
+    double v2 = 0.0, w2 = 0.0;  // w: relative to the walls' frame when there is one
+    for (int d = 0; d < D; ++d) {
+      const double v = y0[L.velocity(d) + i], w = v - (lim.frame.on ? lim.frame.V(d, 0.0) : 0.0);
+      v2 += v * v;
+      w2 += w * w;
+    }
     mass += m[i];
-    ke0 += 0.5 * m[i] * v2;
+    ke0 += 0.5 * m[i] * w2;
     v0max = std::max(v0max, std::sqrt(v2));
     if (L.has_energy) e0 += m[i] * y0[L.energy() + i];
   }
@@ -126,7 +187,8 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   const auto& rho = sys.density();  // of the initial evaluation
   for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el0 += m[i] * lim.elastic.per_mass(rho[i]);
   lim.energy = true;
-  lim.energy_budget = ke0 + el0 + e0 + 0.5 * mass * V_wall * V_wall;
+  // In the walls' frame the walls do no work; otherwise their maximum-principle bound.
+  lim.energy_budget = ke0 + el0 + e0 + (lim.frame.on ? 0.0 : 0.5 * mass * V_wall * V_wall);
   // Zero-budget scenes: measured against the scene's velocity scale, or the sound speed without one.
   const double scale = U > 0.0 ? U : (ideal_gas ? 0.0 : 0.01 * c.fluid.eos.sound_speed);
   lim.energy_floor = HealthLimits::kEnergyFloor * 0.5 * mass * scale * scale;
