@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <sstream>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -223,4 +225,95 @@ TEST_CASE("geometry: triangle mesh (CGAL) read from an ASCII STL, triangles in a
   for (const Vec<3> p : {Vec<3>{1, 1, 1}, Vec<3>{0.3, 1.9, 1.2}, Vec<3>{2.5, 1, 1}, Vec<3>{-1, -1, -1}})
     CHECK(mesh.signed_distance(p) == Approx(box.signed_distance(p)).margin(1e-12));
   std::filesystem::remove(path);
+}
+
+namespace {
+// The cube [0, 1]^3: 8 vertices and its 12 triangles, outward.
+const double kCubeV[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+const int kCubeT[12][3] = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                           {2, 3, 7}, {2, 7, 6}, {1, 2, 6}, {1, 6, 5}, {0, 4, 7}, {0, 7, 3}};
+
+void check_unit_cube(const TriangleMeshShape& mesh) {
+  CHECK(mesh.triangles() == 12u);
+  const BoxShape<3> box({0, 0, 0}, {1, 1, 1});
+  for (const Vec<3> p : {Vec<3>{0.5, 0.5, 0.5}, Vec<3>{0.1, 0.5, 0.7}, Vec<3>{1.5, 0.5, 0.5}})
+    CHECK(mesh.signed_distance(p) == Approx(box.signed_distance(p)).margin(1e-6));  // STL stores floats
+}
+}  // namespace
+
+TEST_CASE("geometry: triangle meshes from binary STL, PLY and OBJ bytes", "[geometry][cgal]") {
+  {
+    std::string stl(80, ' ');  // header
+    const auto put = [&](const void* p, std::size_t n) { stl.append(static_cast<const char*>(p), n); };
+    const std::uint32_t n = 12;
+    put(&n, 4);
+    for (const auto& t : kCubeT) {
+      const float normal[3] = {0, 0, 0};
+      put(normal, sizeof normal);
+      for (int k : t) {
+        const float v[3] = {static_cast<float>(kCubeV[k][0]), static_cast<float>(kCubeV[k][1]), static_cast<float>(kCubeV[k][2])};
+        put(v, sizeof v);
+      }
+      const std::uint16_t attr = 0;
+      put(&attr, 2);
+    }
+    check_unit_cube(TriangleMeshShape(stl, "stl", "cube.stl"));
+  }
+  {
+    std::ostringstream ply;
+    ply << "ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n"
+           "element face 12\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& v : kCubeV) ply << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+    for (const auto& t : kCubeT) ply << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    check_unit_cube(TriangleMeshShape(ply.str(), "ply", "cube.ply"));
+  }
+  {
+    std::ostringstream obj;
+    for (const auto& v : kCubeV) obj << "v " << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+    for (const auto& t : kCubeT) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    check_unit_cube(TriangleMeshShape(obj.str(), "obj", "cube.obj"));
+  }
+  CHECK_THROWS_WITH(TriangleMeshShape("solid x\n", "vtk", "x.vtk"), Catch::Contains("unknown format 'vtk'"));
+  CHECK_THROWS_WITH(TriangleMeshShape("not a mesh at all", "off", "x.off"), Catch::Contains("cannot be read"));
+}
+
+TEST_CASE("geometry: a mesh file whose header asks for more than it holds, or too large a file, is refused", "[geometry][cgal][security]") {
+  // CGAL's OFF reader allocates the declared vertex and face counts before reading them: this 34-byte
+  // file asked for 2e9 of each (std::bad_alloc, or gigabytes of memory for smaller counts).
+  CHECK_THROWS_WITH(TriangleMeshShape("OFF\n2000000000 2000000000 0\n0 0 0\n", "off", "big.off"),
+                    Catch::Contains("the header declares 2000000000 vertices and 2000000000 faces, more than a file of 34 bytes can hold"));
+  CHECK_THROWS_WITH(TriangleMeshShape("OFF\n# a comment\n300000000 0 0\n", "off", "big.off"), Catch::Contains("300000000 vertices"));
+  CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nelement vertex 1000000\nproperty float x\nend_header\n", "ply", "big.ply"),
+                    Catch::Contains("declares 1000000 elements"));
+  // A sparse file just above the limit: refused by its size, before anything is read.
+  const auto path = std::filesystem::temp_directory_path() / ("sphmol-geom-" + std::to_string(::getpid()) + "-huge.stl");
+  {
+    std::ofstream f(path);
+  }
+  std::filesystem::resize_file(path, kMaxMeshBytes + 1);
+  CHECK_THROWS_WITH(TriangleMeshShape(path.string()), Catch::Contains("larger than"));
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("geometry: mesh inputs that broke CGAL's readers and repair are refused or cleaned", "[geometry][cgal][security]") {
+  // Found by fuzz/mesh_fuzz.cpp. A PLY property before any element: CGAL 5.5 read past an empty list.
+  CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n", "ply", "p.ply"),
+                    Catch::Contains("a property before any element"));
+  CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nelement vertex 3\n", "ply", "p.ply"), Catch::Contains("no end_header"));
+  // A face that is not plane: CGAL's triangulation of its projection failed.
+  std::ostringstream bent;
+  bent << "OFF\n8 7 0\n";
+  for (const auto& v : kCubeV) bent << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+  bent << "6 0 1 2 6 7 4\n";
+  for (int t = 0; t < 6; ++t) bent << "3 " << kCubeT[t][0] << ' ' << kCubeT[t][1] << ' ' << kCubeT[t][2] << '\n';
+  CHECK_THROWS_WITH(TriangleMeshShape(bent.str(), "off", "bent.off"), Catch::Contains("face 0 has 6 vertices that do not lie in one plane"));
+  // The cube with a triangle of no area (three points on an edge) and one that repeats a vertex: both
+  // dropped (the inside test needs proper triangles; the repair needs distinct vertices).
+  std::ostringstream extra;
+  extra << "OFF\n9 14 0\n";
+  for (const auto& v : kCubeV) extra << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+  extra << "0.5 0 0\n";
+  for (const auto& t : kCubeT) extra << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  extra << "3 0 8 1\n3 2 6 2\n";
+  check_unit_cube(TriangleMeshShape(extra.str(), "off", "extra.off"));
 }

@@ -4,15 +4,28 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
+
+#include "sphmol/io/input_file.hpp"
 
 namespace sphmol::geometry {
 
@@ -27,13 +40,189 @@ struct TriangleMeshShape::Impl {
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K, CGAL::Default, Tree>> side;
 };
 
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  if (!e.empty()) e.erase(0, 1);
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// The element counts an OFF or PLY header declares, checked against the bytes there are: every OFF
+// vertex takes at least 6 bytes ("0 0 0\n") and every face 8 ("3 0 1 2\n") in ASCII, more in binary;
+// every PLY element takes at least one byte. Only the header is parsed; CGAL reads the rest.
+void check_declared_counts(const std::string& bytes, const std::string& format, const std::string& name) {
+  const auto too_many = [&](const std::string& what) {
+    throw std::invalid_argument("mesh " + name + ": the header declares " + what + " than a file of " +
+                                std::to_string(bytes.size()) + " bytes can hold");
+  };
+  std::istringstream in(bytes.substr(0, std::min<std::size_t>(bytes.size(), 1 << 16)));
+  if (format == "off") {
+    std::string word;
+    std::vector<double> counts;
+    while (counts.size() < 2 && in >> word) {
+      if (word[0] == '#') {
+        std::getline(in, word);
+        continue;
+      }
+      if (word.find("OFF") != std::string::npos) continue;  // OFF, COFF, NOFF, 4OFF, ... and BINARY
+      if (word == "BINARY") continue;
+      char* end = nullptr;
+      const double v = std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0') return;  // not a header CGAL reads: it reports that
+      counts.push_back(v);
+    }
+    if (counts.size() == 2 && !(6.0 * counts[0] + 8.0 * counts[1] <= static_cast<double>(bytes.size())))
+      too_many(std::to_string(static_cast<long long>(counts[0])) + " vertices and " +
+               std::to_string(static_cast<long long>(counts[1])) + " faces, more");
+  } else if (format == "ply") {
+    // Also the header's structure, which CGAL 5.5's PLY reader trusts: a property line before any
+    // element line makes it read past an empty list.
+    const auto malformed = [&](const std::string& why) {
+      throw std::invalid_argument("mesh " + name + ": not a PLY header (" + why + ")");
+    };
+    std::string line;
+    double total = 0.0;
+    bool element = false, ended = false;
+    for (int k = 0; std::getline(in, line); ++k) {
+      std::istringstream l(line);
+      std::string key;
+      l >> key;
+      if (k == 0 && key != "ply") malformed("the first line is not 'ply'");
+      if (key == "end_header") {
+        ended = true;
+        break;
+      }
+      if (key == "property" && !element) malformed("a property before any element");
+      if (key == "element") {
+        std::string what;
+        double n = -1.0;
+        if (!(l >> what >> n) || !(n >= 0.0)) malformed("an element line without a count");
+        element = true;
+        total += n;
+      }
+    }
+    if (!ended) malformed("no end_header within the first 64 KiB");
+    if (!(total <= static_cast<double>(bytes.size()))) too_many(std::to_string(static_cast<long long>(total)) + " elements, more");
+  }
+}
+
+// A face with a nonzero area whose vertices all lie in the plane of its Newell normal (Sutherland,
+// Sproull & Schumacker 1974), to 1e-9 of its size.
+bool plane_face(const std::vector<K::Point_3>& points, const std::vector<std::size_t>& face) {
+  double n[3] = {0, 0, 0}, c[3] = {0, 0, 0}, size = 0.0;
+  for (std::size_t a = 0; a < face.size(); ++a) {
+    const auto& p = points[face[a]];
+    const auto& q = points[face[(a + 1) % face.size()]];
+    n[0] += (p.y() - q.y()) * (p.z() + q.z());
+    n[1] += (p.z() - q.z()) * (p.x() + q.x());
+    n[2] += (p.x() - q.x()) * (p.y() + q.y());
+    c[0] += p.x() / face.size();
+    c[1] += p.y() / face.size();
+    c[2] += p.z() / face.size();
+  }
+  for (const std::size_t v : face) {
+    const auto& p = points[v];
+    size = std::max({size, std::abs(p.x() - c[0]), std::abs(p.y() - c[1]), std::abs(p.z() - c[2])});
+  }
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 1e-12 * size * size) || !std::isfinite(len)) return false;
+  for (const std::size_t v : face) {
+    const auto& p = points[v];
+    const double off = ((p.x() - c[0]) * n[0] + (p.y() - c[1]) * n[1] + (p.z() - c[2]) * n[2]) / len;
+    if (!(std::abs(off) <= 1e-9 * size)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 TriangleMeshShape::TriangleMeshShape(const std::string& path) : impl_(std::make_unique<Impl>()) {
   if (!std::filesystem::is_regular_file(path)) throw std::invalid_argument("mesh " + path + ": no such file");
+  std::string bytes;
+  try {
+    bytes = read_input_file(path, kMaxMeshBytes, "mesh file");
+  } catch (const InputFileError& e) {
+    throw std::invalid_argument(std::string("mesh ") + e.what());
+  }
+  build(bytes, lower_extension(path), path);
+}
+
+TriangleMeshShape::TriangleMeshShape(const std::string& bytes, const std::string& format, const std::string& name)
+    : impl_(std::make_unique<Impl>()) {
+  build(bytes, format, name);
+}
+
+void TriangleMeshShape::build(const std::string& bytes, const std::string& format, const std::string& name) {
+  try {
+    build_unchecked(bytes, format, name);
+  } catch (const CGAL::Failure_exception& e) {
+    // A CGAL check (these are on only in debug builds) that the input broke.
+    throw std::invalid_argument("mesh " + name + ": cannot be turned into a surface (" + e.expression() + ")");
+  }
+}
+
+void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::string& format, const std::string& name) {
+  if (bytes.size() > kMaxMeshBytes)
+    throw std::invalid_argument("mesh " + name + ": larger than " + format_bytes(kMaxMeshBytes));
+  if (format != "stl" && format != "off" && format != "ply" && format != "obj")
+    throw std::invalid_argument("mesh " + name + ": unknown format '" + format + "' (the file name must end in .stl, .off, .ply or .obj)");
+  check_declared_counts(bytes, format, name);
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  // As CGAL::IO::read_polygon_soup and read_polygon_mesh do for a file name, from memory.
+  const auto read = [&](bool binary) {
+    points.clear();
+    polygons.clear();
+    std::istringstream is(bytes, binary ? std::ios::in | std::ios::binary : std::ios::in);
+    CGAL::IO::set_mode(is, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+    if (format == "stl") return CGAL::IO::read_STL(is, points, polygons, CGAL::parameters::use_binary_mode(binary));
+    if (format == "off") return CGAL::IO::read_OFF(is, points, polygons);
+    if (format == "ply") return CGAL::IO::read_PLY(is, points, polygons);
+    return CGAL::IO::read_OBJ(is, points, polygons);
+  };
+  bool ok = false;
+  try {
+    ok = read(format == "stl" || format == "ply") || (format == "stl" && read(false));
+  } catch (const std::exception&) {
+    ok = false;
+  }
+  for (const auto& f : polygons)
+    for (const std::size_t v : f) ok = ok && v < points.size();
   Mesh& m = impl_->mesh;
-  if (!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, m) || m.number_of_faces() == 0)
-    throw std::invalid_argument("mesh " + path + ": cannot be read as a polygon mesh (STL, OFF, PLY or OBJ)");
+  if (ok && !polygons.empty()) {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    // Faces that repeat a vertex once equal points are merged have no area (a common defect of STL
+    // exports); they are dropped before the repair, whose canonical ordering of CGAL 5.5 assumes
+    // distinct vertices (a precondition violation otherwise).
+    PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+    std::erase_if(polygons, [](std::vector<std::size_t> f) {
+      std::sort(f.begin(), f.end());
+      return f.size() < 3 || std::adjacent_find(f.begin(), f.end()) != f.end();
+    });
+    PMP::repair_polygon_soup(points, polygons);
+    // Triangles with no area (three points on a line): the inside test casts rays against every
+    // triangle and needs each to be proper. Dropping them changes no area; if a gap remains, the
+    // surface is refused below as not closed.
+    std::erase_if(polygons, [&](const std::vector<std::size_t>& f) {
+      return f.size() == 3 && CGAL::collinear(points[f[0]], points[f[1]], points[f[2]]);
+    });
+    // CGAL triangulates larger faces in their plane (a 2D constrained triangulation of the
+    // projection), which fails on faces that are not plane: those must come as triangles.
+    for (std::size_t k = 0; k < polygons.size(); ++k)
+      if (polygons[k].size() > 3 && !plane_face(points, polygons[k]))
+        throw std::invalid_argument("mesh " + name + ": face " + std::to_string(k) + " has " +
+                                    std::to_string(polygons[k].size()) +
+                                    " vertices that do not lie in one plane (or no area); give it as triangles");
+    PMP::orient_polygon_soup(points, polygons);
+    ok = PMP::is_polygon_soup_a_polygon_mesh(polygons);
+    if (ok) PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
+  }
+  if (!ok || m.number_of_faces() == 0)
+    throw std::invalid_argument("mesh " + name + ": cannot be read as a polygon mesh (STL, OFF, PLY or OBJ)");
   if (!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
-  if (!CGAL::is_closed(m)) throw std::invalid_argument("mesh " + path + ": the surface is not closed, so it has no inside");
+  if (!CGAL::is_closed(m)) throw std::invalid_argument("mesh " + name + ": the surface is not closed, so it has no inside");
   impl_->tree = std::make_unique<Tree>(faces(m).first, faces(m).second, m);
   impl_->tree->accelerate_distance_queries();
   impl_->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K, CGAL::Default, Tree>>(*impl_->tree);
