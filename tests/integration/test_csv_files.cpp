@@ -137,6 +137,11 @@ TEST_CASE("csv: every case writes plain CSV tables with units in the header", "[
        {"pressure_t0.05.csv"}},
       {"dam_break", "dam_break.yaml", {"discretization.spacing=0.04", "time.t_end=0.2", "output.times=[0.1, 0.2]"},
        {"front.csv", "front_martin_moyce_1952.csv", "front_koshizuka_oka_1996.csv"}},
+      {"duct_3d", "duct_3d.yaml",
+       {"discretization.particles_across=8", "geometry.length=1e-3", "time.t_end=0.05", "output.times=[0.025, 0.05]"},
+       {"peak.csv", "profile_t0.025.csv", "profile_t0.05.csv"}},
+      {"beltrami_3d", "beltrami_3d.yaml", {"discretization.particles_across=8", "time.t_end=0.05", "output.times=[0.025, 0.05]"},
+       {"decay.csv"}},
   };
   const bool have_gnuplot = !on_path("gnuplot").empty();
   std::vector<fs::path> all;

@@ -31,6 +31,7 @@ class BeltramiCase final : public Case<3> {
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "L1_velocity"; }
   void annotate(nlohmann::json& summary) const override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   double scale() const { return std::sqrt(ref_.A * ref_.A + ref_.B * ref_.B + ref_.C * ref_.C); }

@@ -2,6 +2,7 @@
 #include "sphmol/cases/duct/duct_settings.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -11,6 +12,8 @@
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/run/gnuplot_preamble.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 
 namespace sphmol {
@@ -33,6 +36,7 @@ std::unique_ptr<SphSystem<3>> DuctCase::build(const Config& config) {
   const double a = s.half_width_y, b = s.half_width_z;
   ref_ = DuctSeries{a, b, config.fluid.kinematic_viscosity, config.fluid.body_force.empty() ? 0.0 : config.fluid.body_force[0]};
   length_ = s.length;
+  profiles_ = config.output.profiles;
   // particles_across counts fluid particles across the y width 2a.
   const double dx = disc.particles_across > 0 ? 2.0 * a / disc.particles_across : disc.spacing;
   whole(2.0 * a, dx, "geometry.half_widths");
@@ -91,6 +95,22 @@ nlohmann::json DuctCase::measure(const SphSystem<3>& sys, const double* y, doubl
     for (std::size_t k = 0; k < t_.size(); ++k) s << t_[k] << ',' << peak_sph_[k] << ',' << peak_exact_[k] << '\n';
     out.write("peak.csv", s.str());
   }
+  if (out.enabled && profiles_) {
+    // The rows beside the mid-plane: |z| below one spacing.
+    std::vector<std::array<double, 3>> rows;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double pz = y[lay.position(2) + i];
+      if (std::abs(pz) >= spacing_) continue;
+      const double py = std::clamp(y[lay.position(1) + i], -ref_.a, ref_.a);
+      rows.push_back({py, y[lay.velocity(0) + i], ref_.velocity(py, std::clamp(pz, -ref_.b, ref_.b), t)});
+    }
+    std::sort(rows.begin(), rows.end());
+    std::ostringstream s, name;
+    s << "y [m],u_sph [m/s],u_exact [m/s]\n" << std::setprecision(12);
+    for (const auto& r : rows) s << r[0] << ',' << r[1] << ',' << r[2] << '\n';
+    name << "profile_t" << std::setprecision(6) << t << ".csv";
+    out.write(name.str(), s.str());
+  }
   const double rms = n > 0 ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
   return {{"t", t}, {"e_rms", rms / umax}, {"e_max", emax / umax}, {"e_cross", cross / umax}};
 }
@@ -109,6 +129,37 @@ void DuctCase::annotate(nlohmann::json& summary) const {
   summary["discretization"]["spacing"] = spacing_;
   summary["csv_files"]["peak.csv"] =
       "largest particle speed u_x and the largest exact start-up speed at the particles, at every output time";
+  if (profiles_)
+    summary["csv_files"]["profile_t<t>.csv"] =
+        "u_x across the duct (fluid particles of the two rows beside the mid-plane z = 0) vs the series, at output time t";
+}
+
+std::vector<PlotScript> DuctCase::plots(const OutputSink& out) const {
+  std::vector<PlotScript> scripts;
+  if (!t_.empty()) {
+    std::ostringstream s;
+    s << gnuplot_csv_preamble("Square duct: peak speed vs the start-up series (sph-mol DuctCase)", 900, 640, 11, "peak.png")
+      << "set title \"Rectangular duct start-up: largest u_x (points SPH, line series)\" noenhanced\n"
+      << "set xlabel 't [s]'\nset ylabel 'u_x [m/s]'\nset grid\nset key bottom right\n"
+      << "plot 'peak.csv' using 1:3 with lines lw 2 title 'series', \\\n"
+      << "  'peak.csv' using 1:2 with points pt 7 ps 1.2 title 'SPH'\n";
+    scripts.push_back({"peak.png", s.str()});
+  }
+  const auto files = profiles_ ? timed_output_files(out, "profile_t") : std::vector<std::pair<double, std::string>>{};
+  if (!files.empty()) {
+    std::ostringstream s;
+    s << gnuplot_csv_preamble("Square duct: u across the mid-plane vs the series (sph-mol DuctCase)", 900, 640, 11, "profiles.png")
+      << "set title \"Rectangular duct: u_x(y) beside z = 0 at the output times; points SPH, lines series\" noenhanced\n"
+      << "set xlabel 'y [m]'\nset ylabel 'u_x [m/s]'\nset key outside right top\nset grid\n"
+      << "plot \\\n";
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      const auto& [tt, f] = files[i];
+      s << "  '" << f << "' using 1:2 with points pt 7 ps 0.6 lc " << i + 1 << " title 't = " << tt << " s', \\\n"
+        << "  '" << f << "' using 1:3 with lines lw 1.5 lc " << i + 1 << " notitle" << (i + 1 < files.size() ? ", \\\n" : "\n");
+    }
+    scripts.push_back({"profiles.png", s.str()});
+  }
+  return scripts;
 }
 
 }  // namespace sphmol

@@ -8,6 +8,9 @@
 //   e_rms = sqrt(mean_i (u_i - u_exact)^2) / u_max,  e_max = max_i |u_i - u_exact| / u_max,
 //   e_cross = max_i sqrt(v_i^2 + w_i^2) / u_max (the exact flow has none).
 // peak.csv: the largest particle speed and the exact speed's largest value over the particles, per output.
+// profile_t<t>.csv (output.profiles): u across the duct, y from wall to wall, over the fluid particles
+// of the two lattice rows beside the mid-plane z = 0, with the series at the same points.
+// Plots: peak.png (peak speeds against time) and profiles.png (the profiles at the output times).
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,10 +28,12 @@ class DuctCase final : public Case<3> {
   double velocity_scale(const Config&) const override { return ref_.centre_velocity(); }
   nlohmann::json measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
+  std::vector<PlotScript> plots(const OutputSink& out) const override;
 
  private:
   DuctSeries ref_{1.0, 1.0, 1.0, 0.0};
   double length_ = 0.0, spacing_ = 0.0;
+  bool profiles_ = true;
   std::vector<double> t_, peak_sph_, peak_exact_;
 };
 
