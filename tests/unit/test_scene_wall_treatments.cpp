@@ -9,6 +9,7 @@
 #include <string>
 
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/scene/scene_yaml.hpp"
 #include "sphmol/time/integrator.hpp"
 
 #include "scene_test_support.hpp"
@@ -351,6 +352,8 @@ TEST_CASE("scene treatments and densities: what makes no sense is an error at it
   CHECK_THAT(error_of(wall + "      treatment: repulsive\n", c),
              Contains("scene.yaml:7: scene.walls[0].treatment: the scene has no velocity scale"));
   Config summation = config(2, 0.1);
+  CHECK_THAT(error_of(wall + "      treatment: repulsive\n", summation),
+             Contains("scene.yaml:7: scene.walls[0].treatment: 'repulsive' particles take no part in the density sum"));
   CHECK_THAT(error_of(wall + "      treatment: dynamic\n", summation),
              Contains("scene.yaml:7: scene.walls[0].treatment: 'dynamic' evolves the body's wall densities by continuity"));
   Config gas = c;

@@ -125,6 +125,9 @@ void check_scene_bodies(const SceneSpec& spec, const Config& config) {
       fail(at, "'extrapolated' inverts the EOS for the wall density; fluid.eos.type 'ideal_gas' is not barotropic");
     if (d.pair_passes == "fused" && (t == "extrapolated" || t == "repulsive"))
       fail(at, "'" + t + "' needs the stored pair list, and discretization.pair_passes is 'fused' (use auto or stored)");
+    if (t == "repulsive" && d.density != "continuity")
+      fail(at, "'repulsive' particles take no part in the density sum, so a summed density falls short beside the body and "
+               "its negative pressure draws the fluid in; needs discretization.density: continuity (got '" + d.density + "')");
     if (t == "repulsive" && !(w.repulsion.r0 < support))
       fail(w.where_repulsion, "r0 = " + num(w.repulsion.r0) + " spacings must lie inside the kernel support (" + num(support) +
                                   " spacings)");
