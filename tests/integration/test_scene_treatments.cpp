@@ -114,3 +114,11 @@ TEST_CASE("scene treatments: a dynamic body with summation density is refused at
         std::string::npos);
   CHECK(!r.wrote);
 }
+
+TEST_CASE("scene treatments: a force probe on a repulsive body is refused at its line, nothing written",
+          "[integration][scene][config]") {
+  const auto r = run_scene("probe-repulsive", tank("repulsive") + "probes:\n  - {name: f, type: force, body: floor}\n");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("scene.yaml:30: probes[0].body: wall body 'floor' is repulsive") != std::string::npos);
+  CHECK(!r.wrote);
+}
