@@ -6,12 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sphmol/cases/scene/scene_case.hpp"
 #include "sphmol/core/wall_motion.hpp"
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/scene/scene_shapes.hpp"
+#include "sphmol/scene/scene_velocity_scale.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 #include "sphmol/scenes/position_noise.hpp"
 

@@ -15,7 +15,7 @@
 //     treatment (its own, or discretization.wall_pressure); a repulsive body is the one layer within a
 //     spacing of its surface, massless (it takes no part in the SPH sums), with its law in
 //     Particles::body_repulsion (strength by default the squared velocity scale U^2 of the scene,
-//     cases/scene/scene_case.hpp: Niedoba 2012, §3.3, takes D of the order of the largest squared speed).
+//     scene/scene_velocity_scale.hpp: Niedoba 2012, §3.3, takes D of the order of the largest squared speed).
 //   fluid bodies with their own `density`: that rest density in Particles::rest_density (walls keep
 //     fluid.density), mass scaled with it; a hydrostatic body below another hydrostatic body (the
 //     lattice point one step above its highest particle lies in that body) carries its weight.

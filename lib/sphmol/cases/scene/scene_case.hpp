@@ -10,6 +10,7 @@
 
 #include "sphmol/run/case.hpp"
 #include "sphmol/scene/scene_spec.hpp"
+#include "sphmol/scene/scene_velocity_scale.hpp"
 
 namespace sphmol {
 
@@ -37,10 +38,5 @@ class SceneCase final : public Case<D> {
   std::vector<std::size_t> fluid_counts_;
   std::size_t n_wall_ = 0;
 };
-
-// The scene's velocity scale: the free-fall speed sqrt(2 |g| H) over the fluid's height H against
-// the body force, or the largest initial fluid or wall speed, whichever is larger.
-template <int D>
-double scene_velocity_scale(const Particles<D>& p, const std::vector<double>& body_force, double spacing);
 
 }  // namespace sphmol
