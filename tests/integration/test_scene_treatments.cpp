@@ -122,3 +122,15 @@ TEST_CASE("scene treatments: a force probe on a repulsive body is refused at its
   CHECK(r.err.find("scene.yaml:30: probes[0].body: wall body 'floor' is repulsive") != std::string::npos);
   CHECK(!r.wrote);
 }
+
+TEST_CASE("user scene: the kinetic-energy change is measured from t = 0, not from the first output time", "[integration][scene]") {
+  // The column on a rest floor starts at rest and moves: with one output time the change is that
+  // time's kinetic energy over M U^2 / 2 (it read 0 when KE(0) was taken at the first output).
+  const auto r = run_scene("ke-change", tank("rest"));
+  REQUIRE(r.code == 0);
+  const auto& f = r.summary["final_errors"];
+  const double U = r.summary["scene"]["velocity_scale"].get<double>();
+  const double expected = f["kinetic_energy"].get<double>() / (0.5 * f["fluid_mass"].get<double>() * U * U);
+  CHECK(expected > 1e-6);
+  CHECK(f["kinetic_energy_change"].get<double>() == Approx(expected).epsilon(1e-6));
+}

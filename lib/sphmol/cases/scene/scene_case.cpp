@@ -20,6 +20,15 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   body_names_ = s.body_names;
   fluid_counts_ = s.fluid_counts;
   n_wall_ = s.particles.n_wall();
+  // KE(0) and M from the built state (also on a restart, which rebuilds the scene): the first
+  // measurement is at the first output time, not at t = 0.
+  ke0_ = mass0_ = 0.0;
+  for (std::size_t i = 0; i < s.particles.n_fluid; ++i) {
+    double v2 = 0.0;
+    for (int d = 0; d < D; ++d) v2 += s.particles.v[d][i] * s.particles.v[d][i];
+    ke0_ += 0.5 * s.particles.mass[i] * v2;
+    mass0_ += s.particles.mass[i];
+  }
   return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr);
 }
 
@@ -28,7 +37,6 @@ nlohmann::json SceneCase<D>::measure(const SphSystem<D>& sys, const double* y, d
   const FluidTotals<D> f = fluid_totals(sys, y);
   const auto& p = f.momentum;
   const double ke = f.kinetic, mass = f.mass, vmax = f.max_speed;
-  if (ke0_ < 0.0) ke0_ = ke, mass0_ = mass;
   // Relative to M U^2 / 2; with no velocity scale (at rest, no body force), to the initial energy
   // or, if that is zero too, absolute [J].
   const double scale = velocity_scale_ > 0.0 ? 0.5 * mass0_ * velocity_scale_ * velocity_scale_ : (ke0_ > 0.0 ? ke0_ : 1.0);
