@@ -369,6 +369,11 @@ TEST_CASE("scene treatments and densities: what makes no sense is an error at it
              Contains("scene.yaml:8: scene.walls[0].slip: a repulsive body exerts no viscous stress"));
   CHECK_THAT(error_of(wall + "      treatment: repulsive\n      layers: 3\n", c),
              Contains("scene.yaml:8: scene.walls[0].layers: a repulsive body is one layer"));
+  CHECK_THAT(error_of(wall + "      treatment: repulsive\n      velocity: [1, 0]\n      belt: true\n", c),
+             Contains("scene.yaml:9: scene.walls[0].belt: a repulsive body exerts no shear"));
+  CHECK_THAT(error_of(wall + "      treatment: repulsive\n      motion: {type: rotation, centre: [0, 1], angular_velocity: 1, "
+                             "stationary: true}\n", c),
+             Contains("scene.yaml:8: scene.walls[0].motion: a repulsive body exerts no shear"));
   CHECK(error_of(wall + "      treatment: repulsive\n      repulsive: {p1: 3}\n", c) ==
         "scene.yaml:8: scene.walls[0].repulsive.p1: p1 (3) must exceed p2 (4)");
   CHECK(error_of(wall + "      treatment: repulsive\n      repulsive: {strength: 0}\n", c) ==

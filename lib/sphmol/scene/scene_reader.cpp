@@ -221,6 +221,11 @@ void read_treatment(MapReader& w, WallBodySpec& b) {
     w.fail("slip", "a repulsive body exerts no viscous stress (its particles take no part in the SPH sums): remove slip, or "
                    "use treatment rest, extrapolated or dynamic");
   if (b.layers > 0) w.fail("layers", "a repulsive body is one layer of particles on its surface: remove layers");
+  // A surface velocity acts through the viscous term, which a repulsive body does not enter.
+  if (b.belt) w.fail("belt", "a repulsive body exerts no shear, so a moving surface on it would act on nothing");
+  if (b.motion && b.motion->stationary)
+    w.fail("motion", "a repulsive body exerts no shear, so a stationary motion (particles in place carrying a velocity) would "
+                     "act on nothing; use stationary: false");
   if (!w.has("repulsive")) return;
   MapReader r = w.section("repulsive", {"strength", "p1", "p2", "r0"});
   auto& law = b.repulsion;
