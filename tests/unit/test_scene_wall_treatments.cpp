@@ -134,6 +134,11 @@ TEST_CASE("scene treatments: each body's treatment, mass and layers reach the pa
   // Masks: index 0 (domain walls) follows the global treatment.
   CHECK(P.treatment_mask(WallTreatment::extrapolated, WallTreatment::extrapolated) == std::vector<std::uint8_t>{1, 1, 0, 0, 0});
   CHECK(P.treatment_mask(WallTreatment::dynamic, WallTreatment::extrapolated) == std::vector<std::uint8_t>{0, 0, 0, 1, 0});
+  // Bodies a builder gave no treatment (Particles used directly) follow the global one.
+  Particles<2> bare;
+  bare.add(Kind::Wall, {0, 0}, {0, 0}, 1.0, 1000.0);
+  bare.body.back() = 2;
+  CHECK(bare.treatment_mask(WallTreatment::dynamic, WallTreatment::dynamic) == std::vector<std::uint8_t>{1, 1, 1, 1});
   // The repulsive sphere: one massless layer within a spacing of its surface, law r0 = 1 spacing and
   // strength U^2 = 2 g H (H = 0.5 m, the fluid's height).
   std::size_t rep = 0;
@@ -286,7 +291,7 @@ TEST_CASE("scene treatments: per-body repulsive laws push from their own bodies 
   build_workspace_pairs<2, WendlandC2Kernel<2>>(w, P, dom, 0.12, verlet);
   std::array<std::vector<double>, 2> dvdt{std::vector<double>(1, 0.0), std::vector<double>(1, 0.0)};
   for (int d = 0; d < 2; ++d) w.dvdt[d] = dvdt[d].data();
-  RepulsiveBoundary<2>(P.body_repulsion).apply(w);
+  RepulsiveBoundary<2>(P.body_repulsion, P.body_count()).apply(w);
   const RepulsiveLaw law{3.0, 12.0, 4.0, r0};
   CHECK(dvdt[0][0] == 0.0);                                      // nothing from the domain wall
   CHECK(dvdt[1][0] == Approx(law.factor(r) * r).epsilon(1e-12));  // up, from body 0 only

@@ -8,6 +8,7 @@
 // so this is the only way they act: they add nothing to density sums, pressure or viscous terms.
 // A scene's repulsive wall bodies (Particles::body_repulsion) each carry their own law; the pairs
 // with the particles of other walls then see a law with r0 = 0, which exerts nothing.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -32,10 +33,10 @@ class RepulsiveBoundary final : public Term<D> {
  public:
   // One law for every wall particle (boundary: virtual_repulsive).
   explicit RepulsiveBoundary(RepulsiveLaw law) : law_(law) {}
-  // Per wall body (Particles::body_repulsion, indexed by body): only the particles of bodies with
-  // r0 > 0 repel; walls of no body do not.
-  explicit RepulsiveBoundary(const std::vector<BodyRepulsion>& bodies) : per_body_(true) {
-    laws_.assign(bodies.size() + 1, RepulsiveLaw{0.0, 12.0, 4.0, 0.0});
+  // Per wall body (Particles::body_repulsion, indexed by body; body_count: Particles::body_count()):
+  // only the particles of bodies with r0 > 0 repel; walls of no body, or past `bodies`, do not.
+  RepulsiveBoundary(const std::vector<BodyRepulsion>& bodies, std::size_t body_count) : per_body_(true) {
+    laws_.assign(std::max(bodies.size(), body_count) + 1, RepulsiveLaw{0.0, 12.0, 4.0, 0.0});
     for (std::size_t b = 0; b < bodies.size(); ++b)
       laws_[b + 1] = RepulsiveLaw{bodies[b].strength, bodies[b].p1, bodies[b].p2, bodies[b].r0};
   }

@@ -65,10 +65,15 @@ struct Particles {
   // mask[b + 1] = 1 when wall body b has treatment t; mask[0] is for walls of no body (domain walls),
   // which have the global treatment. A term indexes it with body[i] + 1: no branch on configuration.
   std::vector<std::uint8_t> treatment_mask(WallTreatment t, WallTreatment global) const {
-    std::vector<std::uint8_t> m(body_treatment.size() + 1, 0);
-    m[0] = global == t;
+    std::vector<std::uint8_t> m(std::max(body_treatment.size(), body_count()) + 1, global == t);
     for (std::size_t b = 0; b < body_treatment.size(); ++b) m[b + 1] = body_treatment[b] == t;
     return m;
+  }
+  // One past the largest body index any particle carries (0: none).
+  std::size_t body_count() const {
+    std::int32_t top = -1;
+    for (std::int32_t b : body) top = std::max(top, b);
+    return static_cast<std::size_t>(top + 1);
   }
   bool any_body_treatment(WallTreatment t) const {
     return std::find(body_treatment.begin(), body_treatment.end(), t) != body_treatment.end();

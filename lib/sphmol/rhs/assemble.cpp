@@ -194,7 +194,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(law));
   }
   if (particles.any_body_treatment(WallTreatment::repulsive))
-    add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(particles.body_repulsion));
+    add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(particles.body_repulsion, particles.body_count()));
   if (disc.xsph > 0.0) add("discretization.xsph", std::make_unique<Xsph<D>>(disc.xsph));
   if (const auto& tv = disc.transport_velocity; tv.enabled) {
     const double c = fluid.eos.sound_speed;
