@@ -81,6 +81,7 @@ TEST_CASE("scene treatments: a tank on a floor body of each treatment runs and s
     const auto r = run_scene("floor-" + t, tank(t));
     INFO("treatment " << t << ": " << r.err);
     REQUIRE(r.code == 0);
+    CHECK(r.summary["scene"]["wall_treatments"] == nlohmann::json::array({t}));
     // Spurious speeds relative to sqrt(2 g H) (the summary's velocity scale). A rest floor (p = 0
     // under the column) draws the bottom rows in and the column settles onto a repulsive floor's
     // force field; extrapolated and dynamic floors hold it.

@@ -20,6 +20,12 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   body_names_ = s.body_names;
   fluid_counts_ = s.fluid_counts;
   n_wall_ = s.particles.n_wall();
+  body_treatments_.clear();
+  for (const WallTreatment t : s.particles.body_treatment)
+    body_treatments_.push_back(t == WallTreatment::rest           ? "rest"
+                               : t == WallTreatment::extrapolated ? "extrapolated"
+                               : t == WallTreatment::dynamic      ? "dynamic"
+                                                                  : "repulsive");
   // KE(0) and M from the built state (also on a restart, which rebuilds the scene): the first
   // measurement is at the first output time, not at t = 0.
   ke0_ = mass0_ = 0.0;
@@ -75,6 +81,7 @@ void SceneCase<D>::annotate(nlohmann::json& summary) const {
   summary["scene"]["fluid_particles"] = fluid_counts_;
   summary["scene"]["wall_particles"] = n_wall_;
   summary["scene"]["wall_bodies"] = body_names_;
+  summary["scene"]["wall_treatments"] = body_treatments_;  // resolved: the body's own, or wall_pressure
   summary["discretization"]["spacing"] = spacing_;
 }
 

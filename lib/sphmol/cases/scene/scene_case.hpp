@@ -35,6 +35,7 @@ class SceneCase final : public Case<D> {
   double spacing_ = 0.0;
   double ke0_ = 0.0, mass0_ = 0.0;  // fluid kinetic energy and mass at t = 0
   std::vector<std::string> body_names_;
+  std::vector<std::string> body_treatments_;  // per wall body, as resolved by the builder
   std::vector<std::size_t> fluid_counts_;
   std::size_t n_wall_ = 0;
 };
