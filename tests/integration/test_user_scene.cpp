@@ -163,10 +163,11 @@ output:
   const auto& e = s["final_errors"];
   // The fluid starts at rest and gains kinetic energy from the stirrer alone (at rest it stays at
   // rest: see the tank above); by the maximum principle of viscous flow no fluid particle outruns the
-  // surface, and the symmetric stirring gives no net momentum. Measured at t = 0.1 s: KE 0.0192 of
-  // M (omega R)^2 / 2, largest fluid speed 0.74 omega R, |momentum| 2.4e-6 kg m/s (M omega R = 13.6).
-  CHECK(e["kinetic_energy_change"].get<double>() > 0.01);
-  CHECK(e["kinetic_energy_change"].get<double>() < 0.05);
+  // surface, and the symmetric stirring gives no net momentum. Measured at t = 0.1 s: KE 0.095 of
+  // M (omega R)^2 / 2 (from KE(0) = 0), largest fluid speed 0.74 omega R, |momentum| 2.4e-6 kg m/s
+  // (M omega R = 13.6).
+  CHECK(e["kinetic_energy_change"].get<double>() > 0.05);
+  CHECK(e["kinetic_energy_change"].get<double>() < 0.2);
   CHECK(e["max_speed_ratio"].get<double>() > 0.5);
   CHECK(e["max_speed_ratio"].get<double>() < 1.0);
   CHECK(std::hypot(e["momentum"][0].get<double>(), e["momentum"][1].get<double>()) < 1e-4);

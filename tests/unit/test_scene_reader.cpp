@@ -228,7 +228,7 @@ TEST_CASE("scene reader: every malformed scene is an error at its key and line",
       {fluid(box) + "  walls:\n    - {shape: {type: sphere, centre: [0.5, 0.8], radius: 0.1}, slip: free}\n", 2,
        "scene.yaml:6: scene.walls[0].slip: unknown value 'free' (allowed: no_slip, free_slip)"},
       {fluid(box) + "  walls:\n    - {shape: {type: sphere, centre: [0.5, 0.8], radius: 0.1}, slipp: free_slip}\n", 2,
-       "scene.yaml:6: scene.walls[0].slipp: unknown key (did you mean 'slip'? allowed in scene.walls[0]: name, shape, layers, velocity, belt, motion, slip)"},
+       "scene.yaml:6: scene.walls[0].slipp: unknown key (did you mean 'slip'? allowed in scene.walls[0]: name, shape, layers, velocity, belt, motion, slip, treatment, repulsive)"},
   };
   for (const auto& c : cases) {
     INFO(c.yaml);

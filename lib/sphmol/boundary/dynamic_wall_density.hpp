@@ -10,7 +10,12 @@
 // fluid in with a negative pressure. A method-of-lines state cannot be reset between steps; instead
 // the EOS reads max(rho, floor) (rhs/sph_system.cpp) and here a wall at or below the floor does not
 // decompress further (its rate is cut to zero), so the state stays within one step of the floor and
-// the wall resists the next approaching fluid at once.
+// the wall resists the next approaching fluid at once. In a scene whose wall bodies differ in
+// treatment, every wall density is in the state but only the walls a per-body mask marks
+// (Particles::treatment_mask) evolve; the others keep their initial (rest) density.
+#include <cstdint>
+#include <vector>
+
 #include "sphmol/physics/continuity_density.hpp"
 
 namespace sphmol {
@@ -18,11 +23,13 @@ namespace sphmol {
 template <int D>
 class DynamicWallDensity final : public PairTermFor<D, DynamicWallDensity<D>> {
  public:
-  explicit DynamicWallDensity(double floor) : floor_(floor) {}
+  // mask: mask[body + 1] = 1 for the walls that evolve (Particles::treatment_mask); empty: all.
+  explicit DynamicWallDensity(double floor, std::vector<std::uint8_t> mask = {}) : floor_(floor), mask_(std::move(mask)) {}
   std::string_view name() const override { return "dynamic_wall_density"; }
   PairRows rows() const override { return PairRows::dynamic_walls; }
   bool zero_beyond_support() const override { return true; }  // m_j v_aj . x_aj F_aj
   void row_impl(Workspace<D>& w, std::size_t a, const PairRow<D>& r) const {
+    if (!mask_.empty() && !mask_[static_cast<std::size_t>(w.particles->body[a] + 1)]) return;  // per row
     const double s = continuity_rate(w, a, r);
     // w.rho holds max(state, floor): equal to the floor exactly when the state is at or below it.
     w.drhodt_wall[a - w.n_fluid] += (w.rho[a] <= floor_ && s < 0.0) ? 0.0 : s;
@@ -30,6 +37,7 @@ class DynamicWallDensity final : public PairTermFor<D, DynamicWallDensity<D>> {
 
  private:
   double floor_;
+  std::vector<std::uint8_t> mask_;
 };
 
 }  // namespace sphmol

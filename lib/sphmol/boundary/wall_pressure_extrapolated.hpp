@@ -10,10 +10,13 @@
 // which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (Vukčević
 // 2012, eq 117) turns it into a force drawing the first fluid rows into the wall (the walls' p = 0
 // pushes less than the fluid they stand for would; tests/unit/test_boundaries_3d.cpp). Wall rows list only fluid
-// neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass.
+// neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass. A scene
+// whose wall bodies differ in treatment passes a per-body mask (Particles::treatment_mask): only the
+// walls it marks are extrapolated, the others keep the pressure of their own treatment.
 #include <array>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/rhs/term.hpp"
@@ -23,8 +26,10 @@ namespace sphmol {
 template <int D>
 class WallPressureExtrapolated final : public Term<D> {
  public:
-  WallPressureExtrapolated(const std::array<double, D>& g, double ramp, std::function<double(double)> density_of_pressure)
-      : g_(g), ramp_(ramp), rho_of_p_(std::move(density_of_pressure)) {}
+  // mask: mask[body + 1] = 1 for the walls to extrapolate (Particles::treatment_mask); empty: all walls.
+  WallPressureExtrapolated(const std::array<double, D>& g, double ramp, std::function<double(double)> density_of_pressure,
+                           std::vector<std::uint8_t> mask = {})
+      : g_(g), ramp_(ramp), rho_of_p_(std::move(density_of_pressure)), mask_(std::move(mask)) {}
   std::string_view name() const override { return "wall_pressure_extrapolated"; }
   bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
@@ -32,6 +37,7 @@ class WallPressureExtrapolated final : public Term<D> {
     const double f = body_force_ramp_factor(w.t, ramp_);
     for (std::size_t i = w.n_fluid; i < w.n; ++i) {
       if (w.particles->kind[i] != Kind::Wall || P.offset[i] == P.offset[i + 1]) continue;
+      if (!mask_.empty() && !mask_[static_cast<std::size_t>(w.particles->body[i] + 1)]) continue;
       double ge[D];  // g - a_w
       for (int d = 0; d < D; ++d) ge[d] = f * g_[d];
       if (const auto a = wall_acceleration(*w.particles, i, w.t)) for (int d = 0; d < D; ++d) ge[d] -= (*a)[d];
@@ -82,6 +88,7 @@ class WallPressureExtrapolated final : public Term<D> {
   std::array<double, D> g_;
   double ramp_;
   std::function<double(double)> rho_of_p_;
+  std::vector<std::uint8_t> mask_;
 };
 
 }  // namespace sphmol

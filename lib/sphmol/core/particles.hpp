@@ -16,6 +16,17 @@ namespace sphmol {
 
 enum class Kind : std::uint8_t { Fluid = 0, Wall = 1 };
 
+// How a wall body's particles act on the fluid (a scene's walls[i].treatment): wall particles whose
+// pressure is the rest pressure, extrapolated from the fluid (Adami et al. 2012) or evolved as dynamic
+// boundary particles (Crespo et al. 2007), or massless repulsive particles (Monaghan 1994).
+enum class WallTreatment : std::uint8_t { rest, extrapolated, dynamic, repulsive };
+
+// The Lennard-Jones law of a repulsive body (Niedoba 2012, eq 2.76): strength D [m^2/s^2], exponents
+// p1 > p2 and cut-off r0 [m]. r0 = 0: no force (a body that is not repulsive).
+struct BodyRepulsion {
+  double strength = 0.0, p1 = 12.0, p2 = 4.0, r0 = 0.0;
+};
+
 template <int D>
 struct Particles {
   std::size_t n_fluid = 0;
@@ -47,6 +58,30 @@ struct Particles {
     const std::int32_t b = body[i];
     return b >= 0 && static_cast<std::size_t>(b) < free_slip_body.size() && free_slip_body[static_cast<std::size_t>(b)] != 0;
   }
+  // Per wall body (indexed by body): its treatment and, for a repulsive body, its law. Shorter than the
+  // body count, or empty: the rest (and walls of no body) follow `global` in treatment_mask.
+  std::vector<WallTreatment> body_treatment;
+  std::vector<BodyRepulsion> body_repulsion;
+  // mask[b + 1] = 1 when wall body b has treatment t; mask[0] is for walls of no body (domain walls),
+  // which have the global treatment. A term indexes it with body[i] + 1: no branch on configuration.
+  std::vector<std::uint8_t> treatment_mask(WallTreatment t, WallTreatment global) const {
+    std::vector<std::uint8_t> m(std::max(body_treatment.size(), body_count()) + 1, global == t);
+    for (std::size_t b = 0; b < body_treatment.size(); ++b) m[b + 1] = body_treatment[b] == t;
+    return m;
+  }
+  // One past the largest body index any particle carries (0: none).
+  std::size_t body_count() const {
+    std::int32_t top = -1;
+    for (std::int32_t b : body) top = std::max(top, b);
+    return static_cast<std::size_t>(top + 1);
+  }
+  bool any_body_treatment(WallTreatment t) const {
+    return std::find(body_treatment.begin(), body_treatment.end(), t) != body_treatment.end();
+  }
+  // Per particle: the rest density rho0 of its fluid body (fluid.density for walls), which the EOS
+  // reads (physics/eos_tait.hpp). Empty: every particle has fluid.density.
+  std::vector<double> rest_density;
+
   // The prescribed motions of wall bodies (core/wall_motion.hpp) and, per particle, the index of the
   // one it follows; -1 (the default) for a wall that moves with its own v (x_ref + v t, or stays at
   // x_ref when stationary) and for fluid particles.

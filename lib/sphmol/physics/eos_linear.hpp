@@ -4,7 +4,9 @@
 // %. With `relative`, p = c^2 (rho - rho0): the same pressure gradient in the continuum, but
 // without the background pressure c^2 rho0, which the symmetric SPH gradient (Vukčević 2012, eq
 // 117) turns into a spurious force wherever the particle arrangement is not symmetric (e.g. fluid
-// rows sliding over a wall).
+// rows sliding over a wall). Relative, fluids of several rest densities (Particles::rest_density)
+// take p = c^2 (rho - rho0_i), each phase at p = 0 at its own rest density (Colagrossi & Landrieu 2003).
+#include <algorithm>
 #include <cmath>
 
 #include "sphmol/rhs/term.hpp"
@@ -20,6 +22,11 @@ class LinearEos final : public Term<D> {
   void apply(Workspace<D>& w) const override {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * (w.rho[i] - rho_ref_);
+    if (relative_ && w.particles && !w.particles->rest_density.empty()) {
+      const auto& own = w.particles->rest_density;
+      const std::size_t n_own = std::min(own.size(), w.n);
+      for (std::size_t i = 0; i < n_own; ++i) w.p[i] = c2_ * (w.rho[i] - own[i]);
+    }
     const double c = std::sqrt(c2_);  // constant sound speed, for the artificial viscosity
     for (std::size_t i = 0; i < w.n; ++i) w.c[i] = c;
   }

@@ -2,9 +2,13 @@
 // Tait equation of state for nearly incompressible water, Niedoba 2012, eq 2.75 (Monaghan 1994):
 //   p = B ((rho / rho0)^gamma - 1),   B = c0^2 rho0 / gamma,
 // so that dp/drho = c0^2 at rho = rho0. c0 is chosen ~10x the largest flow speed (e.g. sqrt(g H)
-// for a water column), which keeps density variations near 1 %.
+// for a water column), which keeps density variations near 1 %. Fluids of several rest densities
+// (a scene's fluid bodies with their own `density`, Particles::rest_density) take the multiphase form
+// of Colagrossi & Landrieu (2003, J. Comput. Phys. 191:448): each particle its own rho0_i and
+// B_i = c0^2 rho0_i / gamma, with one c0, so that every phase is at p = 0 at its own rest density.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "sphmol/rhs/term.hpp"
 
@@ -37,6 +41,8 @@ class TaitEos final : public Term<D> {
     if (whole_gamma_ > 0) run(w, [n = whole_gamma_](double r) { return power(r, n); });
     else run(w, [g = law_.gamma](double r) { return std::pow(r, g); });
   }
+  // The particles' own rest densities (Particles::rest_density), for [0, size); the rest (generated
+  // particles) keep rho0.
   const TaitLaw& law() const { return law_; }
   // x^n for n >= 1, by squaring.
   static double power(double x, unsigned n) {
@@ -52,8 +58,19 @@ class TaitEos final : public Term<D> {
   template <class Pow>
   void run(Workspace<D>& w, Pow pow_gamma) const {
     const double c0 = std::sqrt(law_.B * law_.gamma / law_.rho0);
+    // A workspace without particles (unit tests of the law alone) has no rest densities of its own.
+    const double* own = w.particles ? w.particles->rest_density.data() : nullptr;
+    const std::size_t n_own = w.particles ? std::min(w.particles->rest_density.size(), w.n) : 0;
+    // B_i / rho0_i = B / rho0 for every phase (one c0).
+    const double b_per_rho0 = law_.B / law_.rho0;
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n; ++i) {
+    for (std::size_t i = 0; i < n_own; ++i) {
+      const double r = w.rho[i] / own[i], rg = pow_gamma(r);
+      w.p[i] = std::max(floor_, b_per_rho0 * own[i] * (rg - 1.0));
+      w.c[i] = c0 * std::sqrt(rg / r);
+    }
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = n_own; i < w.n; ++i) {
       const double r = w.rho[i] / law_.rho0, rg = pow_gamma(r);
       w.p[i] = std::max(floor_, law_.B * (rg - 1.0));
       w.c[i] = c0 * std::sqrt(rg / r);

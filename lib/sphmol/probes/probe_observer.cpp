@@ -157,6 +157,10 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
     } else {  // force
       const bool any = std::find(P.body.begin(), P.body.end(), c.body_index) != P.body.end();
       if (!any) throw ConfigError(c.where + ": wall body '" + c.body + "' has no wall particles in the scene");
+      const auto b = static_cast<std::size_t>(c.body_index);
+      if (b < P.body_treatment.size() && P.body_treatment[b] == WallTreatment::repulsive)
+        throw ConfigError(c.where + ": wall body '" + c.body + "' is repulsive: the force probe sums the SPH pair forces, "
+                          "which its massless particles do not exert");
       const char* unit = D == 3 ? "N" : D == 2 ? "N/m" : "N/m^2";
       for (int d = 0; d < D; ++d) head << ",F" << kAxis[d] << " [" << unit << "]";
       s.description = "probe " + c.name + ": force of the fluid on wall body " + c.body +

@@ -69,7 +69,12 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.density == "summation") add("discretization.density", std::make_unique<SummationDensity<D>>());
   else if (disc.density == "normalised_summation") add("discretization.density", std::make_unique<NormalisedSummationDensity<D>>());
   else if (disc.density != "continuity") throw std::invalid_argument("discretization.density: unsupported '" + disc.density + "'");
-  const bool dynamic_walls = disc.wall_pressure == "dynamic";
+  // Wall treatments: the global wall_pressure, or per wall body (a scene's walls[i].treatment).
+  const WallTreatment global_walls = disc.wall_pressure == "extrapolated" ? WallTreatment::extrapolated
+                                     : disc.wall_pressure == "dynamic"    ? WallTreatment::dynamic
+                                                                          : WallTreatment::rest;
+  const auto walls_with = [&](WallTreatment t) { return global_walls == t || particles.any_body_treatment(t); };
+  const bool dynamic_walls = walls_with(WallTreatment::dynamic);
   std::unique_ptr<GhostGenerator<D>> ghosts;
   if (disc.boundary == "ghost") {
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
@@ -105,9 +110,10 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.boundary", std::make_unique<GhostHydrostaticPressure<D>>(ghosts.get(), g, fluid.body_force_ramp, rho_of_p));
   }
   if (fluid.eos.background_pressure > 0.0) add("fluid.eos.background_pressure", std::make_unique<BackgroundPressure<D>>(fluid.eos.background_pressure));
-  if (disc.wall_pressure == "extrapolated") {
+  if (walls_with(WallTreatment::extrapolated)) {
     if (!rho_of_p) throw std::invalid_argument("discretization.wall_pressure: extrapolated needs a barotropic EOS");
-    add("discretization.wall_pressure", std::make_unique<WallPressureExtrapolated<D>>(g, fluid.body_force_ramp, rho_of_p));
+    add("discretization.wall_pressure", std::make_unique<WallPressureExtrapolated<D>>(
+        g, fluid.body_force_ramp, rho_of_p, particles.treatment_mask(WallTreatment::extrapolated, global_walls)));
   }
   const bool m116 = disc.momentum == "symmetric_116";
   if (!m116 && disc.momentum != "symmetric_117")
@@ -125,7 +131,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
   }
   if (disc.density == "continuity" && !wc_row) add("discretization.density", std::make_unique<ContinuityDensity<D>>());
-  if (dynamic_walls) add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (dynamic_walls)
+    add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>(
+        fluid.density, particles.treatment_mask(WallTreatment::dynamic, global_walls)));
   if (disc.density_diffusion > 0.0 && !wc_row)
     add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
@@ -185,6 +193,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
                                   std::to_string(kernel->support() * h / spacing) + " spacings)");
     add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(law));
   }
+  if (particles.any_body_treatment(WallTreatment::repulsive))
+    add("discretization.boundary", std::make_unique<RepulsiveBoundary<D>>(particles.body_repulsion, particles.body_count()));
   if (disc.xsph > 0.0) add("discretization.xsph", std::make_unique<Xsph<D>>(disc.xsph));
   if (const auto& tv = disc.transport_velocity; tv.enabled) {
     const double c = fluid.eos.sound_speed;

@@ -363,6 +363,7 @@ void SphSystem<D>::reorder_workspace() {
     if (!normal_now_[d].empty()) both(normal_now_[d], td);
   }
   for (auto* v : {&ws_.rho, &ws_.p, &ws_.c, &ws_.e, &ws_.hs, &wp_.mass, &wp_.rho, &wp_.wall_depth}) both(*v, td);
+  if (!wp_.rest_density.empty()) both(wp_.rest_density, td);
   for (auto& s : ws_.strain) both(s, td);
   if (!h_ref_.empty()) both(h_ref_, td);
   if (!rho_ref_.empty()) both(rho_ref_, td);

@@ -103,21 +103,27 @@ class HealthCheck {
                                  limits_.speed_reason);
       }
     if (limits_.rho0 > 0.0) {
-      const auto& rho = sys_.workspace_density();
+      // Fluids of several rest densities (Particles::rest_density, state order): each particle against
+      // its own rho0, read in state order.
+      const auto& own = sys_.particles().rest_density;
+      const auto& rho = own.empty() ? sys_.workspace_density() : sys_.density();
       const long nrho = std::min(n, static_cast<long>(rho.size()));
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      const double r0 = limits_.rho0;
+      const auto rest = [&](long i) { return own.empty() ? r0 : own[static_cast<std::size_t>(i)]; };
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;  // of rho / rho0
 #pragma omp parallel for reduction(min : lo) reduction(max : hi) schedule(static)
       for (long i = 0; i < nrho; ++i) {
-        lo = std::min(lo, rho[i]);
-        hi = std::max(hi, rho[i]);
+        lo = std::min(lo, rho[i] / rest(i));
+        hi = std::max(hi, rho[i] / rest(i));
       }
-      const double r0 = limits_.rho0;
-      if (hi / r0 - 1.0 > limits_.max_compression || 1.0 - lo / r0 > limits_.max_expansion) {
+      if (hi - 1.0 > limits_.max_compression || 1.0 - lo > limits_.max_expansion) {
         const auto& rs = sys_.density();  // state order, to name the particle
-        for (std::size_t i = 0; i < L.n && i < rs.size(); ++i)
-          if (rs[i] / r0 - 1.0 > limits_.max_compression || 1.0 - rs[i] / r0 > limits_.max_expansion)
-            throw BlowUp(t, static_cast<long>(i), "density ratio rho/rho0 = " + shown(rs[i] / r0) +
+        for (std::size_t i = 0; i < L.n && i < rs.size(); ++i) {
+          const double ratio = rs[i] / rest(static_cast<long>(i));
+          if (ratio - 1.0 > limits_.max_compression || 1.0 - ratio > limits_.max_expansion)
+            throw BlowUp(t, static_cast<long>(i), "density ratio rho/rho0 = " + shown(ratio) +
                                                       " outside the weakly compressible range " + limits_.density_reason);
+        }
       }
     }
     const double p = body_force_power(y, t);
@@ -128,7 +134,9 @@ class HealthCheck {
       double el = 0.0;  // serial, as the kinetic energy
       if (limits_.elastic.kind != HealthLimits::Elastic::Kind::none) {
         const auto& rho = sys_.density();  // state order, as the masses
-        for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el += m[i] * limits_.elastic.per_mass(rho[i]);
+        const auto& own = sys_.particles().rest_density;
+        for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
+          el += m[i] * limits_.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
       }
       const double budget = limits_.energy_budget + std::max(0.0, work_);
       const double allowed = (1.0 + HealthLimits::kEnergySlack) * budget + limits_.energy_floor;

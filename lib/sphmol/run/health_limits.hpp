@@ -76,8 +76,10 @@ struct HealthLimits {
     enum class Kind { none, linear, tait } kind = Kind::none;
     double rho0 = 0.0, c2 = 0.0, gamma = 7.0;
     bool clamp_negative = false;  // tait: p = max(p, 0), so no energy is stored below rho0
-    double per_mass(double rho) const {
+    // own_rho0 > 0: the particle's own rest density (Particles::rest_density) instead of rho0.
+    double per_mass(double rho, double own_rho0 = 0.0) const {
       if (kind == Kind::none || !(rho > 0.0)) return 0.0;
+      const double rho0 = own_rho0 > 0.0 ? own_rho0 : this->rho0;
       if (kind == Kind::linear) return c2 * (std::log(rho / rho0) + rho0 / rho - 1.0);  // p = c^2 (rho - rho0)
       if (clamp_negative && rho < rho0) return 0.0;
       // p = B((rho/rho0)^gamma - 1), B = c^2 rho0 / gamma (Tait)
@@ -185,7 +187,8 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   }
   double el0 = 0.0;
   const auto& rho = sys.density();  // of the initial evaluation
-  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el0 += m[i] * lim.elastic.per_mass(rho[i]);
+  const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
+  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el0 += m[i] * lim.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
   lim.energy = true;
   // In the walls' frame the walls do no work; otherwise their maximum-principle bound.
   lim.energy_budget = ke0 + el0 + e0 + (lim.frame.on ? 0.0 : 0.5 * mass * V_wall * V_wall);

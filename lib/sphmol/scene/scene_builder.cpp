@@ -11,6 +11,7 @@
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/scene/scene_shapes.hpp"
+#include "sphmol/scene/scene_velocity_scale.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 #include "sphmol/scenes/position_noise.hpp"
 
@@ -53,9 +54,9 @@ std::array<double, 3> padded(const geometry::Vec<D>& p) {
 
 }  // namespace
 
-double density_at_pressure(const Config& config, double pressure) {
+double density_at_pressure(const Config& config, double pressure, double rest_density) {
   const auto& eos = config.fluid.eos;
-  const double rho0 = config.fluid.density, c2 = eos.sound_speed * eos.sound_speed;
+  const double rho0 = rest_density > 0.0 ? rest_density : config.fluid.density, c2 = eos.sound_speed * eos.sound_speed;
   if (eos.type == "linear" || eos.type == "linear_relative") {
     const double rho = rho0 + pressure / c2;
     if (!(rho > 0.0)) throw std::invalid_argument("the pressure " + num(pressure) + " Pa needs a negative density under the linear EOS");
@@ -103,6 +104,52 @@ double scene_particle_bound(const SceneSpec& spec, const Config& config) {
   return n;
 }
 
+void check_scene_bodies(const SceneSpec& spec, const Config& config) {
+  const auto& d = config.discretization;
+  const bool barotropic = config.fluid.eos.type != "ideal_gas";
+  const double support = (spec.dimension == 2 ? kernel_info<2>(d.kernel).support : kernel_info<3>(d.kernel).support) *
+                         d.smoothing_ratio;  // in spacings
+  for (const auto& w : spec.walls) {
+    const std::string& t = w.treatment;
+    if (t.empty()) continue;  // discretization.wall_pressure, which the loader checked
+    const std::string& at = w.where_treatment;
+    if (d.wall_model == "adami" && t != "extrapolated")
+      fail(at, "'" + t + "' with discretization.wall_model: adami, which extrapolates every wall's pressure (Adami et al. 2012); "
+                         "use treatment: extrapolated or wall_model: morris or prescribed");
+    if (t == "dynamic" && d.density != "continuity")
+      fail(at, "'dynamic' evolves the body's wall densities by continuity; needs discretization.density: continuity (got '" +
+                   d.density + "')");
+    if (t == "dynamic" && (!barotropic || d.smoothing_length != "constant"))
+      fail(at, "'dynamic' needs a barotropic EOS and discretization.smoothing_length: constant");
+    if (t == "extrapolated" && !barotropic)
+      fail(at, "'extrapolated' inverts the EOS for the wall density; fluid.eos.type 'ideal_gas' is not barotropic");
+    if (d.pair_passes == "fused" && (t == "extrapolated" || t == "repulsive"))
+      fail(at, "'" + t + "' needs the stored pair list, and discretization.pair_passes is 'fused' (use auto or stored)");
+    if (t == "repulsive" && d.density != "continuity")
+      fail(at, "'repulsive' particles take no part in the density sum, so a summed density falls short beside the body and "
+               "its negative pressure draws the fluid in; needs discretization.density: continuity (got '" + d.density + "')");
+    if (t == "repulsive" && !(w.repulsion.r0 < support))
+      fail(w.where_repulsion, "r0 = " + num(w.repulsion.r0) + " spacings must lie inside the kernel support (" + num(support) +
+                                  " spacings)");
+  }
+  for (const auto& f : spec.fluid) {
+    if (!(f.density > 0.0) || f.density == config.fluid.density) continue;
+    const std::string& at = f.where_density;
+    const auto& eos = config.fluid.eos.type;
+    if (eos != "tait" && eos != "linear_relative")
+      fail(at, "fluids of several rest densities need fluid.eos.type tait or linear_relative (each phase at p = 0 at its own rest "
+               "density); got '" + eos + "'");
+    if (d.density != "continuity")
+      fail(at, "fluids of several rest densities need discretization.density: continuity (a density summation smears the "
+               "density jump at the interface over the kernel support; got '" + d.density + "')");
+    if (d.density_diffusion > 0.0)
+      fail(at, "discretization.density_diffusion would diffuse the density across the interface of fluids of different rest "
+               "density; set it to 0");
+    if (d.boundary == "ghost")
+      fail(at, "ghost images carry fluid.density; fluids of several rest densities need discretization.boundary: wall_particles");
+  }
+}
+
 namespace {
 // The scene's motion spec as the particles' WallMotion (validated by attach_motion).
 template <int D>
@@ -136,6 +183,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   const auto& disc = config.discretization;
   const auto& dom = spec.domain;
   BuiltScene<D> out;
+  check_scene_bodies(spec, config);
   const double dx = scene_spacing(spec, config);
   out.spacing = dx;
   const double h = disc.smoothing_ratio * dx;
@@ -172,7 +220,8 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
         fail(w.where, std::string("the wall body lies outside the domain along ") + kAxisName[d]);
     }
     solids.push_back(s);
-    const int layers = w.layers > 0 ? w.layers : default_layers;
+    // A repulsive body: the one layer within a spacing of its surface.
+    const int layers = w.treatment == "repulsive" ? 1 : w.layers > 0 ? w.layers : default_layers;
     thickness.push_back(layers * dx);
     max_thickness = std::max(max_thickness, layers * dx);
   }
@@ -180,6 +229,11 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   // Fluid bodies.
   const double tol = 1e-9 * dx;
   std::vector<ShapePtr<D>> fluid_shapes;
+  struct Fill {
+    std::vector<Vec<D>> pts;
+    double mass, rho0, step;  // step: the lattice's spacing along y (its row spacing)
+  };
+  std::vector<Fill> fills;
   for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
     const auto& f = spec.fluid[k];
     ShapePtr<D> s = make_shape<D>(f.shape);
@@ -241,28 +295,57 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       fail(f.where, "the fluid body holds no lattice point at the spacing " + num(dx) + " m (it is smaller than a spacing, or outside the domain)");
     if (pts.empty()) fail(f.where, "every lattice point of the fluid body lies in an earlier fluid body or in a wall body");
     fluid_shapes.push_back(s);
+    const double rho_k = f.density > 0.0 ? f.density : rho0;
+    // The lattice mass is proportional to rho0 (scenes/lattice_mass.hpp).
+    fills.push_back({std::move(pts), m * rho_k / rho0, rho_k, lat.type == LatticeType::hexagonal ? lat.row_spacing() : dx});
+  }
 
-    // Initial pressure -> density. Hydrostatic: p = rho0 |g| (s_top - s), s the height against the
-    // body force and s_top the free surface, half a lattice step above the body's highest particle.
-    std::vector<double> rho(pts.size(), rho0);
+  // Initial pressure -> density. Hydrostatic: p = p_top + rho0_k |g| (s_top - s), s the height against
+  // the body force and s_top the body's free surface, half a lattice step above its highest particle;
+  // p_top is 0, or for a body below another hydrostatic body (the point one lattice step above its
+  // highest particle lies in that body) that body's pressure at s_top. Bodies from the highest down,
+  // so that the one above is done first.
+  Vec<D> g{};
+  for (int d = 0; d < D && d < static_cast<int>(config.fluid.body_force.size()); ++d) g[d] = config.fluid.body_force[d];
+  const double gn = norm<D>(g);
+  const Vec<D> up = gn > 0.0 ? (-1.0 / gn) * g : Vec<D>{};
+  int up_axis = -1;
+  for (int d = 0; d < D; ++d)
+    if (std::abs(up[d]) == 1.0) up_axis = d;
+  std::vector<double> top(spec.fluid.size(), 0.0), p_top(spec.fluid.size(), 0.0);
+  std::vector<std::size_t> by_top;
+  for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+    if (!spec.fluid[k].hydrostatic) continue;
+    if (!(gn > 0.0)) fail(spec.fluid[k].where_pressure, "hydrostatic pressure needs a body force (fluid.body_force)");
+    double t = -std::numeric_limits<double>::infinity();
+    for (const auto& q : fills[k].pts) t = std::max(t, dot<D>(q, up));
+    top[k] = t + 0.5 * (up_axis == 1 ? fills[k].step : dx);
+    by_top.push_back(k);
+  }
+  std::stable_sort(by_top.begin(), by_top.end(), [&](std::size_t a, std::size_t b) { return top[a] > top[b]; });
+  for (std::size_t n = 0; n < by_top.size(); ++n) {
+    const std::size_t k = by_top[n];
+    const auto& pts = fills[k].pts;
+    const auto highest = std::max_element(pts.begin(), pts.end(), [&](const Vec<D>& a, const Vec<D>& b) { return dot<D>(a, up) < dot<D>(b, up); });
+    const Vec<D> above = *highest + (0.5 * (up_axis == 1 ? fills[k].step : dx) + 0.5 * dx) * up;
+    for (std::size_t m = 0; m < n; ++m) {
+      const std::size_t j = by_top[m];
+      if (!(top[j] > top[k]) || !(fluid_shapes[j]->signed_distance(above) < 0.0)) continue;
+      p_top[k] = p_top[j] + fills[j].rho0 * gn * (top[j] - top[k]);
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+    const auto& f = spec.fluid[k];
+    const auto& pts = fills[k].pts;
+    const double rho_k = fills[k].rho0;
+    std::vector<double> rho(pts.size(), rho_k);
     if (f.hydrostatic || f.pressure != 0.0) {
       std::vector<double> p(pts.size(), f.pressure);
-      if (f.hydrostatic) {
-        Vec<D> g{};
-        for (int d = 0; d < D && d < static_cast<int>(config.fluid.body_force.size()); ++d) g[d] = config.fluid.body_force[d];
-        const double gn = norm<D>(g);
-        if (!(gn > 0.0)) fail(f.where_pressure, "hydrostatic pressure needs a body force (fluid.body_force)");
-        const Vec<D> up = (-1.0 / gn) * g;
-        double top = -std::numeric_limits<double>::infinity();
-        for (const auto& q : pts) top = std::max(top, dot<D>(q, up));
-        int axis = -1;
-        for (int d = 0; d < D; ++d)
-          if (std::abs(up[d]) == 1.0) axis = d;
-        top += 0.5 * (axis == 1 ? lat.row_spacing() : dx);
-        for (std::size_t i = 0; i < pts.size(); ++i) p[i] = rho0 * gn * (top - dot<D>(pts[i], up));
-      }
+      if (f.hydrostatic)
+        for (std::size_t i = 0; i < pts.size(); ++i) p[i] = p_top[k] + rho_k * gn * (top[k] - dot<D>(pts[i], up));
       try {
-        for (std::size_t i = 0; i < pts.size(); ++i) rho[i] = density_at_pressure(config, p[i]);
+        for (std::size_t i = 0; i < pts.size(); ++i) rho[i] = density_at_pressure(config, p[i], rho_k);
       } catch (const std::invalid_argument& e) {
         fail(f.where_pressure, e.what());
       }
@@ -273,7 +356,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       for (int d = 0; d < D; ++d)
         if (!std::isfinite(v[d]))
           fail(f.where, "the velocity expression '" + f.velocity[static_cast<std::size_t>(d)]->text() + "' is not finite at a particle");
-      out.particles.add(Kind::Fluid, pts[i], v, m, rho[i]);
+      out.particles.add(Kind::Fluid, pts[i], v, fills[k].mass, rho[i]);
     }
     out.fluid_counts.push_back(pts.size());
   }
@@ -320,6 +403,8 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   // beyond its faces), not already in an earlier body.
   for (std::size_t k = 0; k < solids.size(); ++k) {
     const auto& w = spec.walls[k];
+    const std::string& treatment = w.treatment.empty() ? disc.wall_pressure : w.treatment;
+    const bool repulsive = treatment == "repulsive";
     const Bounds<D> region = box.grown(dx);
     std::size_t added = 0;
     for (const auto& q : wall_layer<D>(*solids[k], cubic, thickness[k], &region)) {
@@ -329,7 +414,8 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       if (taken) continue;
       std::array<double, D> v{};
       for (std::size_t d = 0; d < w.velocity.size(); ++d) v[d] = w.velocity[d];
-      out.particles.add(Kind::Wall, q.x, v, m_cubic, rho0, q.normal, q.depth);
+      // Repulsive particles are massless: they act by their force alone (boundary/repulsive_force.hpp).
+      out.particles.add(Kind::Wall, q.x, v, repulsive ? 0.0 : m_cubic, rho0, q.normal, q.depth);
       out.particles.body.back() = static_cast<std::int32_t>(k);
       out.particles.stationary.back() = (w.motion ? w.motion->stationary : w.belt) ? 1 : 0;
       ++added;
@@ -345,6 +431,30 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     }
     out.body_names.push_back(w.name);
     out.particles.free_slip_body.push_back(w.free_slip ? 1 : 0);
+    out.particles.body_treatment.push_back(repulsive              ? WallTreatment::repulsive
+                                           : treatment == "dynamic" ? WallTreatment::dynamic
+                                           : treatment == "extrapolated" ? WallTreatment::extrapolated
+                                                                         : WallTreatment::rest);
+    BodyRepulsion law;  // r0 = 0: no force
+    if (repulsive) law = {w.repulsion.strength, w.repulsion.p1, w.repulsion.p2, w.repulsion.r0 * dx};
+    out.particles.body_repulsion.push_back(law);
+  }
+  // A repulsive body without a strength: D = U^2, U the scene's velocity scale (Niedoba 2012, §3.3:
+  // D of the order of the largest squared speed, g H for a water column).
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    auto& law = out.particles.body_repulsion[k];
+    if (law.r0 == 0.0 || law.strength > 0.0) continue;
+    const double U = scene_velocity_scale<D>(out.particles, config.fluid.body_force, dx);
+    if (!(U > 0.0))
+      fail(spec.walls[k].where_treatment, "the scene has no velocity scale (no body force and nothing moves) to set the repulsive "
+                                          "strength from; give repulsive: {strength: D} in m^2/s^2");
+    law.strength = U * U;
+  }
+  // Fluid bodies with their own rest density: every particle's rho0 (walls: fluid.density).
+  if (std::any_of(fills.begin(), fills.end(), [rho0](const Fill& f) { return f.rho0 != rho0; })) {
+    auto& r = out.particles.rest_density;
+    for (const auto& f : fills) r.insert(r.end(), f.pts.size(), f.rho0);
+    r.resize(out.particles.size(), rho0);
   }
 
   for (int d = 0; d < D; ++d) {

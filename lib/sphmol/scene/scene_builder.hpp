@@ -11,7 +11,14 @@
 //     particles;
 //   wall bodies: the lattice points inside the solid within `layers` spacings of its surface
 //     (geometry::wall_layer), with the surface normal and depth the Morris et al. (1997) wall model
-//     reads, and Particles::body = the body's index.
+//     reads, and Particles::body = the body's index. Particles::body_treatment holds each body's
+//     treatment (its own, or discretization.wall_pressure); a repulsive body is the one layer within a
+//     spacing of its surface, massless (it takes no part in the SPH sums), with its law in
+//     Particles::body_repulsion (strength by default the squared velocity scale U^2 of the scene,
+//     scene/scene_velocity_scale.hpp: Niedoba 2012, §3.3, takes D of the order of the largest squared speed).
+//   fluid bodies with their own `density`: that rest density in Particles::rest_density (walls keep
+//     fluid.density), mass scaled with it; a hydrostatic body below another hydrostatic body (the
+//     lattice point one step above its highest particle lies in that body) carries its weight.
 // What makes no sense (an empty fill, a body outside the domain, a length that is not a whole number
 // of spacings, ghost walls with wall bodies, ...) is a ConfigError at the element's line.
 #include <string>
@@ -51,6 +58,10 @@ double scene_spacing(const SceneSpec& spec, const Config& config);
 // memory before anything is allocated. Throws as scene_spacing.
 double scene_particle_bound(const SceneSpec& spec, const Config& config);
 
+// The checks of the wall bodies' treatments and the fluid bodies' densities against the
+// discretization and the EOS (what the scene alone cannot know): throws ConfigError at the body's key.
+void check_scene_bodies(const SceneSpec& spec, const Config& config);
+
 // Throws ConfigError (located) for every inconsistency; `spec.dimension` must be D.
 template <int D>
 BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config);
@@ -58,6 +69,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config);
 // The density at which the EOS of `config` gives `pressure` [Pa] above its value at the rest density
 // (linear: rho0 + p / c^2; Tait: rho0 (1 + p / B)^(1/gamma), Niedoba 2012, eq 2.75). Throws
 // std::invalid_argument for an EOS without a rest state (ideal gas) or an unreachable pressure.
-double density_at_pressure(const Config& config, double pressure);
+// rest_density > 0: that of a fluid body with its own density instead of fluid.density.
+double density_at_pressure(const Config& config, double pressure, double rest_density = 0.0);
 
 }  // namespace sphmol

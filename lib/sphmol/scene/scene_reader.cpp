@@ -202,6 +202,45 @@ WallMotionSpec read_motion(MapReader& wall, int dim) {
   return m;
 }
 
+// The body's `treatment` and, for a repulsive body, its `repulsive` law; what contradicts it is an
+// error at its line. Checks against the discretization are check_wall_bodies' (scene_builder.hpp).
+void read_treatment(MapReader& w, WallBodySpec& b) {
+  b.where_treatment = w.where("treatment");
+  b.where_repulsion = w.where("repulsive");
+  if (const auto v = w.string("treatment")) {
+    if (*v == "ghost")
+      w.fail("treatment", "ghost mirrors are available for the domain's faces only (discretization.boundary: ghost); a wall body "
+                          "takes rest, extrapolated, dynamic or repulsive");
+    b.treatment = w.choice("treatment", *v, {"rest", "extrapolated", "dynamic", "repulsive"});
+  }
+  const bool repulsive = b.treatment == "repulsive";
+  if (w.has("repulsive") && !repulsive)
+    w.fail("repulsive", "the parameters of the repulsive force (Niedoba 2012, eq 2.76) need treatment: repulsive");
+  if (!repulsive) return;
+  if (w.has("slip"))
+    w.fail("slip", "a repulsive body exerts no viscous stress (its particles take no part in the SPH sums): remove slip, or "
+                   "use treatment rest, extrapolated or dynamic");
+  if (b.layers > 0) w.fail("layers", "a repulsive body is one layer of particles on its surface: remove layers");
+  // A surface velocity acts through the viscous term, which a repulsive body does not enter.
+  if (b.belt) w.fail("belt", "a repulsive body exerts no shear, so a moving surface on it would act on nothing");
+  if (b.motion && b.motion->stationary)
+    w.fail("motion", "a repulsive body exerts no shear, so a stationary motion (particles in place carrying a velocity) would "
+                     "act on nothing; use stationary: false");
+  if (!w.has("repulsive")) return;
+  MapReader r = w.section("repulsive", {"strength", "p1", "p2", "r0"});
+  auto& law = b.repulsion;
+  if (const auto v = r.real("strength")) {
+    law.strength = *v;
+    if (!(law.strength > 0.0)) r.fail("strength", "must be > 0 m^2/s^2 (omit it for the squared velocity scale of the scene)");
+  }
+  if (const auto v = r.real("p2")) law.p2 = *v;
+  if (!(law.p2 > 0.0)) r.fail("p2", "must be > 0");
+  if (const auto v = r.real("p1")) law.p1 = *v;
+  if (!(law.p1 > law.p2)) r.fail(r.has("p1") ? "p1" : "p2", "p1 (" + number_text(law.p1) + ") must exceed p2 (" + number_text(law.p2) + ")");
+  if (const auto v = r.real("r0")) law.r0 = *v;
+  if (!(law.r0 > 0.0)) r.fail("r0", "must be > 0 particle spacings");
+}
+
 }  // namespace
 
 SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_file) {
@@ -211,7 +250,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
   const std::filesystem::path folder = std::filesystem::path(config_file).parent_path();
   s.domain = read_domain(scene, dimension);
 
-  auto fluids = scene.section_list("fluid", {"shape", "lattice", "velocity", "pressure"});
+  auto fluids = scene.section_list("fluid", {"shape", "lattice", "velocity", "pressure", "density"});
   if (fluids.empty()) scene.fail(scene.has("fluid") ? "fluid" : "domain", "the scene needs at least one fluid body under 'fluid'");
   for (auto& f : fluids) {
     FluidBodySpec b;
@@ -238,10 +277,15 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
         }
       }
     }
+    b.where_density = f.where("density");
+    if (const auto rho = f.real("density")) {
+      b.density = *rho;
+      if (!(b.density > 0.0)) f.fail("density", "the body's rest density must be > 0 kg/m^3");
+    }
     s.fluid.push_back(std::move(b));
   }
 
-  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt", "motion", "slip"});
+  auto walls = scene.section_list("walls", {"name", "shape", "layers", "velocity", "belt", "motion", "slip", "treatment", "repulsive"});
   for (std::size_t k = 0; k < walls.size(); ++k) {
     auto& w = walls[k];
     WallBodySpec b;
@@ -265,6 +309,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     b.belt = w.boolean("belt").value_or(false);
     if (b.belt && b.velocity.empty()) w.fail("belt", "a belt needs the velocity its surface moves with");
     if (const auto v = w.string("slip")) b.free_slip = w.choice("slip", *v, {"no_slip", "free_slip"}) == "free_slip";
+    read_treatment(w, b);
     s.walls.push_back(std::move(b));
   }
   return s;

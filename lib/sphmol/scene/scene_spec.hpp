@@ -49,7 +49,8 @@ struct FluidBodySpec {
   std::vector<std::shared_ptr<const Expression>> velocity;
   bool hydrostatic = false;  // pressure from the depth below the body's free surface under the body force
   double pressure = 0.0;     // [Pa] above the rest state when not hydrostatic
-  std::string where, where_lattice, where_pressure;
+  double density = 0.0;      // rest density rho0 of the body [kg/m^3]; 0 = fluid.density
+  std::string where, where_lattice, where_pressure, where_density;
 };
 
 // A wall body's prescribed rigid motion (`motion:`), as read; build_scene<D> turns it into a
@@ -68,6 +69,13 @@ struct WallMotionSpec {
   std::string where;               // the motion key
 };
 
+// A repulsive wall body's law (Niedoba 2012, eq 2.76), as read.
+struct RepulsionSpec {
+  double strength = 0.0;  // D [m^2/s^2]; 0 = from the scene (the squared velocity scale)
+  double p1 = 12.0, p2 = 4.0;
+  double r0 = 1.0;        // cut-off [particle spacings]
+};
+
 struct WallBodySpec {
   std::string name;
   ShapeSpec shape;
@@ -76,7 +84,11 @@ struct WallBodySpec {
   bool belt = false;             // the particles stay in place and carry `velocity` (a moving surface)
   bool free_slip = false;        // `slip: free_slip`: no viscous stress from the body
   std::optional<WallMotionSpec> motion;  // instead of velocity and belt
-  std::string where;
+  // rest | extrapolated | dynamic (wall particles, as discretization.wall_pressure) | repulsive
+  // (one layer of massless particles that repel, Monaghan 1994); empty: discretization.wall_pressure.
+  std::string treatment;
+  RepulsionSpec repulsion;  // treatment: repulsive
+  std::string where, where_treatment, where_repulsion;
 };
 
 struct SceneSpec {

@@ -79,6 +79,7 @@ std::string scene_to_yaml(const SceneSpec& spec) {
     for (int a = 0; a < dim; ++a)
       y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : scalar(b.velocity[static_cast<std::size_t>(a)]->text()));
     y << "]\n      pressure: " << (b.hydrostatic ? std::string(kHydrostaticPressure) : num(b.pressure)) << "\n";
+    if (b.density > 0.0) y << "      density: " << num(b.density) << "\n";
   }
   if (spec.walls.empty()) {
     y << "  walls: []\n";
@@ -90,6 +91,14 @@ std::string scene_to_yaml(const SceneSpec& spec) {
       y << "    - name: " << quoted(w.name) << "\n      shape: " << shape(w.shape) << "\n      layers: " << w.layers << "\n";
       if (w.motion) y << "      motion: " << motion(*w.motion) << "\n";
       else y << "      velocity: " << list(v) << "\n      belt: " << (w.belt ? "true" : "false") << "\n";
+      if (w.treatment == "repulsive") {
+        const auto& r = w.repulsion;
+        y << "      treatment: repulsive\n      repulsive: {";
+        if (r.strength > 0.0) y << "strength: " << num(r.strength) << ", ";
+        y << "p1: " << num(r.p1) << ", p2: " << num(r.p2) << ", r0: " << num(r.r0) << "}\n";
+        continue;
+      }
+      if (!w.treatment.empty()) y << "      treatment: " << w.treatment << "\n";
       y << "      slip: " << (w.free_slip ? "free_slip" : "no_slip") << "\n";
     }
   }

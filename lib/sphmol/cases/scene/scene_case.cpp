@@ -12,26 +12,6 @@
 namespace sphmol {
 
 template <int D>
-double scene_velocity_scale(const Particles<D>& p, const std::vector<double>& body_force, double spacing) {
-  double g2 = 0.0;
-  for (int d = 0; d < D && d < static_cast<int>(body_force.size()); ++d) g2 += body_force[d] * body_force[d];
-  const double g = std::sqrt(g2);
-  double smin = std::numeric_limits<double>::infinity(), smax = -smin, vmax = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    double v2 = 0.0, s = 0.0;
-    for (int d = 0; d < D; ++d) {
-      v2 += p.v[d][i] * p.v[d][i];
-      if (g > 0.0) s -= p.x[d][i] * body_force[d] / g;
-    }
-    vmax = std::max(vmax, std::sqrt(v2));
-    if (p.kind[i] == Kind::Fluid) smin = std::min(smin, s), smax = std::max(smax, s);
-  }
-  // The height the fluid stands for: the span of its particles plus half a spacing at each end.
-  const double H = p.n_fluid > 0 ? smax - smin + spacing : 0.0;
-  return std::max(vmax, g > 0.0 ? std::sqrt(2.0 * g * H) : 0.0);
-}
-
-template <int D>
 std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   BuiltScene<D> s = build_scene<D>(config.settings<SceneSettings>().spec, config);
   spacing_ = s.spacing;
@@ -40,6 +20,21 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   body_names_ = s.body_names;
   fluid_counts_ = s.fluid_counts;
   n_wall_ = s.particles.n_wall();
+  body_treatments_.clear();
+  for (const WallTreatment t : s.particles.body_treatment)
+    body_treatments_.push_back(t == WallTreatment::rest           ? "rest"
+                               : t == WallTreatment::extrapolated ? "extrapolated"
+                               : t == WallTreatment::dynamic      ? "dynamic"
+                                                                  : "repulsive");
+  // KE(0) and M from the built state (also on a restart, which rebuilds the scene): the first
+  // measurement is at the first output time, not at t = 0.
+  ke0_ = mass0_ = 0.0;
+  for (std::size_t i = 0; i < s.particles.n_fluid; ++i) {
+    double v2 = 0.0;
+    for (int d = 0; d < D; ++d) v2 += s.particles.v[d][i] * s.particles.v[d][i];
+    ke0_ += 0.5 * s.particles.mass[i] * v2;
+    mass0_ += s.particles.mass[i];
+  }
   return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr);
 }
 
@@ -48,7 +43,6 @@ nlohmann::json SceneCase<D>::measure(const SphSystem<D>& sys, const double* y, d
   const FluidTotals<D> f = fluid_totals(sys, y);
   const auto& p = f.momentum;
   const double ke = f.kinetic, mass = f.mass, vmax = f.max_speed;
-  if (ke0_ < 0.0) ke0_ = ke, mass0_ = mass;
   // Relative to M U^2 / 2; with no velocity scale (at rest, no body force), to the initial energy
   // or, if that is zero too, absolute [J].
   const double scale = velocity_scale_ > 0.0 ? 0.5 * mass0_ * velocity_scale_ * velocity_scale_ : (ke0_ > 0.0 ? ke0_ : 1.0);
@@ -87,12 +81,11 @@ void SceneCase<D>::annotate(nlohmann::json& summary) const {
   summary["scene"]["fluid_particles"] = fluid_counts_;
   summary["scene"]["wall_particles"] = n_wall_;
   summary["scene"]["wall_bodies"] = body_names_;
+  summary["scene"]["wall_treatments"] = body_treatments_;  // resolved: the body's own, or wall_pressure
   summary["discretization"]["spacing"] = spacing_;
 }
 
 template class SceneCase<2>;
 template class SceneCase<3>;
-template double scene_velocity_scale<2>(const Particles<2>&, const std::vector<double>&, double);
-template double scene_velocity_scale<3>(const Particles<3>&, const std::vector<double>&, double);
 
 }  // namespace sphmol

@@ -10,6 +10,7 @@
 
 #include "sphmol/run/case.hpp"
 #include "sphmol/scene/scene_spec.hpp"
+#include "sphmol/scene/scene_velocity_scale.hpp"
 
 namespace sphmol {
 
@@ -32,15 +33,11 @@ class SceneCase final : public Case<D> {
   double velocity_scale_ = 0.0;
   bool free_surface_ = false;
   double spacing_ = 0.0;
-  double ke0_ = -1.0, mass0_ = 0.0;
+  double ke0_ = 0.0, mass0_ = 0.0;  // fluid kinetic energy and mass at t = 0
   std::vector<std::string> body_names_;
+  std::vector<std::string> body_treatments_;  // per wall body, as resolved by the builder
   std::vector<std::size_t> fluid_counts_;
   std::size_t n_wall_ = 0;
 };
-
-// The scene's velocity scale: the free-fall speed sqrt(2 |g| H) over the fluid's height H against
-// the body force, or the largest initial fluid or wall speed, whichever is larger.
-template <int D>
-double scene_velocity_scale(const Particles<D>& p, const std::vector<double>& body_force, double spacing);
 
 }  // namespace sphmol

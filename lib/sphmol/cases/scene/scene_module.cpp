@@ -37,6 +37,7 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
   if (d.boundary == "ghost" && !spec.walls.empty())
     r.discretization.fail("boundary", "ghost mirrors only the domain's planar faces; the scene's wall bodies (" +
                                           spec.walls.front().where + ") need wall_particles");
+  check_scene_bodies(spec, c);  // also for a scene too large to build while loading
   SceneSize size;
   const double bound = scene_particle_bound(spec, c);
   if (bound > kBuildWhileLoading) {
