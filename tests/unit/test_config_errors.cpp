@@ -172,7 +172,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  neighbor_search: cells")) ==
         "case.yaml:14: discretization.neighbor_search: unknown value 'cells' (allowed: kdtree, cell_list, all_pairs)");
   CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  integrator: euler")) ==
-        "case.yaml:16: time.integrator: unknown value 'euler' (allowed: arkode_erk, leapfrog, leapfrog_kdk, cvode_adams)");
+        "case.yaml:16: time.integrator: unknown value 'euler' (allowed: arkode_erk, leapfrog, leapfrog_kdk, cvode_adams, leapfrog_imex, arkode_imex)");
 }
 
 TEST_CASE("config errors: time.table must be a SUNDIALS explicit table", "[config]") {
