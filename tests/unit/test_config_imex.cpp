@@ -71,3 +71,13 @@ TEST_CASE("config imex: errors name the file, line and key", "[config][imex]") {
   CHECK_THAT(error_of(time_lines("  integrator: leapfrog_imex\n  krylov:\n    solver: pcg"), {"discretization.laplacian_correction=moment"}),
              StartsWith("case.yaml:18: time.krylov.solver: 'pcg' needs a symmetric operator"));
 }
+
+TEST_CASE("config imex: the step-count check uses the CFL step without the viscous limit", "[config][imex]") {
+  // Base: 20 across a 1 mm channel, h = 1.3 * 5e-5 m, c = 0.01 m/s, nu = 1e-6: the viscous limit
+  // 5.3e-4 s needs 943 steps to t_end = 0.5 s, the acoustic limit 1.6e-3 s needs 308.
+  const std::vector<std::string> limit{"time.max_steps=500"};
+  CHECK_THAT(error_of(time_lines("  integrator: leapfrog_kdk"), limit),
+             Contains("time.max_steps: 500 steps cannot reach time.t_end = 0.5 s"));
+  CHECK(error_of(time_lines("  integrator: leapfrog_imex"), limit) == "<no error>");
+  CHECK(error_of(time_lines("  integrator: arkode_imex"), limit) == "<no error>");
+}
