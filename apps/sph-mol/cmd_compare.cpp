@@ -27,9 +27,9 @@ int run() {
   bool any_adaptive = false, any_fixed = false;
   for (const auto& s : *integrators) (s.adaptive() ? any_adaptive : any_fixed) = true;
   if (!opt.rtols.empty() && !any_adaptive)
-    return sphmol::app::bad_option("compare", "--rtols", "no integrator in --integrators has a tolerance (arkode_erk, cvode_adams do)");
+    return sphmol::app::bad_option("compare", "--rtols", "no integrator in --integrators has a tolerance (arkode_erk, arkode_imex, cvode_adams do)");
   if (!opt.step_factors.empty() && !any_fixed)
-    return sphmol::app::bad_option("compare", "--step-factors", "no integrator in --integrators takes a fixed or CFL step (leapfrog, leapfrog_kdk do)");
+    return sphmol::app::bad_option("compare", "--step-factors", "no integrator in --integrators takes a fixed or CFL step (leapfrog, leapfrog_kdk, leapfrog_imex do)");
   try {
     sphmol::CompareOptions o;
     o.integrators = *integrators;
@@ -70,7 +70,7 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
     [](CLI::App& sub) {
       sub.add_option("--config", opt.config, "case configuration (YAML)")->required()->check(CLI::ExistingFile);
       sub.add_option("--integrators", opt.integrators,
-                     "comma-separated: leapfrog, leapfrog_kdk, arkode_erk, arkode_erk:TABLE, cvode_adams")
+                     "comma-separated: leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_erk:TABLE, cvode_adams, arkode_imex, arkode_imex:TABLE")
           ->required();
       sub.add_option("--output", opt.output, "output directory (default out/compare)");
       sub.add_option("--reference-dt", opt.reference_dt,

@@ -30,7 +30,7 @@ TEST_CASE("config errors: unknown keys, with did-you-mean", "[config]") {
   // Nothing close: no guess, but the allowed keys.
   CHECK(error_of(with("  t_end: 0.5", "  t_end: 0.5\n  banana: 1")) ==
         "case.yaml:16: time.banana: unknown key (allowed in time: t_end, integrator, table, rtol, atol, "
-        "cfl, dt, max_steps)");
+        "cfl, dt, max_steps, krylov)");
   // An unknown key is reported before the "missing" error its typo causes.
   CHECK_THAT(error_of(with("    sound_speed: 0.01", "    soundspeed: 0.01")),
              StartsWith("case.yaml:7: fluid.eos.soundspeed: unknown key (did you mean 'sound_speed'?"));
@@ -172,7 +172,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  neighbor_search: cells")) ==
         "case.yaml:14: discretization.neighbor_search: unknown value 'cells' (allowed: kdtree, cell_list, all_pairs)");
   CHECK(error_of(with("t_end: 0.5", "t_end: 0.5\n  integrator: euler")) ==
-        "case.yaml:16: time.integrator: unknown value 'euler' (allowed: arkode_erk, leapfrog, leapfrog_kdk, cvode_adams)");
+        "case.yaml:16: time.integrator: unknown value 'euler' (allowed: arkode_erk, leapfrog, leapfrog_kdk, cvode_adams, leapfrog_imex, arkode_imex)");
 }
 
 TEST_CASE("config errors: time.table must be a SUNDIALS explicit table", "[config]") {

@@ -46,7 +46,7 @@ TEST_CASE("config overrides: create keys and sections the file does not have", "
 TEST_CASE("config overrides: errors name the override", "[config]") {
   CHECK(error_of(base, {"time.rtl=1e-8"}) ==
         "--set time.rtl=1e-8: time.rtl: unknown key (did you mean 'rtol'? allowed in time: t_end, integrator, "
-        "table, rtol, atol, cfl, dt, max_steps)");
+        "table, rtol, atol, cfl, dt, max_steps, krylov)");
   CHECK_THAT(error_of(base, {"fluids.density=1"}),
              StartsWith("--set fluids.density=1: fluids: unknown key (did you mean 'fluid'?"));
   CHECK(error_of(base, {"time.rtol=-1"}) == "--set time.rtol=-1: time.rtol: -1 is out of range (allowed: > 0)");

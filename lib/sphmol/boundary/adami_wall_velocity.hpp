@@ -19,6 +19,8 @@ template <int D>
 class AdamiWallVelocity final : public Term<D> {
  public:
   std::string_view name() const override { return "adami_wall_velocity"; }
+  // Sets the wall velocities only the viscous term reads: part of the implicit side of an IMEX split.
+  bool implicit() const override { return true; }
   bool reads_stored_pairs() const override { return true; }
   void apply(Workspace<D>& w) const override {
     const auto& P = w.pairs;

@@ -24,6 +24,8 @@ class MorrisWallVelocity final : public PairTermFor<D, MorrisWallVelocity<D>> {
   // (the strain rate of physics/strain_rate.hpp); fluid rows always.
   MorrisWallVelocity(double beta_max, bool wall_rows) : beta_max_(beta_max), wall_rows_(wall_rows) {}
   std::string_view name() const override { return "morris_wall_velocity"; }
+  // Sets the wall velocities only the viscous term reads: part of the implicit side of an IMEX split.
+  bool implicit() const override { return true; }
   PairRows rows() const override { return wall_rows_ ? PairRows::all : PairRows::fluid; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& pt = *w.particles;

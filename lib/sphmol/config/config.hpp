@@ -137,15 +137,25 @@ struct CflConfig {
   double viscous = 0.125;  // dt <= viscous * h^2 / nu
 };
 
+// The Krylov solver of the implicit viscous step (leapfrog_imex, arkode_imex).
+struct KrylovConfig {
+  std::string solver = "pcg";  // pcg | spgmr
+  double tolerance = 1e-8;     // leapfrog_imex: relative residual, in (0, 1)
+  int max_iterations = 100;    // > 0
+};
+
 struct TimeConfig {
   double t_end = 0.0;                               // required, > 0
-  std::string integrator = "arkode_erk";            // arkode_erk | leapfrog | leapfrog_kdk | cvode_adams
-  std::string table = "ARKODE_DORMAND_PRINCE_7_4_5";  // any SUNDIALS explicit table name
+  std::string integrator = "arkode_erk";  // arkode_erk | leapfrog | leapfrog_kdk | cvode_adams | leapfrog_imex | arkode_imex
+  // arkode_erk: any SUNDIALS explicit table name; arkode_imex: either table of an ARK ImEx pair
+  // (config/ark_pairs.hpp), default ARKODE_ARK324L2SA_ERK_4_2_3.
+  std::string table = "ARKODE_DORMAND_PRINCE_7_4_5";
   double rtol = 1e-6;                               // > 0
   double atol = 1e-12;                              // > 0 (absolute, on every state component)
   CflConfig cfl;
   std::optional<double> dt;                         // given -> fixed step (> 0)
   long max_steps = 10'000'000;                      // > 0
+  KrylovConfig krylov;                              // leapfrog_imex, arkode_imex
 };
 
 struct OutputConfig {

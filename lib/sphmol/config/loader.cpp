@@ -11,6 +11,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/io/input_file.hpp"
 #include "sphmol/cases/case_module.hpp"
+#include "sphmol/config/ark_pairs.hpp"
 #include "sphmol/config/erk_tables.hpp"
 #include "sphmol/config/scene_checks.hpp"
 #include "sphmol/config/yaml_reader.hpp"
@@ -413,15 +414,40 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
 
   // time
-  MapReader time = top.section("time", {"t_end", "integrator", "table", "rtol", "atol", "cfl", "dt", "max_steps"});
+  MapReader time = top.section("time", {"t_end", "integrator", "table", "rtol", "atol", "cfl", "dt", "max_steps", "krylov"});
   {
     auto& t = c.time;
     t.t_end = time.required(time.real("t_end"), "t_end", "end time in s, > 0");
     time.check("t_end", t.t_end > 0, t.t_end, "> 0 s");
     if (const auto v = time.string("integrator"))
-      t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog", "leapfrog_kdk", "cvode_adams"});
+      t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog", "leapfrog_kdk", "cvode_adams", "leapfrog_imex", "arkode_imex"});
+    const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
+    if (imex) {
+      // The implicit part is the Morris viscous sum, linear in the fluid velocities with the walls'
+      // own (prescribed or Morris-extrapolated) velocities (time/viscous_operator.hpp).
+      const auto& d = c.discretization;
+      if (d.viscosity == "none")
+        time.fail("integrator", "'" + t.integrator + "' treats the viscous term implicitly, and discretization.viscosity is 'none' "
+                                "(nothing to treat implicitly; use leapfrog_kdk or arkode_erk)");
+      if (d.viscosity != "morris")
+        time.fail("integrator", "'" + t.integrator + "' needs discretization.viscosity: morris (got '" + d.viscosity + "')");
+      if (d.wall_model == "adami")
+        time.fail("integrator", "'" + t.integrator + "' needs discretization.wall_model: prescribed or morris (adami's wall "
+                                "velocities depend on the fluid velocities)");
+      if (d.boundary == "ghost")
+        time.fail("integrator", "'" + t.integrator + "' does not support discretization.boundary: ghost (the images' "
+                                "velocities depend on the fluid velocities)");
+    }
+    if (t.integrator == "arkode_imex") t.table = "ARKODE_ARK324L2SA_ERK_4_2_3";
     if (const auto v = time.string("table")) {
-      if (!is_erk_table_name(*v)) {
+      if (t.integrator == "arkode_imex") {
+        if (!ark_pair_of(*v)) {
+          const std::string near = closest_match(*v, ark_pair_names());
+          time.fail("table", "'" + *v + "' is not one table of a SUNDIALS ARK ImEx pair (" +
+                                 (near.empty() ? "" : "did you mean '" + near + "'? ") + "pairs: " + join(ark_pair_names()) +
+                                 ", or their _DIRK_ partners)");
+        }
+      } else if (!is_erk_table_name(*v)) {
         const std::string near = closest_match(*v, erk_table_names());
         time.fail("table", "'" + *v + "' is not a SUNDIALS explicit (ERK) Butcher table (" +
                                (near.empty() ? "" : "did you mean '" + near + "'? ") +
@@ -456,6 +482,25 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = time.integer("max_steps")) {
       time.check("max_steps", *v > 0, static_cast<double>(*v), "> 0");
       t.max_steps = static_cast<long>(*v);
+    }
+    MapReader krylov = time.section("krylov", {"solver", "tolerance", "max_iterations"});
+    if (!imex && time.has("krylov"))
+      time.fail("krylov", "applies to time.integrator: leapfrog_imex or arkode_imex (got '" + t.integrator + "')");
+    // Default: conjugate gradients where the operator is symmetric, GMRES where rows are scaled apart.
+    if (c.discretization.laplacian_correction != "none") t.krylov.solver = "spgmr";
+    if (const auto v = krylov.string("solver")) t.krylov.solver = krylov.choice("solver", *v, {"pcg", "spgmr"});
+    if (krylov.has("solver") && t.krylov.solver == "pcg" && c.discretization.laplacian_correction != "none")
+      krylov.fail("solver", "'pcg' needs a symmetric operator; discretization.laplacian_correction: " +
+                                c.discretization.laplacian_correction + " scales each row by its own moment (use spgmr)");
+    if (const auto v = krylov.real("tolerance")) {
+      if (t.integrator == "arkode_imex")
+        krylov.fail("tolerance", "is for leapfrog_imex; arkode_imex derives its Krylov tolerance from time.rtol and time.atol");
+      krylov.check("tolerance", *v > 0 && *v < 1, *v, "(0, 1): relative residual");
+      t.krylov.tolerance = *v;
+    }
+    if (const auto v = krylov.integer("max_iterations")) {
+      krylov.check("max_iterations", *v > 0, static_cast<double>(*v), "> 0");
+      t.krylov.max_iterations = static_cast<int>(*v);
     }
   }
 

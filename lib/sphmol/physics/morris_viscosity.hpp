@@ -27,7 +27,10 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
  public:
   explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
   std::string_view name() const override { return Normalised ? "morris_viscosity_normalised" : "morris_viscosity"; }
+  // Linear in the fluid velocities at fixed positions: the implicit part of an IMEX split.
+  bool implicit() const override { return true; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
+    if (w.implicit) return record_row(w, i, r);
     const auto& m = w.particles->mass;
     const double eta2 = 0.01 * w.h * w.h;
     const double* vj[D];  // the wall model's no-slip wall velocities, if it sets them (rhs/workspace.hpp)
@@ -55,6 +58,45 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
   }
 
  private:
+  // The same sum as row_impl written as a row of L v + b (time/viscous_operator.hpp): c_ij on the
+  // diagonal and against each fluid neighbour, the wall velocities into b. The wall model's no-slip
+  // velocities (v_viscous) depend on the fluid velocities and are refused with IMEX integrators
+  // (config/loader.cpp), so wall velocities here are the prescribed ones.
+  void record_row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
+    ViscousOperator& op = *w.implicit;
+    const auto& m = w.particles->mass;
+    const double eta2 = 0.01 * w.h * w.h;
+    std::uint32_t* col = op.columns();
+    double* coef = op.coefficients();
+    const std::uint32_t first = op.first(i);
+    std::uint32_t count = 0;
+    double diag = 0.0, b[D] = {}, moment = 0.0;
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) r2 += r.dx[d][k] * r.dx[d][k];
+      const double g = r.F[k] * r2 / (r2 + eta2);
+      const double c = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g * r.vfac[k];
+      diag += c;
+      if (j < w.n_fluid) {
+        col[first + count] = w.order ? w.order[j] : j;
+        coef[first + count] = c;
+        ++count;
+      } else {
+        for (int d = 0; d < D; ++d) b[d] -= c * w.v[d][j];
+      }
+      if constexpr (Normalised) moment += m[j] / w.rho[j] * g * r2;
+    }
+    double scale = 1.0;
+    if constexpr (Normalised) {
+      if (moment < 0.0) scale = -static_cast<double>(D) / moment;
+      for (std::uint32_t k = 0; k < count; ++k) coef[first + k] *= scale;
+      for (int d = 0; d < D; ++d) b[d] *= scale;
+    }
+    op.finish_row(i, count, scale * diag, b);
+  }
+
+
   double mu_;
 };
 

@@ -239,6 +239,9 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   search_seconds_ += omp_get_wtime() - t_search;
   ws_.verlet = &pairs_->pairs();
   if (stored_pairs_) kernel_->apply(pairs_->pairs(), ws_);
+  // Rows of the implicit operator never hold more entries than the Verlet list's rows.
+  if (record_) record_->begin(nf, D, pairs_->pairs().offset.data(), ord);
+  ws_.implicit = record_;
 
   // Derivatives are written in workspace order: straight into ydot, or into out_ and scattered below.
   if (ord) out_.resize(layout_.size());
@@ -266,6 +269,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (int d = 0; d < D; ++d) ws_.wall_normal[d] = normal_now_[d].empty() ? nullptr : normal_now_[d].data();
   for (const auto& term : terms_) term->apply(ws_);
+  ws_.implicit = nullptr;
+  if (record_) record_->end();
   if (ord && nf > 0) {
     // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves). The
     // loop runs over the state index, so each thread writes its own contiguous part of ydot, the
@@ -304,9 +309,38 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   double dt = std::numeric_limits<double>::infinity();
   if (std::isfinite(acoustic)) dt = std::min(dt, cfl_.acoustic * acoustic);
   if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));
-  if (cfl_.kinematic_viscosity > 0.0) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
+  // The viscous limit binds an explicit viscous term only: not the explicit part of an IMEX split.
+  if (cfl_.kinematic_viscosity > 0.0 && !record_) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
   stable_step_ = dt;
   rhs_seconds_ += omp_get_wtime() - t_start;
+}
+
+template <int D>
+void SphSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {
+  if (generator_) throw std::logic_error("SphSystem::rhs_explicit: generated particles have no implicit operator");
+  record_ = &op;
+  try {
+    rhs(t, y, fe);
+  } catch (...) {
+    record_ = nullptr;
+    throw;
+  }
+  record_ = nullptr;
+}
+
+template <int D>
+std::vector<std::string> SphSystem<D>::implicit_terms() const {
+  std::vector<std::string> names;
+  auto add = [&names](const Term<D>& t) {
+    if (t.implicit()) names.emplace_back(t.name());
+  };
+  for (const auto& t : terms_) {
+    if (const auto* f = dynamic_cast<const FusedPairPass<D>*>(t.get()))
+      for (const auto& m : f->terms()) add(*m);
+    else
+      add(*t);
+  }
+  return names;
 }
 
 template <int D>

@@ -14,6 +14,7 @@
 #include "sphmol/rhs/particle_generator.hpp"
 #include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
+#include "sphmol/time/imex_system.hpp"
 #include "sphmol/time/ode_system.hpp"
 
 namespace sphmol {
@@ -27,7 +28,7 @@ struct CflLimits {
 };
 
 template <int D>
-class SphSystem final : public OdeSystem {
+class SphSystem final : public OdeSystem, public ImexSystem {
  public:
   SphSystem(Particles<D> particles, Domain<D> domain, double h, std::unique_ptr<KernelPass<D>> kernel,
             std::vector<std::unique_ptr<Term<D>>> terms, std::unique_ptr<VerletList<D>> pairs, CflLimits cfl);
@@ -41,6 +42,10 @@ class SphSystem final : public OdeSystem {
 
   std::size_t size() const override { return layout_.size(); }
   void rhs(double t, const double* y, double* ydot) override;
+  // The explicit part of the IMEX split and the implicit part's operator (time/imex_system.hpp): the
+  // same terms as rhs(), with the implicit ones recording into op instead of adding to dv/dt.
+  void rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) override;
+  std::vector<std::string> implicit_terms() const override;
   double stable_step() const override { return stable_step_; }
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
@@ -144,6 +149,7 @@ class SphSystem final : public OdeSystem {
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
+  ViscousOperator* record_ = nullptr;  // set during rhs_explicit
   // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
   // and walls within [n_fluid, n_base); empty when off. wp_ is particles_ in workspace order, out_ the
   // derivatives in workspace order before the scatter into ydot.

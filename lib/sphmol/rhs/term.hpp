@@ -55,6 +55,11 @@ class Term {
   virtual bool reads_stored_pairs() const { return false; }
   // The dimensions the term is valid in (see the top of this file).
   virtual Dimensions dimensions() const { return Dimensions::all(); }
+  // The part of an implicit-explicit split f = f_E + f_I the term belongs to (time/viscous_operator.hpp).
+  // Implicit: the viscous sum, linear in the fluid velocities at fixed positions, which records its
+  // coefficients in Workspace::implicit when that is set instead of adding to dv/dt, and the wall
+  // velocity models it reads. Every other term is explicit and always adds to the rates.
+  virtual bool implicit() const { return false; }
 };
 
 // Throws std::invalid_argument "KEY: 'NAME' is not available in DD (only in ...)" when `term` does not

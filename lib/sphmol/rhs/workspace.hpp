@@ -11,6 +11,7 @@
 #include "sphmol/core/domain.hpp"
 #include "sphmol/core/particles.hpp"
 #include "sphmol/neighbors/pair_list.hpp"
+#include "sphmol/time/viscous_operator.hpp"
 
 namespace sphmol {
 
@@ -49,6 +50,10 @@ struct Workspace {
   // empty: the velocities v.
   std::array<std::vector<double>, D> v_viscous;
   std::array<std::vector<double>, D * D> strain;  // strain-rate tensor eps_ab, row-major
+
+  // Set for an evaluation of the explicit part of an IMEX split (SphSystem::rhs_explicit): the implicit
+  // terms (Term::implicit) record their linear operator here and leave dv/dt to the explicit terms.
+  ViscousOperator* implicit = nullptr;
 
   // Outputs for fluid particles (point into the caller's ydot).
   std::array<double*, D> dxdt{}, dvdt{};

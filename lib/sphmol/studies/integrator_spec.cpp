@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/config/ark_pairs.hpp"
 #include "sphmol/config/erk_tables.hpp"
 
 namespace sphmol {
@@ -19,14 +20,18 @@ int erk_table_order(const std::string& table) {
 }
 
 int IntegratorSpec::order() const {
-  if (integrator == "leapfrog" || integrator == "leapfrog_kdk") return 2;
+  if (integrator == "leapfrog" || integrator == "leapfrog_kdk" || integrator == "leapfrog_imex") return 2;
   if (integrator == "arkode_erk") return erk_table_order(table);
+  if (integrator == "arkode_imex") {
+    const auto pair = ark_pair_of(table);
+    return pair ? erk_table_order(pair->erk) : 0;
+  }
   return 0;
 }
 
 void IntegratorSpec::apply(TimeConfig& time) const {
   time.integrator = integrator;
-  if (integrator == "arkode_erk") time.table = table;
+  if (integrator == "arkode_erk" || integrator == "arkode_imex") time.table = table;
 }
 
 std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const std::string& default_table) {
@@ -43,11 +48,17 @@ std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const
       s.table = colon == std::string::npos ? default_table : item.substr(colon + 1);
       if (!is_erk_table_name(s.table))
         throw std::invalid_argument("integrator '" + item + "': '" + s.table + "' is not a SUNDIALS ERK table");
+    } else if (s.integrator == "arkode_imex") {
+      s.table = colon == std::string::npos ? "ARKODE_ARK324L2SA_ERK_4_2_3" : item.substr(colon + 1);
+      if (!ark_pair_of(s.table))
+        throw std::invalid_argument("integrator '" + item + "': '" + s.table + "' is not one table of a SUNDIALS ARK ImEx pair");
     } else if (colon != std::string::npos) {
-      throw std::invalid_argument("integrator '" + item + "': only arkode_erk takes a table (arkode_erk:TABLE)");
-    } else if (s.integrator != "leapfrog" && s.integrator != "leapfrog_kdk" && s.integrator != "cvode_adams") {
+      throw std::invalid_argument("integrator '" + item + "': only arkode_erk and arkode_imex take a table (arkode_erk:TABLE)");
+    } else if (s.integrator != "leapfrog" && s.integrator != "leapfrog_kdk" && s.integrator != "cvode_adams" &&
+               s.integrator != "leapfrog_imex") {
       throw std::invalid_argument("unknown integrator '" + item +
-                                  "' (known: leapfrog, leapfrog_kdk, arkode_erk, arkode_erk:TABLE, cvode_adams)");
+                                  "' (known: leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_erk:TABLE, cvode_adams, "
+                                  "arkode_imex, arkode_imex:TABLE)");
     }
     out.push_back(s);
   }

@@ -1,0 +1,246 @@
+#include "sphmol/time/arkode_imex.hpp"
+
+#include <arkode/arkode_butcher_dirk.h>
+#include <arkode/arkode_butcher_erk.h>
+#include <nvector/nvector_openmp.h>
+#include <nvector/nvector_serial.h>
+#include <omp.h>
+#include <sunlinsol/sunlinsol_pcg.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "sphmol/io/double_codec.hpp"
+#include "sphmol/time/blow_up.hpp"
+
+namespace sphmol {
+
+namespace {
+constexpr double kCflFraction = 0.5;
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(std::string("ARKODE: ") + what + " failed: " + ARKStepGetReturnFlagName(flag));
+}
+}  // namespace
+
+ArkodeImex::ArkodeImex(Options o) : opt_(std::move(o)) {}
+
+ArkodeImex::~ArkodeImex() {
+  if (mem_) ARKStepFree(&mem_);
+  if (ls_) SUNLinSolFree(ls_);
+  if (y_) N_VDestroy(y_);
+  if (ctx_) SUNContext_Free(&ctx_);
+}
+
+nlohmann::json ArkodeImex::describe() const {
+  const auto pair = ark_pair_of(opt_.table);
+  nlohmann::json j{{"name", name()}, {"table", opt_.table}};
+  if (pair) j["tables"] = {{"explicit", pair->erk}, {"implicit", pair->dirk}};
+  if (opt_.fixed_step) {
+    j["dt"] = *opt_.fixed_step;
+  } else {
+    j["rtol"] = opt_.rtol;
+    j["atol"] = opt_.atol;
+  }
+  j["krylov"] = {{"solver", opt_.krylov.solver}, {"max_iterations", opt_.krylov.max_iterations}};
+  if (mem_) {
+    const long its = krylov_iterations(), steps = stats().steps;
+    long newton = 0;
+    ARKStepGetNumNonlinSolvIters(mem_, &newton);
+    j["krylov_iterations"] = its;
+    j["krylov_iterations_per_step"] = steps > 0 ? static_cast<double>(its) / static_cast<double>(steps) : 0.0;
+    j["stage_solves"] = newton;
+  }
+  return j;
+}
+
+long ArkodeImex::krylov_iterations() const {
+  long v = 0;
+  if (mem_) ARKStepGetNumLinIters(mem_, &v);
+  return v;
+}
+
+void ArkodeImex::evaluate(double t, const double* y) {
+  const std::size_t n = sys_->size();
+  if (cached_ && t == cache_t_ && std::memcmp(y, cache_y_.data(), n * sizeof(double)) == 0) return;
+  cache_y_.assign(y, y + n);
+  cache_t_ = t;
+  cached_ = false;
+  imex_->rhs_explicit(t, y, cache_fe_.data(), scratch_);
+  scratch_.apply_affine(y + vb_, cache_w_.data());
+  cached_ = true;
+}
+
+int ArkodeImex::fe_callback(double t, N_Vector y, N_Vector ydot, void* self) {
+  auto* me = static_cast<ArkodeImex*>(self);
+  const double* yy = N_VGetArrayPointer(y);
+  double* f = N_VGetArrayPointer(ydot);
+  me->evaluate(t, yy);
+  const std::size_t n = me->sys_->size(), vb = me->vb_, nv = me->nv_;
+  std::copy(me->cache_fe_.begin(), me->cache_fe_.begin() + static_cast<std::ptrdiff_t>(n), f);
+  // f_E = f - (L_n v + b_n) = f_E,unfrozen + (L(x) v + b(x)) - (L_n v + b_n)
+  me->frozen_.apply_affine(yy + vb, me->wn_.data());
+  const double* w = me->cache_w_.data();
+  const double* wn = me->wn_.data();
+  for (std::size_t k = 0; k < nv; ++k) f[vb + k] += w[k] - wn[k];
+  return 0;
+}
+
+int ArkodeImex::fi_callback(double, N_Vector y, N_Vector ydot, void* self) {
+  auto* me = static_cast<ArkodeImex*>(self);
+  const double* yy = N_VGetArrayPointer(y);
+  double* f = N_VGetArrayPointer(ydot);
+  std::fill(f, f + me->sys_->size(), 0.0);
+  me->frozen_.apply_affine(yy + me->vb_, f + me->vb_);
+  return 0;
+}
+
+int ArkodeImex::jtimes_callback(N_Vector v, N_Vector Jv, double, N_Vector, N_Vector, void* self, N_Vector) {
+  auto* me = static_cast<ArkodeImex*>(self);
+  double* out = N_VGetArrayPointer(Jv);
+  std::fill(out, out + me->sys_->size(), 0.0);
+  me->frozen_.apply(N_VGetArrayPointer(v) + me->vb_, out + me->vb_);
+  return 0;
+}
+
+int ArkodeImex::psolve_callback(double, N_Vector, N_Vector, N_Vector r, N_Vector z, double gamma, double, int,
+                                void* self) {
+  // Jacobi: the diagonal of I - gamma J is 1 off the velocity block, 1 - gamma L_ii on it.
+  auto* me = static_cast<ArkodeImex*>(self);
+  const double* rr = N_VGetArrayPointer(r);
+  double* zz = N_VGetArrayPointer(z);
+  const std::size_t n = me->sys_->size(), vb = me->vb_, nv = me->nv_, rows = me->frozen_.rows();
+  std::copy(rr, rr + n, zz);
+  const auto& diag = me->frozen_.diagonal();
+  for (std::size_t k = 0; k < nv; ++k) zz[vb + k] = rr[vb + k] / (1.0 - gamma * diag[k % rows]);
+  return 0;
+}
+
+int ArkodeImex::stability_callback(N_Vector, double, double* hstab, void* self) {
+  // The limit of the latest evaluation: explicit part only (ImexSystem::rhs_explicit).
+  *hstab = static_cast<ArkodeImex*>(self)->sys_->stable_step() / kCflFraction;
+  return 0;
+}
+
+int ArkodeImex::step_done_callback(double t, N_Vector y, void* self) {
+  // L_{n+1}, b_{n+1} at the accepted state; the next step's first stage finds this evaluation cached.
+  auto* me = static_cast<ArkodeImex*>(self);
+  try {
+    me->evaluate(t, N_VGetArrayPointer(y));
+  } catch (...) {
+    return -1;
+  }
+  std::swap(me->frozen_, me->scratch_);
+  // The cache's W was computed with the operator now frozen: still valid for this state.
+  return 0;
+}
+
+void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
+  sys_ = &sys;
+  imex_ = dynamic_cast<ImexSystem*>(&sys);
+  if (!imex_) throw std::invalid_argument("time.integrator: arkode_imex needs a system with an implicit-explicit split");
+  if (imex_->implicit_terms().empty())
+    throw std::invalid_argument("time.integrator: arkode_imex needs an implicit (viscous) term; the scene has none");
+  const auto pair = ark_pair_of(opt_.table);
+  if (!pair) throw std::invalid_argument("time.table: '" + opt_.table + "' is not one table of an ARK ImEx pair");
+  t_ = t0;
+  vb_ = sys.velocities_begin();
+  nv_ = sys.velocities_end() - vb_;
+  const std::size_t n = sys.size();
+  cache_fe_.assign(n, 0.0);
+  cache_w_.assign(nv_, 0.0);
+  wn_.assign(nv_, 0.0);
+  evaluate(t0, y);  // primes the CFL limit and the operator of the first step
+  std::swap(frozen_, scratch_);
+  if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
+
+  if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
+  const int threads = omp_get_max_threads();
+  y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(n), y, threads, ctx_)
+                   : N_VMake_Serial(static_cast<sunindextype>(n), y, ctx_);
+  mem_ = ARKStepCreate(&ArkodeImex::fe_callback, &ArkodeImex::fi_callback, t0, y_, ctx_);
+  if (!mem_) throw std::runtime_error("ARKStepCreate failed");
+  check(ARKStepSetUserData(mem_, this), "SetUserData");
+  ARKodeButcherTable Be = ARKodeButcherTable_LoadERKByName(pair->erk.c_str());
+  ARKodeButcherTable Bi = ARKodeButcherTable_LoadDIRKByName(pair->dirk.c_str());
+  if (!Be || !Bi) {
+    if (Be) ARKodeButcherTable_Free(Be);
+    if (Bi) ARKodeButcherTable_Free(Bi);
+    throw std::runtime_error("ARKODE: cannot load the tables of '" + opt_.table + "'");
+  }
+  const int set = ARKStepSetTables(mem_, Be->q, Be->p, Bi, Be);  // ARKStep keeps copies
+  ARKodeButcherTable_Free(Be);
+  ARKodeButcherTable_Free(Bi);
+  check(set, "SetTables");
+  // Lagrange interpolation needs no f at step ends: every stage is evaluated, none is taken from
+  // a previous step's last stage (whose split, L_n, is not the next step's).
+  check(ARKStepSetInterpolantType(mem_, ARK_INTERP_LAGRANGE), "SetInterpolantType");
+  check(ARKStepSetMaxNumSteps(mem_, opt_.max_steps), "SetMaxNumSteps");
+  // Stage solves: ARKStep's nonlinear tolerance needs rtol/atol in fixed-step runs too.
+  check(ARKStepSStolerances(mem_, opt_.rtol, opt_.atol), "SStolerances");
+  if (opt_.fixed_step) {
+    check(ARKStepSetFixedStep(mem_, *opt_.fixed_step), "SetFixedStep");
+  } else {
+    check(ARKStepSetStabilityFn(mem_, &ArkodeImex::stability_callback, this), "SetStabilityFn");
+    check(ARKStepSetCFLFraction(mem_, kCflFraction), "SetCFLFraction");
+    check(ARKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
+  }
+  ls_ = opt_.krylov.solver == "pcg" ? SUNLinSol_PCG(y_, SUN_PREC_LEFT, opt_.krylov.max_iterations, ctx_)
+                                    : SUNLinSol_SPGMR(y_, SUN_PREC_LEFT, opt_.krylov.max_iterations, ctx_);
+  if (!ls_) throw std::runtime_error("SUNDIALS: creating the Krylov solver failed");
+  check(ARKStepSetLinearSolver(mem_, ls_, nullptr), "SetLinearSolver");
+  check(ARKStepSetJacTimes(mem_, nullptr, &ArkodeImex::jtimes_callback), "SetJacTimes");
+  check(ARKStepSetPreconditioner(mem_, nullptr, &ArkodeImex::psolve_callback), "SetPreconditioner");
+  check(ARKStepSetLinear(mem_, 1), "SetLinear");  // L_n changes from step to step
+  check(ARKStepSetPostprocessStepFn(mem_, &ArkodeImex::step_done_callback), "SetPostprocessStepFn");
+}
+
+void ArkodeImex::advance(double tout) {
+  while (t_ < tout) step_toward(tout);
+}
+
+double ArkodeImex::step_toward(double tout) {
+  if (t_ >= tout) return t_;
+  check(ARKStepSetStopTime(mem_, tout), "SetStopTime");
+  double t = t_;
+  const int flag = ARKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
+  if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL || flag == ARK_LSOLVE_FAIL)
+    throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ARKStepGetReturnFlagName(flag));
+  if (flag < 0)
+    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " + ARKStepGetReturnFlagName(flag));
+  t_ = (flag == ARK_TSTOP_RETURN) ? tout : t;
+  double h = 0.0;
+  ARKStepGetLastStep(mem_, &h);
+  after_step(t_, N_VGetArrayPointer(y_), h);
+  return t_;
+}
+
+nlohmann::json ArkodeImex::save_state() const {
+  double h = 0.0;
+  ARKStepGetCurrentStep(mem_, &h);
+  const IntegratorStats s = stats();
+  return {{"step", encode_doubles({h})}, {"steps", s.steps}, {"rejected_steps", s.rejected_steps}};
+}
+
+void ArkodeImex::restore_state(const nlohmann::json& s) {
+  const double h = decode_doubles(s.at("step").get<std::string>()).at(0);
+  if (!opt_.fixed_step && h > 0.0 && std::isfinite(h)) check(ARKStepSetInitStep(mem_, h), "SetInitStep");
+  steps_before_ = s.at("steps").get<long>();
+  rejected_before_ = s.at("rejected_steps").get<long>();
+}
+
+IntegratorStats ArkodeImex::stats() const {
+  IntegratorStats s;
+  long v = 0;
+  ARKStepGetNumSteps(mem_, &v);
+  s.steps = v + steps_before_;
+  ARKStepGetNumErrTestFails(mem_, &v);
+  s.rejected_steps = v + rejected_before_;
+  ARKStepGetLastStep(mem_, &s.last_step);
+  return s;
+}
+
+}  // namespace sphmol

@@ -1,0 +1,84 @@
+#pragma once
+// SUNDIALS ARKODE ARKStep with an additive Runge-Kutta ImEx pair (Kennedy & Carpenter 2003): the
+// explicit part f_E of the split (time/imex_system.hpp) by the pair's ERK table, the viscous part by
+// its DIRK table, adaptive (rtol/atol, explicit stability limit through the stability callback) or
+// fixed step.
+//
+// The implicit part is f_I = L_n v + b_n with the operator frozen at the step's start y_n
+// (time/viscous_operator.hpp), and the explicit part takes the rest, f_E = f - L_n v - b_n, so that
+// f_E + f_I = f at every stage. f_I is then exactly linear in y (ARKStepSetLinear: one Newton
+// iteration solves each stage) and its Jacobian is known, J v = L_n v on the velocity block: the
+// stage systems (I - gamma J) z = r are solved matrix-free by SUNDIALS' own Krylov solver (PCG or
+// GMRES) with a Jacobi preconditioner 1 - gamma diag(L_n), warm started by ARKStep's predictor. The
+// remainder (L(x) - L_n) v left in f_E changes over a step by O(dt v / h) relative to L: far from
+// stiff at the acoustic step. The operator is rebuilt after every accepted step (the
+// postprocess-step callback) from that evaluation, which the next step's first stage reuses.
+#include <arkode/arkode_arkstep.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+
+#include <optional>
+#include <vector>
+
+#include "sphmol/config/ark_pairs.hpp"
+#include "sphmol/time/imex_system.hpp"
+#include "sphmol/time/integrator.hpp"
+#include "sphmol/time/viscous_solve.hpp"
+
+namespace sphmol {
+
+class ArkodeImex final : public Integrator {
+ public:
+  struct Options {
+    std::string table = "ARKODE_ARK324L2SA_ERK_4_2_3";  // either table of the pair
+    double rtol = 1e-6, atol = 1e-12;
+    std::optional<double> fixed_step;
+    long max_steps = 10'000'000;
+    KrylovOptions krylov;  // solver and max_iterations (the tolerance follows from rtol/atol)
+  };
+  explicit ArkodeImex(Options o);
+  ~ArkodeImex() override;
+  ArkodeImex(const ArkodeImex&) = delete;
+  ArkodeImex& operator=(const ArkodeImex&) = delete;
+
+  std::string name() const override { return "arkode_imex"; }
+  nlohmann::json describe() const override;
+  void initialize(OdeSystem& sys, double t0, double* y) override;
+  void advance(double tout) override;
+  IntegratorStats stats() const override;
+  double step_toward(double tout) override;
+  // As arkode_erk: the step size is saved, the Runge-Kutta history is not (a restart agrees within
+  // the tolerance).
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
+  long krylov_iterations() const;
+
+ private:
+  static int fe_callback(double t, N_Vector y, N_Vector ydot, void* self);
+  static int fi_callback(double t, N_Vector y, N_Vector ydot, void* self);
+  static int jtimes_callback(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector fy, void* self, N_Vector tmp);
+  static int psolve_callback(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z, double gamma, double delta,
+                             int lr, void* self);
+  static int stability_callback(N_Vector y, double t, double* hstab, void* self);
+  static int step_done_callback(double t, N_Vector y, void* self);
+  // f_E(t, y) unfrozen and W = L(x) v + b(x) of the state, from the cache when (t, y) is the last
+  // state evaluated.
+  void evaluate(double t, const double* y);
+
+  Options opt_;
+  OdeSystem* sys_ = nullptr;
+  ImexSystem* imex_ = nullptr;
+  SUNContext ctx_ = nullptr;
+  N_Vector y_ = nullptr;
+  SUNLinearSolver ls_ = nullptr;
+  void* mem_ = nullptr;
+  double t_ = 0.0;
+  std::size_t vb_ = 0, nv_ = 0;
+  ViscousOperator frozen_, scratch_;  // L_n, b_n; the latest evaluation's operator
+  std::vector<double> cache_y_, cache_fe_, cache_w_, wn_;
+  double cache_t_ = 0.0;
+  bool cached_ = false;
+  long steps_before_ = 0, rejected_before_ = 0;
+};
+
+}  // namespace sphmol

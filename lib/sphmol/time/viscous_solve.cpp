@@ -1,0 +1,95 @@
+#include "sphmol/time/viscous_solve.hpp"
+
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_pcg.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sphmol {
+
+ViscousSolve::ViscousSolve(KrylovOptions o) : opt_(std::move(o)) {
+  if (opt_.solver != "pcg" && opt_.solver != "spgmr")
+    throw std::invalid_argument("time.krylov.solver: unknown '" + opt_.solver + "' (pcg or spgmr)");
+  if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
+}
+
+ViscousSolve::~ViscousSolve() {
+  if (ls_) SUNLinSolFree(ls_);
+  if (x_) N_VDestroy(x_);
+  if (b_) N_VDestroy(b_);
+  if (ctx_) SUNContext_Free(&ctx_);
+}
+
+void ViscousSolve::resize(std::size_t n) {
+  if (ls_ && n == n_) return;
+  if (ls_) SUNLinSolFree(ls_);
+  if (x_) N_VDestroy(x_);
+  if (b_) N_VDestroy(b_);
+  n_ = n;
+  x_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+  b_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+  // Right preconditioning for GMRES, so that its test is on the true residual; PCG is symmetric.
+  ls_ = opt_.solver == "pcg" ? SUNLinSol_PCG(x_, SUN_PREC_LEFT, opt_.max_iterations, ctx_)
+                             : SUNLinSol_SPGMR(x_, SUN_PREC_RIGHT, opt_.max_iterations, ctx_);
+  if (!ls_) throw std::runtime_error("SUNDIALS: creating the Krylov solver failed");
+  if (SUNLinSolSetATimes(ls_, this, &ViscousSolve::atimes) != 0 ||
+      SUNLinSolSetPreconditioner(ls_, this, nullptr, &ViscousSolve::psolve) != 0 || SUNLinSolInitialize(ls_) != 0)
+    throw std::runtime_error("SUNDIALS: setting up the Krylov solver failed");
+}
+
+int ViscousSolve::atimes(void* self, N_Vector v, N_Vector z) {
+  auto* me = static_cast<ViscousSolve*>(self);
+  const double* vv = N_VGetArrayPointer(v);
+  double* zz = N_VGetArrayPointer(z);
+  me->op_->apply(vv, zz);
+  const double g = me->gamma_;
+  const std::size_t n = me->n_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < n; ++k) zz[k] = vv[k] - g * zz[k];
+  return 0;
+}
+
+int ViscousSolve::psolve(void* self, N_Vector r, N_Vector z, double, int) {
+  auto* me = static_cast<ViscousSolve*>(self);
+  const double* rr = N_VGetArrayPointer(r);
+  double* zz = N_VGetArrayPointer(z);
+  const auto& diag = me->op_->diagonal();
+  const std::size_t rows = me->op_->rows(), n = me->n_;
+  const double g = me->gamma_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < n; ++k) zz[k] = rr[k] / (1.0 - g * diag[k % rows]);
+  return 0;
+}
+
+int ViscousSolve::solve(const ViscousOperator& op, double gamma, const double* r, double* x) {
+  const std::size_t n = op.size();
+  if (n == 0) return 0;
+  resize(n);
+  op_ = &op;
+  gamma_ = gamma;
+  double* xx = N_VGetArrayPointer(x_);
+  double* bb = N_VGetArrayPointer(b_);
+  std::copy(r, r + n, bb);
+  std::copy(x, x + n, xx);
+  const double norm = std::sqrt(N_VDotProd(b_, b_));
+  if (norm == 0.0) {
+    std::fill(x, x + n, 0.0);
+    return 0;
+  }
+  SUNLinSolSetZeroGuess(ls_, SUNFALSE);  // warm start: x holds the caller's guess
+  SUNLinSolSetup(ls_, nullptr);
+  const int flag = SUNLinSolSolve(ls_, nullptr, x_, b_, opt_.tolerance * norm);
+  const int its = SUNLinSolNumIters(ls_);
+  iterations_ += its;
+  if (flag != SUNLS_SUCCESS)
+    throw std::runtime_error("time.krylov: " + opt_.solver + " did not reach the tolerance " + std::to_string(opt_.tolerance) +
+                             " in " + std::to_string(its) + " iterations (time.krylov.max_iterations = " +
+                             std::to_string(opt_.max_iterations) + "; flag " + std::to_string(flag) + ")");
+  std::copy(xx, xx + n, x);
+  return its;
+}
+
+}  // namespace sphmol
