@@ -37,6 +37,7 @@ class TaitEos final : public Term<D> {
     if (whole_gamma_ > 0) run(w, [n = whole_gamma_](double r) { return power(r, n); });
     else run(w, [g = law_.gamma](double r) { return std::pow(r, g); });
   }
+  bool runs_in_team() const override { return true; }  // one worksharing loop (Term::runs_in_team)
   const TaitLaw& law() const { return law_; }
   // x^n for n >= 1, by squaring.
   static double power(double x, unsigned n) {
@@ -52,7 +53,7 @@ class TaitEos final : public Term<D> {
   template <class Pow>
   void run(Workspace<D>& w, Pow pow_gamma) const {
     const double c0 = std::sqrt(law_.B * law_.gamma / law_.rho0);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       const double r = w.rho[i] / law_.rho0, rg = pow_gamma(r);
       w.p[i] = std::max(floor_, law_.B * (rg - 1.0));

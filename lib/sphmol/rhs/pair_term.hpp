@@ -42,6 +42,9 @@ class PairTerm : public Term<D> {
   virtual bool zero_beyond_support() const { return false; }
   // Once per evaluation, before any row (sizing per-particle scratch).
   virtual void prepare(Workspace<D>&) const {}
+  // True when prepare() is written for every thread of a region to call together (as
+  // Term::runs_in_team), which lets a fused pass run inside the system's region.
+  virtual bool prepares_in_team() const { return false; }
   virtual void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const = 0;
 };
 
@@ -52,7 +55,8 @@ class PairTermFor : public PairTerm<D> {
     static_cast<const Derived*>(this)->row_impl(w, i, r);
   }
   void apply(Workspace<D>& w) const final {
-    this->prepare(w);
+    const bool team_prepare = this->prepares_in_team();
+    if (!team_prepare) this->prepare(w);
     const auto range = row_range(this->rows(), w);
     const std::size_t lo = range.first, hi = range.second;
     const auto* self = static_cast<const Derived*>(this);
@@ -60,9 +64,12 @@ class PairTermFor : public PairTerm<D> {
     schedule_.reset(omp_get_max_threads(), 1);
     schedule_.place(0, w.pairs.offset.data(), lo, hi);
 #pragma omp parallel
-    schedule_.run(omp_get_thread_num(), [&](int, std::size_t i0, std::size_t i1) {
-      for (std::size_t i = i0; i < i1; ++i) self->row_impl(w, i, stored_row(w, i));
-    });
+    {
+      if (team_prepare) this->prepare(w);  // ends with a barrier
+      schedule_.run(omp_get_thread_num(), [&](int, std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) self->row_impl(w, i, stored_row(w, i));
+      });
+    }
   }
 
  private:
