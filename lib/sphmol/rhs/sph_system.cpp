@@ -297,7 +297,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     std::size_t e = k;  // terms [k, e) run in a team
     while (e < terms_.size() && terms_[e]->runs_in_team()) ++e;
     const bool first = k == 0, last = e == terms_.size();
-#pragma omp parallel
+    // Between two terms that open their own regions there is nothing to run: no team is started.
+#pragma omp parallel if (first || last || e > k)
     {
       if (first) {
         // dx/dt = v, every other rate 0, before the terms add to them.
