@@ -4,13 +4,21 @@
 // particles), the number compared with DualSPHysics 5.4 on the same dam break (0.67 us on 1 thread, 0.37 on 2).
 //   sph-bench --benchmark_filter=DamBreakStep   single steps on 1 and 2 threads
 //   sph-bench --benchmark_filter=DamBreakRun    whole runs, 1 and 2 threads alternating
-// On a shared machine set OMP_WAIT_POLICY=passive: spinning at barriers while the partner thread is
-// descheduled made 2 threads 4x slower than 1 at load ~10 on 2 cores (1.37x faster with passive).
+//   sph-bench --benchmark_filter=DamBreakContention   1 thread, 2 threads, and 2 threads beside a
+//                                                process that keeps one core busy, alternating
+// sph-bench, like sph-mol, runs with idle threads spinning GOMP_SPINCOUNT = 10,000 iterations unless
+// OMP_WAIT_POLICY or GOMP_SPINCOUNT is set (run/openmp_wait_policy.hpp); the label names the policy.
 #include <benchmark/benchmark.h>
 #include <omp.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -130,5 +138,108 @@ void DamBreakRun(benchmark::State& state) {
   state.counters["particles"] = particles;
 }
 BENCHMARK(DamBreakRun)->Args({20, 1000})->Args({20, 100})->ArgNames({"block", "t_end_ms"})->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+// The OpenMP wait policy this process runs with, as libgomp read it from the environment.
+std::string wait_policy_label() {
+  const char* policy = std::getenv("OMP_WAIT_POLICY");
+  const char* spin = std::getenv("GOMP_SPINCOUNT");
+  std::string s = std::string("OMP_WAIT_POLICY=") + (policy ? policy : "(unset)");
+  return s + " GOMP_SPINCOUNT=" + (spin ? spin : "(unset: 300000)");
+}
+
+// A child process that keeps one core busy (the last this process may use), stopped until resume()
+// and killed by the destructor (or with this process: PR_SET_PDEATHSIG).
+class BusyCore {
+ public:
+  BusyCore() {
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    int core = -1;
+    if (::sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+      for (int c = 0; c < CPU_SETSIZE; ++c)
+        if (CPU_ISSET(c, &allowed)) core = c;
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      // The child of a multithreaded process: system calls and a loop only.
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (core >= 0) {
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(core, &one);
+        ::sched_setaffinity(0, sizeof one, &one);
+      }
+      ::raise(SIGSTOP);
+      for (;;) __asm__ __volatile__("");  // an empty statement the compiler must keep
+    }
+    if (pid_ > 0) {
+      int status = 0;
+      ::waitpid(pid_, &status, WUNTRACED);  // stopped: it spins only between resume() and pause()
+    }
+  }
+  BusyCore(const BusyCore&) = delete;
+  BusyCore& operator=(const BusyCore&) = delete;
+  ~BusyCore() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+  }
+  bool running() const { return pid_ > 0; }
+  void resume() const { ::kill(pid_, SIGCONT); }
+  void pause() const {
+    ::kill(pid_, SIGSTOP);
+    int status = 0;
+    ::waitpid(pid_, &status, WUNTRACED);
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
+
+// The dam break after 200 steps of collapse, then `rounds` rounds of three blocks of `block` steps:
+// 1 thread, 2 threads, and 2 threads while another process keeps one core busy (BusyCore). The three
+// modes sample the same stretch of the run within a few hundred milliseconds of each other, so
+// their ratios are free of the drift in machine speed. Counters: us/particle-step of each mode;
+// 2vs1 = 1 thread / 2 threads (quiet); busy2vs1 = 1 thread / 2 threads beside the busy core (>= 1:
+// two threads are no slower than one even so); busy_vs_quiet = 2 threads quiet / beside the busy core.
+void DamBreakContention(benchmark::State& state) {
+  const long block = state.range(0), rounds = state.range(1);
+  std::array<double, 3> wall{};  // [mode]: 1 thread, 2 threads, 2 threads beside the busy core
+  std::array<long, 3> steps{};
+  double particles = 0.0;
+  for (auto _ : state) {
+    DamBreak run(sphmol::load_config(dam_break_yaml()));
+    particles = static_cast<double>(run.sys->particles().size());
+    const double never = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 200; ++k) run.integrator->step_toward(never);
+    BusyCore busy;
+    if (!busy.running()) {
+      state.SkipWithError("fork failed: no competing process");
+      break;
+    }
+    for (long r = 0; r < rounds; ++r)
+      for (int mode = 0; mode < 3; ++mode) {
+        omp_set_num_threads(mode == 0 ? 1 : 2);
+        if (mode == 2) busy.resume();
+        const double start = omp_get_wtime();
+        for (long n = 0; n < block; ++n) run.integrator->step_toward(never);
+        wall[mode] += omp_get_wtime() - start;
+        if (mode == 2) busy.pause();
+        steps[mode] += block;
+      }
+    benchmark::DoNotOptimize(run.y.data());
+  }
+  omp_set_num_threads(1);
+  const auto us = [&](int mode) { return 1e6 * wall[mode] / (static_cast<double>(steps[mode]) * particles); };
+  state.counters["us_1thread"] = us(0);
+  state.counters["us_2threads"] = us(1);
+  state.counters["us_2threads_busy"] = us(2);
+  state.counters["2vs1"] = us(0) / us(1);
+  state.counters["busy2vs1"] = us(0) / us(2);
+  state.counters["busy_vs_quiet"] = us(1) / us(2);
+  state.counters["particles"] = particles;
+  state.SetLabel(wait_policy_label());
+}
+BENCHMARK(DamBreakContention)->Args({20, 15})->ArgNames({"block", "rounds"})->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 }  // namespace

@@ -13,6 +13,8 @@
 //   sph-bench --benchmark_filter=DamBreakStep    end to end: dam-break leapfrog steps, 1 and 2 threads
 //   sph-bench --benchmark_filter=DamBreakRun     the whole dam-break run, alternating 1 and 2 threads every
 //                                                20 steps: the 2-vs-1 ratio (bench_dam_break.cpp)
+//   sph-bench --benchmark_filter=DamBreakContention  dam-break steps on 1 thread, 2 threads, and 2 threads
+//                                                beside a process that keeps one core busy (ratios)
 //   sph-bench --benchmark_filter=DamBreak3DStep  end to end in 3D: a dam break in a box, 1.1e5 particles,
 //                                                1 and 2 threads (bench_dam_break_3d.cpp)
 //   scripts/bench_memory.sh                      peak memory per particle (one process per size)
@@ -29,6 +31,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/run/openmp_wait_policy.hpp"
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/scenes/box_scene.hpp"
 #include "sphmol/time/integrator.hpp"
@@ -277,4 +280,13 @@ BENCHMARK(Memory)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// As sph-mol: a short spin at barriers unless the environment chooses (run/openmp_wait_policy.hpp);
+// the benchmarks use up to two threads. Set OMP_WAIT_POLICY or GOMP_SPINCOUNT to measure another.
+int main(int argc, char** argv) {
+  sphmol::bound_openmp_spin(std::min(2, omp_get_num_procs()), argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,6 +1,9 @@
 #include "command_line.hpp"
 
 #include <filesystem>
+#include <string>
+
+#include "sphmol/run/openmp_wait_policy.hpp"
 
 namespace sphmol::app {
 
@@ -14,7 +17,10 @@ void add_run_options(CLI::App& app, RunCommand& cmd) {
   app.add_flag("--quiet,-q", cmd.quiet, "no progress line and no per-output log lines on stderr");
   app.add_option("--config", cmd.config_path, "case configuration (YAML), see config/README.md")->check(CLI::ExistingFile);
   app.add_option("--output", cmd.output, "output directory (overrides output.directory)");
-  app.add_option("--threads", cmd.threads, "OpenMP threads for the RHS and vector operations (0 = all cores)")
+  app.add_option("--threads", cmd.threads, std::string("OpenMP threads for the RHS and vector operations (0 = all cores); idle threads spin ") +
+                     bounded_spin_count +
+                     " iterations at a barrier, then sleep, unless OMP_WAIT_POLICY or GOMP_SPINCOUNT is set "
+                     "(docs/performance.md)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--set", cmd.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
 }

@@ -13,6 +13,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/version.hpp"
 #include "sphmol/run/checkpoint.hpp"
+#include "sphmol/run/openmp_wait_policy.hpp"
 #include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "command_line.hpp"
@@ -90,6 +91,13 @@ int main(int argc, char** argv) {
       s.setup(*sub);
     }
     if (const auto code = sphmol::app::parse_command_line(app, argc, argv, std::cout, std::cerr)) return *code;
+    // A short spin at barriers, so that a busy machine does not make two threads slower than one
+    // (run/openmp_wait_policy.hpp). Before any parallel region, and before any message, which the
+    // re-executed program would print again. Returns only if not re-executed.
+    if (!sphmol::bound_openmp_spin(cmd.threads > 0 ? cmd.threads : omp_get_num_procs(), argv))
+      std::cerr << "sph-mol: warning: could not restart with GOMP_SPINCOUNT=" << sphmol::bounded_spin_count
+                << "; idle threads spin at barriers for libgomp's default time (set OMP_WAIT_POLICY=passive or "
+                   "GOMP_SPINCOUNT to choose)\n";
     if (cmd.threads > omp_get_num_procs())  // oversubscribed threads only wait for each other
       std::cerr << "sph-mol: warning: --threads " << cmd.threads << " is more than the " << omp_get_num_procs()
                 << " cores of this machine\n";

@@ -2,6 +2,8 @@
 // derived from the scene, and each one ends a state that crosses it with a named BlowUp.
 #include <catch2/catch.hpp>
 
+#include <omp.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -244,4 +246,43 @@ TEST_CASE("health limits: walls that all share one translation measure the energ
     const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
     CHECK_FALSE(lim.frame.on);
   }
+}
+
+TEST_CASE("health check: the last good state is the latest state that passed, on 1 and 2 threads", "[health][threads]") {
+  // The check copies each state before it knows whether the state passes, and keeps the copy only
+  // when it does: a state that fails must leave the previous good one in place.
+  const Config c = shipped("taylor_green", {"discretization.particles_across=16"});
+  auto cs = make_case<2>(c);
+  auto sys = cs->build(c);
+  std::vector<double> y0 = sys->initial_state(), ydot(y0.size());
+  sys->rhs(0.0, y0.data(), ydot.data());
+  const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
+  const auto& L = sys->layout();
+  for (const int threads : {1, 2}) {
+    INFO("threads " << threads);
+    omp_set_num_threads(threads);
+    HealthCheck<2> check(*sys, y0.data(), 0.0, lim);
+    std::vector<double> y1 = y0, y2 = y0;
+    for (std::size_t i = 0; i < L.n; ++i) {
+      y1[L.velocity(0) + i] *= 0.99;
+      y2[L.velocity(0) + i] *= 0.98;
+    }
+    check(1e-3, y1.data(), 1e-3);
+    check(2e-3, y2.data(), 1e-3);
+    CHECK(check.last_good_state() == y2);
+    CHECK(check.last_good_time() == 2e-3);
+    std::vector<double> bad = y2;
+    bad[L.velocity(1) + 3] = std::nan("");
+    CHECK_THROWS_AS(check(3e-3, bad.data(), 1e-3), BlowUp);
+    CHECK(check.last_good_state() == y2);
+    CHECK(check.last_good_time() == 2e-3);
+    std::vector<double> fast = y2;  // finite but beyond the speed bound: fails after the copy was made
+    fast[L.velocity(0) + 5] = 2.0 * lim.max_speed;
+    CHECK_THROWS_AS(check(3e-3, fast.data(), 1e-3), BlowUp);
+    CHECK(check.last_good_state() == y2);
+    check(3e-3, y1.data(), 1e-3);
+    CHECK(check.last_good_state() == y1);
+    CHECK(check.last_good_time() == 3e-3);
+  }
+  omp_set_num_threads(1);
 }

@@ -126,3 +126,45 @@ TEST_CASE("the Verlet staleness test gives the same answer for any thread count"
     CHECK(list.stale(moved.input(0.0)));
   }
 }
+
+TEST_CASE("the Verlet staleness test run inside the caller's parallel region equals the one on its own",
+          "[neighbors][threads]") {
+  auto c = column<2>(1.0 / 110, false, 3);
+  const std::size_t last = c.kind.size() - 1;
+  // begin_check by one thread, check_in_team by every thread of a region, then stale() / update().
+  auto team_check = [](VerletList<2>& list, const SearchInput<2>& in) {
+    list.begin_check(in);
+#pragma omp parallel
+    list.check_in_team(in);
+  };
+  for (const int threads : {1, 2, 3}) {
+    INFO("threads " << threads);
+    ThreadCount tc(threads);
+    auto moved = c;
+    VerletList<2> list(std::make_unique<CellListSearch<2>>(), 0.02, 0.004);
+    team_check(list, moved.input(0.0));
+    CHECK(list.stale(moved.input(0.0)));  // never built
+    CHECK(list.update(moved.input(0.0)));
+    moved.x[0][last] += 0.00199;  // less than skin/2 = 0.002
+    team_check(list, moved.input(0.0));
+    CHECK_FALSE(list.stale(moved.input(0.0)));
+    CHECK_FALSE(list.update(moved.input(0.0)));
+    moved.x[1][last] += 0.0005;  // now more, in the last thread's block
+    team_check(list, moved.input(0.0));
+    CHECK(list.stale(moved.input(0.0)));
+    const long before = list.rebuilds();
+    CHECK(list.update(moved.input(0.0)));
+    CHECK(list.rebuilds() == before + 1);
+    moved.x[0][0] -= 0.0021;  // the first thread's block
+    team_check(list, moved.input(0.0));
+    CHECK(list.stale(moved.input(0.0)));
+    // A support that grows after the check eats the skin: the check is discarded, not trusted.
+    CHECK(list.update(moved.input(0.0)));
+    moved.x[0][last] += 0.0015;
+    team_check(list, moved.input(0.0));
+    CHECK_FALSE(list.stale(moved.input(0.0)));
+    list.set_support(0.0235);  // room 0.0005, so a move of 0.00025 is too far
+    CHECK(list.stale(moved.input(0.0)));
+    CHECK(list.update(moved.input(0.0)));
+  }
+}

@@ -25,16 +25,20 @@ class WallPenetrationMonitor final : public Term<2> {
   WallPenetrationMonitor(double Lx, double Ly, std::shared_ptr<WallPenetration> state)
       : Lx_(Lx), Ly_(Ly), s_(std::move(state)) {}
   std::string_view name() const override { return "wall_penetration_monitor"; }
+  // Every thread of the system's region calls apply() (Term::runs_in_team).
+  bool runs_in_team() const override { return true; }
   void apply(Workspace<2>& w) const override {
     auto& s = *s_;
+#pragma omp single
     s.crossed.resize(w.n_fluid, 0);
     const long n = static_cast<long>(w.n_fluid);
     const double *const xs = w.x[0].data(), *const ys = w.x[1].data();
     std::uint8_t* const crossed = s.crossed.data();
-    // Every evaluation: a parallel pass. A count and a minimum do not depend on the thread count.
-    double gap = s.min_gap;
+    // Every evaluation: one worksharing pass, each thread's count and minimum combined after it. A
+    // count and a minimum do not depend on the thread count or the order of combining.
+    double gap = std::numeric_limits<double>::infinity();
     long count = 0;
-#pragma omp parallel for schedule(static) reduction(min : gap) reduction(+ : count)
+#pragma omp for schedule(static) nowait
     for (long i = 0; i < n; ++i) {
       const double x = xs[i], y = ys[i];
       const bool out = y < 0.0 || (y < Ly_ && (x < 0.0 || x > Lx_));
@@ -44,8 +48,12 @@ class WallPenetrationMonitor final : public Term<2> {
       }
       if (!out && x >= 0.0 && x <= Lx_) gap = std::min(gap, std::min({x, Lx_ - x, y}));
     }
-    s.count += count;
-    s.min_gap = gap;
+#pragma omp critical(sphmol_wall_penetration_monitor)
+    {
+      s.count += count;
+      s.min_gap = std::min(s.min_gap, gap);
+    }
+#pragma omp barrier
   }
 
  private:

@@ -4,6 +4,7 @@
 // have come within the support unseen. The test looks at the positions each RHS evaluation is
 // given, so it stays valid across rejected steps and stage positions alike.
 #include <array>
+#include <atomic>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -20,11 +21,41 @@ class VerletList {
       : search_(std::move(search)), support_(support_radius), skin_(skin) {}
 
   // True when update(in) would rebuild.
-  bool stale(const SearchInput<D>& in) const { return !built_ || moved_too_far(in); }
+  bool stale(const SearchInput<D>& in) const {
+    if (!built_) return true;
+    if (checked_ && same_check(in)) return far_.load(std::memory_order_relaxed);
+    return moved_too_far(in);
+  }
+
+  // The displacement test of the next stale(in) / update(in), run by the caller's threads inside a
+  // parallel region that already exists, so that it adds no region of its own per evaluation:
+  // begin_check(in) by one thread before the region, check_in_team(in) by every thread once every
+  // position of `in` is written (after a barrier). The region's end publishes the result. A change
+  // of the support or of the particle count in between discards it (update tests again).
+  void begin_check(const SearchInput<D>& in) {
+    checked_ = built_;
+    const bool far = built_ && trivially_far(in);
+    far_.store(far, std::memory_order_relaxed);
+    scan_ = checked_ && !far;  // read by every thread: all of them meet the loop, or none
+    check_n_ = in.n;
+    check_x_ = in.x[0];
+    check_support_ = support_;
+  }
+  void check_in_team(const SearchInput<D>& in) {
+    if (!scan_) return;  // decided without the positions
+    const double limit2 = this->limit2();
+    const long n = static_cast<long>(in.n);
+    bool far = false;
+#pragma omp for schedule(static) nowait
+    for (long i = 0; i < n; ++i) far |= moved(in, i, limit2);
+    if (far) far_.store(true, std::memory_order_relaxed);
+  }
 
   // Rebuilds if needed; returns true when it did.
   bool update(const SearchInput<D>& in) {
-    if (stale(in)) {
+    const bool rebuild = stale(in);
+    checked_ = false;
+    if (rebuild) {
       SearchInput<D> q = in;
       q.radius = support_ + skin_;
       search_->build(q, pairs_);
@@ -55,25 +86,31 @@ class VerletList {
   std::string_view search_name() const { return search_->name(); }
 
  private:
+  // A support grown by g since the build leaves skin - g for the particles' motion.
+  double room() const { return skin_ - std::max(0.0, support_ - built_support_); }
+  double limit2() const { return 0.25 * room() * room(); }
+  // Stale whatever the positions: particles were added or removed, or the support ate the skin.
+  bool trivially_far(const SearchInput<D>& in) const { return in.n != x_build_[0].size() || room() <= 0.0; }
+  bool same_check(const SearchInput<D>& in) const {
+    return in.n == check_n_ && in.x[0] == check_x_ && support_ == check_support_;
+  }
+  bool moved(const SearchInput<D>& in, long i, double limit2) const {
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double dx = in.domain->min_image(d, in.x[d][i] - x_build_[d][i]);
+      r2 += dx * dx;
+    }
+    return r2 > limit2;
+  }
   bool moved_too_far(const SearchInput<D>& in) const {
-    // A support grown by g since the build leaves skin - g for the particles' motion.
-    if (in.n != x_build_[0].size()) return true;  // particles were added or removed
-    const double room = skin_ - std::max(0.0, support_ - built_support_);
-    if (room <= 0.0) return true;
-    const double limit2 = 0.25 * room * room;
+    if (trivially_far(in)) return true;
+    const double limit2 = this->limit2();
     // Every evaluation tests every particle (the list is rarely stale, so an early exit seldom
     // helps): split over threads; an OR of per-particle tests is the same for any thread count.
     const long n = static_cast<long>(in.n);
     bool far = false;
 #pragma omp parallel for schedule(static) reduction(|| : far)
-    for (long i = 0; i < n; ++i) {
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double dx = in.domain->min_image(d, in.x[d][i] - x_build_[d][i]);
-        r2 += dx * dx;
-      }
-      far |= r2 > limit2;
-    }
+    for (long i = 0; i < n; ++i) far |= moved(in, i, limit2);
     return far;
   }
 
@@ -83,6 +120,12 @@ class VerletList {
   std::array<std::vector<double>, D> x_build_;
   bool built_ = false;
   long rebuilds_ = 0;
+  // The test of begin_check / check_in_team: valid for check_n_ particles at support check_support_.
+  bool checked_ = false, scan_ = false;
+  std::atomic<bool> far_{false};
+  std::size_t check_n_ = 0;
+  const double* check_x_ = nullptr;
+  double check_support_ = 0.0;
 };
 
 }  // namespace sphmol

@@ -20,10 +20,14 @@ class BodyForce final : public Term<D> {
  public:
   explicit BodyForce(const std::array<double, D>& g, double ramp = 0.0) : g_(g), ramp_(ramp) {}
   std::string_view name() const override { return "body_force"; }
+  bool runs_in_team() const override { return true; }  // worksharing loops (Term::runs_in_team)
   void apply(Workspace<D>& w) const override {
     const double f = body_force_ramp_factor(w.t, ramp_);
-    for (int d = 0; d < D; ++d)
+    for (int d = 0; d < D; ++d) {
+#pragma omp for schedule(static) nowait
       for (std::size_t i = 0; i < w.n_fluid; ++i) w.dvdt[d][i] += f * g_[d];
+    }
+#pragma omp barrier
   }
 
  private:

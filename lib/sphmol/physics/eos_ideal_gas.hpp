@@ -13,8 +13,9 @@ class IdealGasEos final : public Term<D> {
  public:
   explicit IdealGasEos(double gamma) : gamma_(gamma) {}
   std::string_view name() const override { return "eos_ideal_gas"; }
+  bool runs_in_team() const override { return true; }  // one worksharing loop (Term::runs_in_team)
   void apply(Workspace<D>& w) const override {
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       const double e = std::max(w.e[i], 0.0);  // a negative e (overshoot) would make c imaginary
       w.p[i] = (gamma_ - 1.0) * w.rho[i] * w.e[i];

@@ -19,16 +19,17 @@ class LinearEos final : public Term<D> {
   LinearEos(double sound_speed, double rest_density, bool relative)
       : c2_(sound_speed * sound_speed), rho_ref_(relative ? rest_density : 0.0), relative_(relative) {}
   std::string_view name() const override { return relative_ ? "eos_linear_relative" : "eos_linear"; }
+  bool runs_in_team() const override { return true; }  // one worksharing loop (Term::runs_in_team)
   void apply(Workspace<D>& w) const override {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < w.n; ++i) w.p[i] = c2_ * (w.rho[i] - rho_ref_);
-    if (relative_ && w.particles && !w.particles->rest_density.empty()) {
-      const auto& own = w.particles->rest_density;
-      const std::size_t n_own = std::min(own.size(), w.n);
-      for (std::size_t i = 0; i < n_own; ++i) w.p[i] = c2_ * (w.rho[i] - own[i]);
-    }
+    // The particles' own rest densities (Particles::rest_density) for [0, n_own); the rest keep rho0.
+    const double* own = relative_ && w.particles ? w.particles->rest_density.data() : nullptr;
+    const std::size_t n_own = own ? std::min(w.particles->rest_density.size(), w.n) : 0;
     const double c = std::sqrt(c2_);  // constant sound speed, for the artificial viscosity
-    for (std::size_t i = 0; i < w.n; ++i) w.c[i] = c;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < w.n; ++i) {
+      w.p[i] = c2_ * (w.rho[i] - (i < n_own ? own[i] : rho_ref_));
+      w.c[i] = c;
+    }
   }
 
  private:

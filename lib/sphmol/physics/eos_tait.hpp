@@ -41,8 +41,7 @@ class TaitEos final : public Term<D> {
     if (whole_gamma_ > 0) run(w, [n = whole_gamma_](double r) { return power(r, n); });
     else run(w, [g = law_.gamma](double r) { return std::pow(r, g); });
   }
-  // The particles' own rest densities (Particles::rest_density), for [0, size); the rest (generated
-  // particles) keep rho0.
+  bool runs_in_team() const override { return true; }  // worksharing loops only (Term::runs_in_team)
   const TaitLaw& law() const { return law_; }
   // x^n for n >= 1, by squaring.
   static double power(double x, unsigned n) {
@@ -58,18 +57,19 @@ class TaitEos final : public Term<D> {
   template <class Pow>
   void run(Workspace<D>& w, Pow pow_gamma) const {
     const double c0 = std::sqrt(law_.B * law_.gamma / law_.rho0);
-    // A workspace without particles (unit tests of the law alone) has no rest densities of its own.
+    // The particles' own rest densities (Particles::rest_density), for [0, size); the rest (generated
+    // particles) keep rho0. A workspace without particles (unit tests of the law alone) has no rest densities of its own.
     const double* own = w.particles ? w.particles->rest_density.data() : nullptr;
     const std::size_t n_own = w.particles ? std::min(w.particles->rest_density.size(), w.n) : 0;
     // B_i / rho0_i = B / rho0 for every phase (one c0).
     const double b_per_rho0 = law_.B / law_.rho0;
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static) nowait
     for (std::size_t i = 0; i < n_own; ++i) {
       const double r = w.rho[i] / own[i], rg = pow_gamma(r);
       w.p[i] = std::max(floor_, b_per_rho0 * own[i] * (rg - 1.0));
       w.c[i] = c0 * std::sqrt(rg / r);
     }
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
     for (std::size_t i = n_own; i < w.n; ++i) {
       const double r = w.rho[i] / law_.rho0, rg = pow_gamma(r);
       w.p[i] = std::max(floor_, law_.B * (rg - 1.0));

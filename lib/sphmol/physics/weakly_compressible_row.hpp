@@ -29,12 +29,18 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   }
   // Every contribution carries a factor F (Pi_ij's denominator is positive), so skin pairs add zeros.
   bool zero_beyond_support() const override { return true; }
+  // Called by every thread of the pass's region (PairTerm::prepares_in_team); the loop's barrier
+  // publishes q and vol before any row reads them at a neighbour.
+  bool prepares_in_team() const override { return true; }
   void prepare(Workspace<D>& w) const override {
-    q_.resize(w.n);
-    if constexpr (WithDiffusion) vol_.resize(w.n);
+#pragma omp single
+    {
+      q_.resize(w.n);
+      if constexpr (WithDiffusion) vol_.resize(w.n);
+    }
     const auto& m = w.particles->mass;
     const std::size_t nf = w.n_fluid;
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       q_[i] = w.p[i] / (w.rho[i] * w.rho[i]);
       if constexpr (WithDiffusion) vol_[i] = i < nf ? m[i] / w.rho[i] : 0.0;  // delta-SPH: fluid neighbours only

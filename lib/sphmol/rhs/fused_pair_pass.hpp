@@ -41,22 +41,30 @@ class FusedPairPass final : public Term<D> {
   std::string_view name() const override { return name_; }
   const std::vector<std::unique_ptr<PairTerm<D>>>& terms() const { return terms_; }
 
+  // Called by every thread of the system's region (Term::runs_in_team): the set-up in `single`, the
+  // terms' own preparations, the rows, and a barrier at the end, after which every row is written.
+  bool runs_in_team() const override { return true; }
   void apply(Workspace<D>& w) const override {
-    kernel_->prepare(w);
-    for (const auto& t : terms_) t->prepare(w);
     const PairList& verlet = *w.verlet;
     const std::size_t nf = w.n_fluid;
-    std::size_t wall_hi = nf;  // wall rows run up to the furthest any term needs
-    for (const auto* t : walls_) wall_hi = std::max(wall_hi, row_range(t->rows(), w).second);
-    const int threads = omp_get_max_threads();
-    const auto T = static_cast<std::size_t>(threads);
-    buffers_.resize(T);
-    if (w.pair_thread_seconds.size() < T) w.pair_thread_seconds.resize(T, 0.0);
-    // Rows shared by cost in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
-    schedule_.reset(threads, 2);
-    schedule_.place(0, verlet.offset.data(), 0, nf);
-    schedule_.place(1, verlet.offset.data(), nf, wall_hi);
-#pragma omp parallel
+#pragma omp single
+    {
+      kernel_->prepare(w);
+      for (const auto& t : terms_)
+        if (!t->prepares_in_team()) t->prepare(w);
+      std::size_t wall_hi = nf;  // wall rows run up to the furthest any term needs
+      for (const auto* t : walls_) wall_hi = std::max(wall_hi, row_range(t->rows(), w).second);
+      const int threads = omp_get_num_threads();
+      const auto T = static_cast<std::size_t>(threads);
+      buffers_.resize(T);
+      if (w.pair_thread_seconds.size() < T) w.pair_thread_seconds.resize(T, 0.0);
+      // Rows shared by cost in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
+      schedule_.reset(threads, 2);
+      schedule_.place(0, verlet.offset.data(), 0, nf);
+      schedule_.place(1, verlet.offset.data(), nf, wall_hi);
+    }  // the barrier of `single`: every thread sees the schedule
+    for (const auto& t : terms_)
+      if (t->prepares_in_team()) t->prepare(w);  // each ends with a barrier
     {
       const int thread = omp_get_thread_num();
       const double start = omp_get_wtime();
@@ -79,6 +87,7 @@ class FusedPairPass final : public Term<D> {
       });
       w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
     }
+#pragma omp barrier
   }
 
  private:

@@ -42,6 +42,9 @@ class PairTerm : public Term<D> {
   virtual bool zero_beyond_support() const { return false; }
   // Once per evaluation, before any row (sizing per-particle scratch).
   virtual void prepare(Workspace<D>&) const {}
+  // True when prepare() is written for every thread of a region to call together (as
+  // Term::runs_in_team), which lets a fused pass run inside the system's region.
+  virtual bool prepares_in_team() const { return false; }
   virtual void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const = 0;
 };
 
@@ -51,18 +54,25 @@ class PairTermFor : public PairTerm<D> {
   void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const final {
     static_cast<const Derived*>(this)->row_impl(w, i, r);
   }
+  // Over the stored list, called by every thread of the system's region (Term::runs_in_team): the
+  // set-up in `single`, the term's preparation, the rows, and a barrier after them.
+  bool runs_in_team() const final { return true; }
   void apply(Workspace<D>& w) const final {
-    this->prepare(w);
-    const auto range = row_range(this->rows(), w);
-    const std::size_t lo = range.first, hi = range.second;
+    const bool team_prepare = this->prepares_in_team();
     const auto* self = static_cast<const Derived*>(this);
-    // Rows shared by their active pairs in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
-    schedule_.reset(omp_get_max_threads(), 1);
-    schedule_.place(0, w.pairs.offset.data(), lo, hi);
-#pragma omp parallel
+#pragma omp single
+    {
+      if (!team_prepare) this->prepare(w);
+      const auto range = row_range(this->rows(), w);
+      // Rows shared by their active pairs in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
+      schedule_.reset(omp_get_num_threads(), 1);
+      schedule_.place(0, w.pairs.offset.data(), range.first, range.second);
+    }
+    if (team_prepare) this->prepare(w);  // ends with a barrier
     schedule_.run(omp_get_thread_num(), [&](int, std::size_t i0, std::size_t i1) {
       for (std::size_t i = i0; i < i1; ++i) self->row_impl(w, i, stored_row(w, i));
     });
+#pragma omp barrier
   }
 
  private:

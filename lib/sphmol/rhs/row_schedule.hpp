@@ -25,8 +25,8 @@ class RowSchedule {
   static constexpr std::size_t kChunk = 32;
   static constexpr double kRowCost = 4.0;  // fixed work per row, in pairs
 
-  // Before the parallel region, with the team size it will have (a smaller team is fine: the ranges
-  // of absent threads are taken by the others).
+  // By one thread before the rows (before the region, or in `omp single` inside it), with the team
+  // size (a smaller team is fine: the ranges of absent threads are taken by the others).
   void reset(int threads, int sets) {
     const auto need = static_cast<std::size_t>(threads) * static_cast<std::size_t>(sets);
     if (need > capacity_) {
@@ -70,7 +70,7 @@ class RowSchedule {
       for (int set = 0; set < sets_; ++set) {
         Cursor& c = cursors_[static_cast<std::size_t>(set * threads_ + owner)];
         for (;;) {
-          // Relaxed: the rows' results are published by the barrier that ends the parallel region.
+          // Relaxed: the rows' results are published by the barrier after the rows.
           const std::size_t i0 = c.next.fetch_add(kChunk, std::memory_order_relaxed);
           if (i0 >= c.end) break;
           rows(set, i0, std::min(i0 + kChunk, c.end));

@@ -167,68 +167,99 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   const std::size_t nf = layout_.n, nb = n_base_;
   const std::uint32_t* ord = perm_.empty() ? nullptr : perm_.data();  // workspace -> state index
   const Particles<D>& P = *ws_.particles;
-  for (int d = 0; d < D; ++d) {
-    const double* xs = y + layout_.position(d);
-    const double* vs = y + layout_.velocity(d);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i) {
-      const std::size_t k = ord ? ord[i] : i;
-      ws_.x[d][i] = domain_.wrap(d, xs[k]);
-      ws_.v[d][i] = vs[k];
-    }
-    if (!moving_walls_)
-      for (std::size_t i = nf; i < nb; ++i) ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
-  }
+  const bool turning = !normal_now_[0].empty();
   if (moving_walls_) {
     // Walls that follow a motion (core/wall_motion.hpp): position, velocity and, when the body
     // turns, normal at t, once per evaluation, so the pair loops read plain arrays. The trigonometry
     // of each body's frame is evaluated once here, not per particle.
     frames_.clear();
     for (const auto& m : P.motions) frames_.push_back(m.frame(t));
-    const bool turning = !normal_now_[0].empty();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = nf; i < nb; ++i) {
-      const auto s = P.wall_state(i, frames_, t);
-      for (int d = 0; d < D; ++d) {
-        ws_.x[d][i] = domain_.wrap(d, s.x[d]);
-        ws_.v[d][i] = s.v[d];
-        if (turning) normal_now_[d][i] = s.n[d];
+  }
+  // Optional fields: per-scene branches outside every loop.
+  const double* const rho_s = layout_.has_density ? y + layout_.density() : nullptr;
+  const double* const e_s = layout_.has_energy ? y + layout_.energy() : nullptr;
+  const double* const h_s = layout_.has_smoothing_length ? y + layout_.smoothing_length() : nullptr;
+  const std::size_t nw = layout_.n_wall_density;
+  const bool h_from_density = fields_.smoothing_length == SmoothingLengthMode::density;
+  // The neighbour list's displacement test runs in the same region, after the gathers, when nothing
+  // between them and the search changes the particles or the support (no generated particles,
+  // constant h): one region fewer per evaluation.
+  SearchInput<D> in;
+  for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();
+  in.kind = P.kind.data();
+  in.n = ws_.n;
+  in.domain = &domain_;
+  const bool check_in_gather = !generator_ && fields_.smoothing_length == SmoothingLengthMode::constant;
+  if (check_in_gather) pairs_->begin_check(in);
+  // Every gather in one parallel region: each loop writes arrays of its own, so none waits for
+  // another (nowait; the region's end is the one barrier). Loops over the same range with
+  // schedule(static) give particle i to the same thread, so h from the density reads the density
+  // its own thread gathered.
+#pragma omp parallel
+  {
+    for (int d = 0; d < D; ++d) {
+      const double* xs = y + layout_.position(d);
+      const double* vs = y + layout_.velocity(d);
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = 0; i < nf; ++i) {
+        const std::size_t k = ord ? ord[i] : i;
+        ws_.x[d][i] = domain_.wrap(d, xs[k]);
+        ws_.v[d][i] = vs[k];
       }
     }
+    if (moving_walls_) {
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = nf; i < nb; ++i) {
+        const auto s = P.wall_state(i, frames_, t);
+        for (int d = 0; d < D; ++d) {
+          ws_.x[d][i] = domain_.wrap(d, s.x[d]);
+          ws_.v[d][i] = s.v[d];
+          if (turning) normal_now_[d][i] = s.n[d];
+        }
+      }
+    } else {
+      for (int d = 0; d < D; ++d) {
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = nf; i < nb; ++i) ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
+      }
+    }
+    auto gather = [&](const double* from, std::vector<double>& to) {
+      double* dst = to.data();
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = 0; i < nf; ++i) dst[i] = from[ord ? ord[i] : i];
+    };
+    if (rho_s) gather(rho_s, ws_.rho);
+    if (e_s) gather(e_s, ws_.e);
+    if (h_s) gather(h_s, ws_.hs);
+    if (nw > 0) {
+      // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0.
+      const double* rw = y + layout_.wall_density();
+      const double floor = fields_.wall_density_floor;
+#pragma omp for schedule(static) nowait
+      for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
+    }
+    if (h_from_density) {  // Niedoba 2012, eq 2.67
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
+    }
+    if (check_in_gather) {
+#pragma omp barrier
+      pairs_->check_in_team(in);  // reads every position
+    }
   }
-  // Optional fields: per-scene branches outside every pair loop.
-  auto gather = [&](std::size_t block, std::vector<double>& to) {
-    double* dst = to.data();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nf; ++i) dst[i] = y[block + (ord ? ord[i] : i)];
-  };
-  if (layout_.has_density) gather(layout_.density(), ws_.rho);
-  if (layout_.has_energy) gather(layout_.energy(), ws_.e);
-  if (layout_.has_smoothing_length) gather(layout_.smoothing_length(), ws_.hs);
-  if (const std::size_t nw = layout_.n_wall_density; nw > 0) {
-    // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0.
-    const double* rw = y + layout_.wall_density();
-    const double floor = fields_.wall_density_floor;
-    for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
-  }
-  if (fields_.smoothing_length == SmoothingLengthMode::density)  // Niedoba 2012, eq 2.67
-    for (std::size_t i = 0; i < nf; ++i) ws_.hs[i] = h_ref_[i] * std::pow(rho_ref_[i] / ws_.rho[i], 1.0 / D);
   // Generated (ghost) particles are appended here, from the fluid state just gathered (positions,
   // velocities, density, energy, h), so that the neighbour update and every term see them like
   // ordinary wall particles.
   if (generator_ && generator_->generate(nb, particles_, ws_)) pairs_->invalidate();
-  const std::size_t n = ws_.n;
   if (fields_.smoothing_length != SmoothingLengthMode::constant) {
     // Pairs are found with h_ij = (h_i + h_j)/2 <= max h: the list radius follows the largest h.
     const double hmax = *std::max_element(ws_.hs.begin(), ws_.hs.end());
     pairs_->set_support(support_ * hmax);
   }
 
-  SearchInput<D> in;
-  for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();
+  for (int d = 0; d < D; ++d) in.x[d] = ws_.x[d].data();  // a generator may have added particles
   in.kind = P.kind.data();
-  in.n = n;
-  in.domain = &domain_;
+  in.n = ws_.n;
   const double t_search = omp_get_wtime();
   if (reorder_ && pairs_->stale(in)) {
     reorder_workspace();  // permutes in place: `in` stays valid
@@ -253,59 +284,81 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ws_.drhodt = layout_.has_density ? out + layout_.density() : nullptr;
   ws_.dedt = layout_.has_energy ? out + layout_.energy() : nullptr;
   ws_.dhdt = layout_.has_smoothing_length ? out + layout_.smoothing_length() : nullptr;
-  // dx/dt = v, every other rate 0, before the terms add to them (one parallel pass: serial copies
-  // here were a tenth of the 2-thread step's serial time).
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < nf; ++i) {
-    for (int d = 0; d < D; ++d) {
-      ws_.dxdt[d][i] = ws_.v[d][i];
-      ws_.dvdt[d][i] = 0.0;
-    }
-    if (ws_.drhodt) ws_.drhodt[i] = 0.0;
-    if (ws_.dedt) ws_.dedt[i] = 0.0;
-    if (ws_.dhdt) ws_.dhdt[i] = 0.0;
-  }
   ws_.drhodt_wall = layout_.n_wall_density > 0 ? out + layout_.wall_density() : nullptr;
-  if (ws_.drhodt_wall) std::fill(ws_.drhodt_wall, ws_.drhodt_wall + layout_.n_wall_density, 0.0);
   for (int d = 0; d < D; ++d) ws_.wall_normal[d] = normal_now_[d].empty() ? nullptr : normal_now_[d].data();
-  for (const auto& term : terms_) term->apply(ws_);
-  ws_.implicit = nullptr;
-  if (record_) record_->end();
-  if (ord && nf > 0) {
-    // Per-fluid blocks first, then the wall-density block (walls are ordered among themselves). The
-    // loop runs over the state index, so each thread writes its own contiguous part of ydot, the
-    // part the integrator's loops give it (time/particle_split.hpp); over the workspace index, the
-    // two threads' writes interleaved within cache lines once the flow had mixed the particles.
-    const std::size_t nw = layout_.n_wall_density, blocks = (layout_.size() - nw) / nf;
-    const std::uint32_t* at = inv_.data();  // state -> workspace index
-#pragma omp parallel
-    {
-      for (std::size_t b = 0; b < blocks; ++b) {
-        double* const to = ydot + b * nf;
-        const double* const from = out_.data() + b * nf;
-#pragma omp for schedule(static) nowait
-        for (std::size_t k = 0; k < nf; ++k) to[k] = from[at[k]];
-      }
-    }
-    const std::size_t wb = layout_.wall_density();
-    for (std::size_t k = 0; k < nw; ++k) ydot[wb + k] = out_[wb + at[nf + k] - nf];
-  }
-
+  // The terms, the scatter to state order and the CFL limit in one parallel region per evaluation
+  // when every term runs in a team (Term::runs_in_team): each region's start and end is a
+  // synchronisation, and one thread descheduled by another process stalls all of them. A term that
+  // opens its own regions is called between two such regions.
+  const std::size_t nw_rates = layout_.n_wall_density;
+  const std::size_t blocks = ord && nf > 0 ? (layout_.size() - nw_rates) / nf : 0;
+  const std::uint32_t* at = inv_.data();  // state -> workspace index
   // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does
   // not falls back to the configured c), so compressible runs use the largest local c / h.
   double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = ws_.h;
-#pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
-  for (std::size_t i = 0; i < nf; ++i) {
-    double v2 = 0.0, a2 = 0.0;
-    for (int d = 0; d < D; ++d) {
-      v2 += ws_.v[d][i] * ws_.v[d][i];
-      a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
-    }
-    amax2 = std::max(amax2, a2);
-    const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
-    if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
-    hmin = std::min(hmin, ws_.hs[i]);
+  for (std::size_t k = 0;;) {
+    std::size_t e = k;  // terms [k, e) run in a team
+    while (e < terms_.size() && terms_[e]->runs_in_team()) ++e;
+    const bool first = k == 0, last = e == terms_.size();
+    // Between two terms that open their own regions there is nothing to run: no team is started.
+#pragma omp parallel if (first || last || e > k)
+    {
+      if (first) {
+        // dx/dt = v, every other rate 0, before the terms add to them.
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < nf; ++i) {
+          for (int d = 0; d < D; ++d) {
+            ws_.dxdt[d][i] = ws_.v[d][i];
+            ws_.dvdt[d][i] = 0.0;
+          }
+          if (ws_.drhodt) ws_.drhodt[i] = 0.0;
+          if (ws_.dedt) ws_.dedt[i] = 0.0;
+          if (ws_.dhdt) ws_.dhdt[i] = 0.0;
+        }
+        if (ws_.drhodt_wall) {
+#pragma omp for schedule(static) nowait
+          for (std::size_t q = 0; q < nw_rates; ++q) ws_.drhodt_wall[q] = 0.0;
+        }
+#pragma omp barrier
+      }
+      for (std::size_t q = k; q < e; ++q) terms_[q]->apply(ws_);  // each ends with a barrier
+      if (last) {
+        if (blocks > 0) {
+          // Per-fluid blocks first, then the wall-density block (walls are ordered among
+          // themselves). The loop runs over the state index, so each thread writes its own
+          // contiguous part of ydot, the part the integrator's loops give it
+          // (time/particle_split.hpp); over the workspace index, the two threads' writes
+          // interleaved within cache lines once the flow had mixed the particles.
+          for (std::size_t b = 0; b < blocks; ++b) {
+            double* const to = ydot + b * nf;
+            const double* const from = out_.data() + b * nf;
+#pragma omp for schedule(static) nowait
+            for (std::size_t q = 0; q < nf; ++q) to[q] = from[at[q]];
+          }
+          const std::size_t wb = layout_.wall_density();
+#pragma omp for schedule(static) nowait
+          for (std::size_t q = 0; q < nw_rates; ++q) ydot[wb + q] = out_[wb + at[nf + q] - nf];
+        }
+#pragma omp for schedule(static) nowait reduction(max : amax2) reduction(min : acoustic, hmin)
+        for (std::size_t i = 0; i < nf; ++i) {
+          double v2 = 0.0, a2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            v2 += ws_.v[d][i] * ws_.v[d][i];
+            a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
+          }
+          amax2 = std::max(amax2, a2);
+          const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
+          if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
+          hmin = std::min(hmin, ws_.hs[i]);
+        }
+      }
+    }  // the region's end: every reduction combined, every rate written
+    if (last) break;
+    terms_[e]->apply(ws_);
+    k = e + 1;
   }
+  ws_.implicit = nullptr;
+  if (record_) record_->end();
   double dt = std::numeric_limits<double>::infinity();
   if (std::isfinite(acoustic)) dt = std::min(dt, cfl_.acoustic * acoustic);
   if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));

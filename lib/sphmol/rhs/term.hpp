@@ -60,6 +60,13 @@ class Term {
   // coefficients in Workspace::implicit when that is set instead of adding to dv/dt, and the wall
   // velocity models it reads. Every other term is explicit and always adds to the rates.
   virtual bool implicit() const { return false; }
+  // True when apply() is written for every thread of an enclosing parallel region to call together:
+  // orphaned `omp for` loops, serial parts in `omp single`, and a barrier before it returns, so its
+  // results are visible to every thread. The system then runs such terms inside one region per
+  // evaluation (each region start and end is a synchronisation that stalls when a thread is
+  // descheduled). Called outside a region, such an apply() runs on one thread. False: apply() is
+  // called by one thread, outside any region (it may open its own).
+  virtual bool runs_in_team() const { return false; }
 };
 
 // Throws std::invalid_argument "KEY: 'NAME' is not available in DD (only in ...)" when `term` does not

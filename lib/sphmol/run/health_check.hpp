@@ -32,17 +32,14 @@ class HealthCheck {
         limits_(std::move(limits)), power_t_(t0), power_(body_force_power(y0, t0)) {}
 
   void operator()(double t, const double* y, double /*h*/) {
-    if (!healthy(y)) report(t, y);
-    physical(t, y);
+    const Scan s = scan(y);
+    if (!s.healthy) report(t, y);
+    physical(t, y, s);
     const double cfl = sys_.stable_step();
     if (std::isfinite(initial_cfl_) && !(cfl >= kCollapse * initial_cfl_))
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial_cfl_) + " s to " +
                               std::to_string(cfl) + " s");
-    const std::size_t size = sys_.layout().size();
-    last_good_.resize(size);
-    double* const keep = last_good_.data();
-#pragma omp parallel
-    for_each_by_particle(0, size, sys_.layout().n, [&](std::size_t k) { keep[k] = y[k]; });
+    last_good_.swap(candidate_);  // the copy scan() made; the previous good state is reused next time
     last_good_t_ = t;
   }
 
@@ -53,6 +50,10 @@ class HealthCheck {
   double body_force_work() const { return work_; }
 
  private:
+  struct Scan {
+    bool healthy = true;
+    double rho_lo = std::numeric_limits<double>::infinity(), rho_hi = -std::numeric_limits<double>::infinity();
+  };
   // The power of the body force on the fluid, sum_i m_i g(t) . v_i; in the walls' frame
   // (HealthLimits::WallFrame) that of g(t) - A(t) on the velocities relative to the frame.
   double body_force_power(const double* y, double t) const {
@@ -74,7 +75,7 @@ class HealthCheck {
   }
 
   // The scene's physical bounds (run/health_limits.hpp), after the state is known to be finite.
-  void physical(double t, const double* y) {
+  void physical(double t, const double* y, const Scan& s) {
     const auto& L = sys_.layout();
     const auto& m = sys_.particles().mass;
     const long n = static_cast<long>(L.n);
@@ -104,17 +105,20 @@ class HealthCheck {
       }
     if (limits_.rho0 > 0.0) {
       // Fluids of several rest densities (Particles::rest_density, state order): each particle against
-      // its own rho0, read in state order.
+      // its own rho0, read in state order; with one rho0 the extremes come from the scan.
       const auto& own = sys_.particles().rest_density;
-      const auto& rho = own.empty() ? sys_.workspace_density() : sys_.density();
-      const long nrho = std::min(n, static_cast<long>(rho.size()));
       const double r0 = limits_.rho0;
       const auto rest = [&](long i) { return own.empty() ? r0 : own[static_cast<std::size_t>(i)]; };
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;  // of rho / rho0
-#pragma omp parallel for reduction(min : lo) reduction(max : hi) schedule(static)
-      for (long i = 0; i < nrho; ++i) {
-        lo = std::min(lo, rho[i] / rest(i));
-        hi = std::max(hi, rho[i] / rest(i));
+      double lo = s.rho_lo / r0, hi = s.rho_hi / r0;  // of rho / rho0
+      if (!own.empty()) {
+        const auto& rho = sys_.density();
+        const long nrho = std::min(n, static_cast<long>(rho.size()));
+        lo = std::numeric_limits<double>::infinity();
+        hi = -lo;
+        for (long i = 0; i < nrho; ++i) {
+          lo = std::min(lo, rho[i] / rest(i));
+          hi = std::max(hi, rho[i] / rest(i));
+        }
       }
       if (hi - 1.0 > limits_.max_compression || 1.0 - lo > limits_.max_expansion) {
         const auto& rs = sys_.density();  // state order, to name the particle
@@ -159,9 +163,11 @@ class HealthCheck {
     return buf;
   }
 
-  // The per-particle tests of report() as one parallel pass (run after every step); report() then
-  // finds the first failure in its order, so the message does not depend on the thread count.
-  bool healthy(const double* y) const {
+  // Every per-particle pass after a step in one parallel region (its start and end are the only
+  // synchronisations): the tests of report() (which then finds the first failure in its order, so
+  // the message does not depend on the thread count), the fluid density range, and a copy of y into
+  // candidate_, which becomes the last good state once every test has passed.
+  Scan scan(const double* y) {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
     const long n = static_cast<long>(L.n), size = static_cast<long>(L.size()), ve = static_cast<long>(L.velocities_end());
@@ -169,7 +175,10 @@ class HealthCheck {
     // permute it serially after every step. Fluid entries come first in either order.
     const auto& rho = sys_.workspace_density();
     const long nrho = std::min(n, static_cast<long>(rho.size()));
+    candidate_.resize(static_cast<std::size_t>(size));
+    double* const keep = candidate_.data();
     bool bad = false;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
 #pragma omp parallel reduction(|| : bad)
     {
       for (int d = 0; d < D; ++d) {
@@ -182,10 +191,15 @@ class HealthCheck {
       }
       for_each_by_particle(static_cast<std::size_t>(ve), static_cast<std::size_t>(size), L.n,
                            [&](std::size_t k) { bad |= !std::isfinite(y[k]); });
-#pragma omp for schedule(static) nowait
-      for (long i = 0; i < nrho; ++i) bad |= !(rho[i] > 0.0);
+#pragma omp for schedule(static) nowait reduction(min : lo) reduction(max : hi)
+      for (long i = 0; i < nrho; ++i) {
+        bad |= !(rho[i] > 0.0);
+        lo = std::min(lo, rho[i]);
+        hi = std::max(hi, rho[i]);
+      }
+      for_each_by_particle(0, static_cast<std::size_t>(size), L.n, [&](std::size_t k) { keep[k] = y[k]; });
     }
-    return !bad;
+    return {!bad, lo, hi};
   }
 
   // Throws for the first particle that fails, in the order the tests are listed in the file comment.
@@ -214,7 +228,7 @@ class HealthCheck {
   }
 
   const SphSystem<D>& sys_;
-  std::vector<double> last_good_;
+  std::vector<double> last_good_, candidate_;
   double last_good_t_;
   double initial_cfl_;
   HealthLimits limits_;
