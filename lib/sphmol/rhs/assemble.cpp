@@ -125,7 +125,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
   }
   if (disc.density == "continuity" && !wc_row) add("discretization.density", std::make_unique<ContinuityDensity<D>>());
-  if (dynamic_walls) add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>(fluid.density));
+  if (dynamic_walls) add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>());
   if (disc.density_diffusion > 0.0 && !wc_row)
     add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
