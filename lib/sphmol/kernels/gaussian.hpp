@@ -21,15 +21,24 @@
 
 namespace sphmol {
 
+// Integral of exp(-q^2) over the ball q < 3 in R^D (the plain cut-off).
+template <int D>
+inline double plain_gaussian_ball_mass() {
+  constexpr double pi = std::numbers::pi;
+  const double e9 = std::exp(-9.0), erf3 = std::erf(3.0);
+  if constexpr (D == 1) return std::sqrt(pi) * erf3;
+  else if constexpr (D == 2) return pi * (1.0 - e9);
+  else return std::pow(pi, 1.5) * erf3 - 6.0 * pi * e9;
+}
+
 // Integral of the shifted-force Gaussian g(q) over the ball q < 3 in R^D: that of exp(-q^2) minus
 // e^-9 times that of 10 - q^2 (2 * 21, 2 pi * 24.75, 4 pi * 41.4).
 template <int D>
 inline double gaussian_ball_mass() {
   constexpr double pi = std::numbers::pi;
-  const double e9 = std::exp(-9.0), erf3 = std::erf(3.0);
-  if constexpr (D == 1) return std::sqrt(pi) * erf3 - 42.0 * e9;
-  else if constexpr (D == 2) return pi * (1.0 - e9) - 49.5 * pi * e9;
-  else return std::pow(pi, 1.5) * erf3 - 6.0 * pi * e9 - 165.6 * pi * e9;
+  const double e9 = std::exp(-9.0);
+  constexpr double poly = D == 1 ? 42.0 : D == 2 ? 49.5 * pi : 165.6 * pi;
+  return plain_gaussian_ball_mass<D>() - poly * e9;
 }
 
 // g(q) and dg/dq of the shifted-force Gaussian (above); 0 for q >= 3.
