@@ -8,7 +8,7 @@
 // We use the shifted-force cut-off of molecular dynamics (Stoddard & Ford 1973; Toxvaerd & Dyre
 // 2011), U - U(r_c) - (r - r_c) U'(r_c), taken in s = q^2 so that W stays smooth at q = 0:
 //   g(q) = exp(-q^2) - e^-9 (10 - q^2),   g(3) = g'(3) = 0   (W is C1 at the support),
-// a change of at most 10 e^-9 = 1.2e-3 of W(0). We RENORMALISE over the ball q < 3, so that W
+// a shape change of at most 10 e^-9 = 1.2e-3 of W(0). We RENORMALISE over the ball q < 3, so that W
 // integrates to exactly 1:
 //   mass_1 = sqrt(pi) erf 3 - 42 e^-9,  mass_2 = pi (1 - e^-9) - 49.5 pi e^-9,
 //   mass_3 = pi^(3/2) erf 3 - 6 pi e^-9 - 165.6 pi e^-9.
