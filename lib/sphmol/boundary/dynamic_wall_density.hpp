@@ -9,13 +9,13 @@
 // DualSPHysics resets a wall density below rho0 to rho0 after every step, so that a wall never pulls
 // fluid in with a negative pressure. A method-of-lines state cannot be reset between steps; the EOS
 // reads max(rho, rho0) instead (rhs/sph_system.cpp), and the state itself follows the continuity
-// equation above on both sides of rho0. Cutting the rate to zero at the floor (an earlier form of
-// this term) made f(t, y) jump where a decompressing wall reached rho0: every such event left a
-// first-order time error, the same for every integrator (dam break, dp = 0.05, t = 0.03 s: errors
-// halving with the step, about 2e-5 at dt = 1.25e-5 s for leapfrog, Bogacki-Shampine and Verner
-// alike). With the plain rate, f is continuous (the floor of the EOS input is a kink, not a jump).
+// equation above on both sides of rho0. Cutting the rate to zero at the floor would make f(t, y) jump
+// where a decompressing wall reaches rho0: every such event leaves a first-order time error, the same
+// for every integrator (measured on the dam break, dp = 0.05, t = 0.03 s: errors halving with the
+// step, about 2e-5 at dt = 1.25e-5 s for leapfrog, Bogacki-Shampine and Verner alike). With the plain
+// rate, f is continuous (the floor of the EOS input is a kink, not a jump).
 // A wall that decompressed below rho0 is recompressed to rho0 before it pushes again; its pressure
-// is zero meanwhile, as with the reset.
+// is zero meanwhile (after a reset it would rise at once).
 #include "sphmol/physics/continuity_density.hpp"
 
 namespace sphmol {
