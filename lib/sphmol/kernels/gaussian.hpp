@@ -44,7 +44,7 @@ inline double gaussian_ball_mass() {
 // g(q) and dg/dq of the shifted-force Gaussian (above); 0 for q >= 3.
 inline void shifted_force_gaussian(double q, double& g, double& dg) {
   if (q >= 3.0) { g = dg = 0.0; return; }
-  static const double e9 = std::exp(-9.0);
+  const double e9 = std::exp(-9.0);  // folded at compile time
   const double e = std::exp(-q * q);
   g = e - e9 * (10.0 - q * q);
   dg = -2.0 * q * (e - e9);
