@@ -132,8 +132,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   }
   if (disc.density == "continuity" && !wc_row) add("discretization.density", std::make_unique<ContinuityDensity<D>>());
   if (dynamic_walls)
-    add("discretization.wall_pressure", std::make_unique<DynamicWallDensity<D>>(
-        fluid.density, particles.treatment_mask(WallTreatment::dynamic, global_walls)));
+    add("discretization.wall_pressure",
+        std::make_unique<DynamicWallDensity<D>>(particles.treatment_mask(WallTreatment::dynamic, global_walls)));
   if (disc.density_diffusion > 0.0 && !wc_row)
     add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
