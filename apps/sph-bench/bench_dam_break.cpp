@@ -6,7 +6,7 @@
 //   sph-bench --benchmark_filter=DamBreakRun    whole runs, 1 and 2 threads alternating
 //   sph-bench --benchmark_filter=DamBreakContention   1 thread, 2 threads, and 2 threads beside a
 //                                                process that keeps one core busy, alternating
-// sph-bench, like sph-mol, runs with idle threads spinning GOMP_SPINCOUNT = 10,000 iterations unless
+// sph-bench, like sph-mol, runs with idle threads spinning GOMP_SPINCOUNT = 1,000 iterations unless
 // OMP_WAIT_POLICY or GOMP_SPINCOUNT is set (run/openmp_wait_policy.hpp); the label names the policy.
 #include <benchmark/benchmark.h>
 #include <omp.h>

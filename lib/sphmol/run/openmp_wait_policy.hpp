@@ -17,7 +17,7 @@ namespace sphmol {
 
 // Spin iterations before a waiting thread sleeps (libgomp's default: 300,000); the measurements that
 // chose it are in docs/performance.md.
-inline constexpr const char* bounded_spin_count = "10000";
+inline constexpr const char* bounded_spin_count = "1000";
 
 // Whether the program should choose the spin itself: more than one thread, and the user chose neither
 // OMP_WAIT_POLICY nor GOMP_SPINCOUNT (an empty value counts as set: libgomp would read it).
