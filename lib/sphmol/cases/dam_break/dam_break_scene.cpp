@@ -31,7 +31,9 @@ DamBreakScene build_dam_break_scene(const Config& config) {
   // particles_across counts particles across the column width a.
   const double dx = disc.particles_across > 0 ? a / disc.particles_across : disc.spacing;
   const int nx = whole_spacings(a, dx, "geometry.column[0]"), ny = whole_spacings(H, dx, "geometry.column[1]");
-  const int nx_tank = whole_spacings(Lx, dx, "geometry.box[0]"), ny_tank = whole_spacings(Ly, dx, "geometry.box[1]");
+  // The tank must be a whole number of spacings too (checked; the counts themselves are not needed).
+  whole_spacings(Lx, dx, "geometry.box[0]");
+  whole_spacings(Ly, dx, "geometry.box[1]");
   if (config.fluid.body_force.size() != 2 || config.fluid.body_force[0] != 0.0 || !(config.fluid.body_force[1] < 0.0))
     throw std::invalid_argument("fluid.body_force: dam_break needs gravity [0, -g] with g > 0");
   const double g = -config.fluid.body_force[1];
