@@ -283,6 +283,13 @@ TEST_CASE("geometry: a mesh file whose header asks for more than it holds, or to
   CHECK_THROWS_WITH(TriangleMeshShape("OFF\n2000000000 2000000000 0\n0 0 0\n", "off", "big.off"),
                     Catch::Contains("the header declares 2000000000 vertices and 2000000000 faces, more than a file of 34 bytes can hold"));
   CHECK_THROWS_WITH(TriangleMeshShape("OFF\n# a comment\n300000000 0 0\n", "off", "big.off"), Catch::Contains("300000000 vertices"));
+  // A count with trailing characters is still read as a count by the stream (found by fuzzing).
+  CHECK_THROWS_WITH(TriangleMeshShape("OFF\n 1870000100+0000 1\n0 0 0\n", "off", "c.off"), Catch::Contains("1870000100 vertices"));
+  CHECK_THROWS_WITH(TriangleMeshShape("v 0 0 0\nv 1 0 0\nv 0 1e200 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n", "obj", "i.obj"),
+                    Catch::Contains("not a number of magnitude up to 1e100"));
+  // Binary OFF: its counts are raw integers ("3 3$" read as 0x33203324 vertices), found by fuzzing.
+  CHECK_THROWS_WITH(TriangleMeshShape(std::string("OFF\x17\nBINARY\n3 3$1") + std::string(60, ' '), "off", "b.off"),
+                    Catch::Contains("binary OFF is not read"));
   CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nelement vertex 1000000\nproperty float x\nend_header\n", "ply", "big.ply"),
                     Catch::Contains("declares 1000000 elements"));
   // A sparse file just above the limit: refused by its size, before anything is read.
@@ -306,7 +313,7 @@ TEST_CASE("geometry: mesh inputs that broke CGAL's readers and repair are refuse
   for (const auto& v : kCubeV) bent << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
   bent << "6 0 1 2 6 7 4\n";
   for (int t = 0; t < 6; ++t) bent << "3 " << kCubeT[t][0] << ' ' << kCubeT[t][1] << ' ' << kCubeT[t][2] << '\n';
-  CHECK_THROWS_WITH(TriangleMeshShape(bent.str(), "off", "bent.off"), Catch::Contains("face 0 has 6 vertices that do not lie in one plane"));
+  CHECK_THROWS_WITH(TriangleMeshShape(bent.str(), "off", "bent.off"), Catch::Contains("face 0 has 6 vertices that do not lie in one plane or do not make a convex face"));
   // The cube with a triangle of no area (three points on an edge) and one that repeats a vertex: both
   // dropped (the inside test needs proper triangles; the repair needs distinct vertices).
   std::ostringstream extra;

@@ -11,7 +11,6 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -59,23 +58,29 @@ void check_declared_counts(const std::string& bytes, const std::string& format, 
   };
   std::istringstream in(bytes.substr(0, std::min<std::size_t>(bytes.size(), 1 << 16)));
   if (format == "off") {
-    std::string word;
-    std::vector<double> counts;
-    while (counts.size() < 2 && in >> word) {
-      if (word[0] == '#') {
-        std::getline(in, word);
-        continue;
+    // Binary OFF stores its counts as raw integers, which CGAL 5.5 allocates before checking them
+    // against the file (found by fuzzing): refused; ASCII OFF, STL and PLY cover the same surfaces.
+    if (bytes.substr(0, std::min<std::size_t>(bytes.size(), 64)).find("BINARY") != std::string::npos)
+      throw std::invalid_argument("mesh " + name + ": binary OFF is not read (use ASCII OFF, STL or PLY)");
+    // Read the counts as CGAL's scanner does: after the keyword (OFF, COFF, NOFF, 4OFF, ...) and any
+    // '#' comment lines, two integers by stream extraction (which stops at the first non-digit, so
+    // "1870000100+0000" is 1870000100 and then 0).
+    std::string keyword;
+    in >> keyword;
+    if (keyword.find("OFF") == std::string::npos) in.seekg(0);  // no keyword: the counts come first
+    const auto skip_comments = [&] {
+      while ((in >> std::ws) && in.peek() == '#') {
+        std::string line;
+        std::getline(in, line);
       }
-      if (word.find("OFF") != std::string::npos) continue;  // OFF, COFF, NOFF, 4OFF, ... and BINARY
-      if (word == "BINARY") continue;
-      char* end = nullptr;
-      const double v = std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0') return;  // not a header CGAL reads: it reports that
-      counts.push_back(v);
-    }
-    if (counts.size() == 2 && !(6.0 * counts[0] + 8.0 * counts[1] <= static_cast<double>(bytes.size())))
-      too_many(std::to_string(static_cast<long long>(counts[0])) + " vertices and " +
-               std::to_string(static_cast<long long>(counts[1])) + " faces, more");
+    };
+    long long nv = 0, nf = 0;
+    skip_comments();
+    if (!(in >> nv)) return;  // not a header CGAL reads: it reports that
+    skip_comments();
+    if (!(in >> nf)) return;
+    if (nv < 0 || nf < 0 || !(6.0 * static_cast<double>(nv) + 8.0 * static_cast<double>(nf) <= static_cast<double>(bytes.size())))
+      too_many(std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces, more");
   } else if (format == "ply") {
     // Also the header's structure, which CGAL 5.5's PLY reader trusts: a property line before any
     // element line makes it read past an empty list.
@@ -108,8 +113,8 @@ void check_declared_counts(const std::string& bytes, const std::string& format, 
   }
 }
 
-// A face with a nonzero area whose vertices all lie in the plane of its Newell normal (Sutherland,
-// Sproull & Schumacker 1974), to 1e-9 of its size.
+// A convex face with a nonzero area whose vertices all lie in the plane of its Newell normal
+// (Sutherland, Sproull & Schumacker 1974), to 1e-9 of its size.
 bool plane_face(const std::vector<K::Point_3>& points, const std::vector<std::size_t>& face) {
   double n[3] = {0, 0, 0}, c[3] = {0, 0, 0}, size = 0.0;
   for (std::size_t a = 0; a < face.size(); ++a) {
@@ -132,6 +137,18 @@ bool plane_face(const std::vector<K::Point_3>& points, const std::vector<std::si
     const auto& p = points[v];
     const double off = ((p.x() - c[0]) * n[0] + (p.y() - c[1]) * n[1] + (p.z() - c[2]) * n[2]) / len;
     if (!(std::abs(off) <= 1e-9 * size)) return false;
+  }
+  // Strictly convex: every corner turns the same way about n, so the fan from the first vertex
+  // covers the face with proper triangles.
+  const std::size_t k = face.size();
+  for (std::size_t a = 0; a < k; ++a) {
+    const auto& p = points[face[a]];
+    const auto& q = points[face[(a + 1) % k]];
+    const auto& r = points[face[(a + 2) % k]];
+    const double e[3] = {q.x() - p.x(), q.y() - p.y(), q.z() - p.z()};
+    const double f[3] = {r.x() - q.x(), r.y() - q.y(), r.z() - q.z()};
+    const double turn = (e[1] * f[2] - e[2] * f[1]) * n[0] + (e[2] * f[0] - e[0] * f[2]) * n[1] + (e[0] * f[1] - e[1] * f[0]) * n[2];
+    if (!(turn > 0.0)) return false;
   }
   return true;
 }
@@ -190,6 +207,13 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
   }
   for (const auto& f : polygons)
     for (const std::size_t v : f) ok = ok && v < points.size();
+  // Coordinates whose squares overflow: the distance queries construct points from squared
+  // distances, and CGAL's exact fallback aborts on the infinities that result (found by fuzzing).
+  constexpr double kMaxCoordinate = 1e100;  // [m]
+  const auto fits = [](double x) { return std::abs(x) <= kMaxCoordinate; };  // false for NaN too
+  for (const auto& p : points)
+    if (ok && !(fits(p.x()) && fits(p.y()) && fits(p.z())))
+      throw std::invalid_argument("mesh " + name + ": a vertex coordinate is not a number of magnitude up to 1e100");
   Mesh& m = impl_->mesh;
   if (ok && !polygons.empty()) {
     namespace PMP = CGAL::Polygon_mesh_processing;
@@ -208,20 +232,29 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
     std::erase_if(polygons, [&](const std::vector<std::size_t>& f) {
       return f.size() == 3 && CGAL::collinear(points[f[0]], points[f[1]], points[f[2]]);
     });
-    // CGAL triangulates larger faces in their plane (a 2D constrained triangulation of the
-    // projection), which fails on faces that are not plane: those must come as triangles.
-    for (std::size_t k = 0; k < polygons.size(); ++k)
-      if (polygons[k].size() > 3 && !plane_face(points, polygons[k]))
-        throw std::invalid_argument("mesh " + name + ": face " + std::to_string(k) + " has " +
-                                    std::to_string(polygons[k].size()) +
-                                    " vertices that do not lie in one plane (or no area); give it as triangles");
+    // Larger faces must be plane and convex, and are split into the fan of their first vertex. CGAL's
+    // triangulate_faces (a constrained triangulation of the face's projection) failed or did not end
+    // on bent or sliver faces (found by fuzzing); non-convex faces must come as triangles.
+    std::vector<std::vector<std::size_t>> triangles;
+    triangles.reserve(polygons.size());
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+      const auto& f = polygons[k];
+      if (f.size() == 3) {
+        triangles.push_back(f);
+        continue;
+      }
+      if (!plane_face(points, f))
+        throw std::invalid_argument("mesh " + name + ": face " + std::to_string(k) + " has " + std::to_string(f.size()) +
+                                    " vertices that do not lie in one plane or do not make a convex face; give it as triangles");
+      for (std::size_t a = 1; a + 1 < f.size(); ++a) triangles.push_back({f[0], f[a], f[a + 1]});
+    }
+    polygons = std::move(triangles);
     PMP::orient_polygon_soup(points, polygons);
     ok = PMP::is_polygon_soup_a_polygon_mesh(polygons);
     if (ok) PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
   }
   if (!ok || m.number_of_faces() == 0)
     throw std::invalid_argument("mesh " + name + ": cannot be read as a polygon mesh (STL, OFF, PLY or OBJ)");
-  if (!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
   if (!CGAL::is_closed(m)) throw std::invalid_argument("mesh " + name + ": the surface is not closed, so it has no inside");
   impl_->tree = std::make_unique<Tree>(faces(m).first, faces(m).second, m);
   impl_->tree->accelerate_distance_queries();
