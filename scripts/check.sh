@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The full test suite: set-up and Release build, all Catch2 tests (unit + integration) via CTest,
 # then the unit tests again under ASan+UBSan (only that target is built in the sanitizer tree),
-# then 90 s of fuzzing (config loader, run command line, checkpoint reader).
+# then 90 s of fuzzing (config loader, run command line, checkpoint reader, mesh reader).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

@@ -1,16 +1,13 @@
 #!/usr/bin/env bash
 # Fuzzes with libFuzzer + ASan + UBSan for a bounded total time (default 90 s; first argument
-# overrides), split over three targets: the config loader (fuzz/config_fuzz.cpp, half the time), the
-# run command line with --set (fuzz/cli_fuzz.cpp) and the checkpoint reader (fuzz/checkpoint_fuzz.cpp),
-# a quarter each. The triangle-mesh reader's target (fuzz/mesh_fuzz.cpp) is built but not run here:
-# CGAL's OFF reader still allocates the per-face vertex counts it reads before checking them
-# (docs/output.md, "Fuzzing"); run it by hand with
-#   build/fuzz/fuzz/sphmol-mesh-fuzz -max_total_time=60 -rss_limit_mb=2048 fuzz/seeds-mesh
+# overrides), split over four targets: the config loader (fuzz/config_fuzz.cpp, 40 %), the run
+# command line with --set (fuzz/cli_fuzz.cpp), the checkpoint reader (fuzz/checkpoint_fuzz.cpp) and
+# the triangle-mesh reader (fuzz/mesh_fuzz.cpp), 20 % each.
 # Fails on any crash, hang (> 10 s per input), leak or sanitizer report; the
 # reproducer is left in build/fuzz/artifacts/<target>/.
 # Seeds: every shipped YAML (config, and the YAML part of the CLI inputs), fuzz/seeds/ (config with
 # "\0"-separated --set overrides), fuzz/seeds-cli/ (argument lists) and fuzz/seeds-checkpoint/ (a
-# checkpoint.json written by a short run).
+# checkpoint.json written by a short run) and fuzz/seeds-mesh/ (a cube in each mesh format).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 total="${1:-90}"
@@ -32,10 +29,11 @@ fuzz() {  # target seconds max_len seed-dirs...
     -print_final_stats=1 -artifact_prefix="$artifacts"/ "$corpus" "$seeds" 2>&1 | tail -n 15
 }
 
-half=$((total / 2)) quarter=$((total / 4))
-fuzz sphmol-config-fuzz "$half" 4096 config/*.yaml verification/*.yaml fuzz/seeds/*
+big=$((total * 2 / 5)) small=$((total / 5))
+fuzz sphmol-config-fuzz "$big" 4096 config/*.yaml verification/*.yaml fuzz/seeds/*
 # CLI inputs: "YAML\0arguments"; the shipped YAML alone is a seed too (no arguments).
-fuzz sphmol-cli-fuzz "$quarter" 4096 fuzz/seeds-cli/* verification/couette.yaml
-fuzz sphmol-checkpoint-fuzz "$quarter" 65536 fuzz/seeds-checkpoint/*
+fuzz sphmol-cli-fuzz "$small" 4096 fuzz/seeds-cli/* verification/couette.yaml
+fuzz sphmol-checkpoint-fuzz "$small" 65536 fuzz/seeds-checkpoint/*
+fuzz sphmol-mesh-fuzz "$small" 16384 fuzz/seeds-mesh/*
 rm -rf "$TMPDIR"
 echo "fuzz: no crash, hang or sanitizer report in ${total} s"

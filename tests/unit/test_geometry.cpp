@@ -3,6 +3,8 @@
 // and wall layers — including the box container against the wall particles of the box scene.
 #include <catch2/catch.hpp>
 
+#include <sys/resource.h>
+
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -290,6 +292,28 @@ TEST_CASE("geometry: a mesh file whose header asks for more than it holds, or to
   // Binary OFF: its counts are raw integers ("3 3$" read as 0x33203324 vertices), found by fuzzing.
   CHECK_THROWS_WITH(TriangleMeshShape(std::string("OFF\x17\nBINARY\n3 3$1") + std::string(60, ' '), "off", "b.off"),
                     Catch::Contains("binary OFF is not read"));
+  {
+    // A face line whose count is far beyond its indices: CGAL sized the face by the count first, here
+    // 3e8 indices (2.4 GB) for a 60-byte file (found by fuzzing). Refused before anything is allocated.
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    CHECK_THROWS_WITH(TriangleMeshShape("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n", "off", "f.off"),
+                      Catch::Contains("mesh f.off: a face declares 300000000 vertices, more than the file holds"));
+    getrusage(RUSAGE_SELF, &after);
+    CHECK(after.ru_maxrss - before.ru_maxrss < 100 * 1024);  // [KiB]
+    // The same through a PLY list with a 32-bit count, which CGAL sizes before reading its entries.
+    CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n"
+                                        "0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n",
+                                        "ply", "f.ply"),
+                      Catch::Contains("a list property with 'uint' counts is not read"));
+    // Counts that fit are read as before: the cube's faces as one quad each side.
+    std::ostringstream quads;
+    quads << "OFF\n8 6 0\n";
+    for (const auto& v : kCubeV) quads << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+    quads << "4 0 1 2 3\n4 4 7 6 5\n4 0 4 5 1\n4 1 5 6 2\n4 2 6 7 3\n4 3 7 4 0\n";
+    CHECK_NOTHROW(TriangleMeshShape(quads.str(), "off", "quads.off"));
+  }
   CHECK_THROWS_WITH(TriangleMeshShape("ply\nformat ascii 1.0\nelement vertex 1000000\nproperty float x\nend_header\n", "ply", "big.ply"),
                     Catch::Contains("declares 1000000 elements"));
   // A sparse file just above the limit: refused by its size, before anything is read.

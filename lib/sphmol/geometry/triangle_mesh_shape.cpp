@@ -3,6 +3,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Container_helper.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "sphmol/io/input_file.hpp"
@@ -100,6 +102,15 @@ void check_declared_counts(const std::string& bytes, const std::string& format, 
         break;
       }
       if (key == "property" && !element) malformed("a property before any element");
+      // CGAL 5.5 sizes a list by its count before reading the entries: a 32-bit count could ask for
+      // 16 GB in a small file. Counts of 8 or 16 bits (every common exporter writes uchar) bound a
+      // list to 65535 entries.
+      if (std::string kind, count_type; key == "property" && (l >> kind >> count_type) && kind == "list" &&
+                                         count_type != "char" && count_type != "uchar" && count_type != "int8" &&
+                                         count_type != "uint8" && count_type != "short" && count_type != "ushort" &&
+                                         count_type != "int16" && count_type != "uint16")
+        throw std::invalid_argument("mesh " + name + ": a list property with '" + count_type +
+                                    "' counts is not read (write the face lists with uchar or ushort counts)");
       if (key == "element") {
         std::string what;
         double n = -1.0;
@@ -112,6 +123,26 @@ void check_declared_counts(const std::string& bytes, const std::string& format, 
     if (!(total <= static_cast<double>(bytes.size()))) too_many(std::to_string(static_cast<long long>(total)) + " elements, more");
   }
 }
+
+// A face as CGAL's ASCII OFF reader fills it. The reader sizes each face by the count at the start of
+// its line before it reads the indices (CGAL 5.5, IO/OFF.h), so "1000000000 0 1 2" in a tiny file
+// allocated 8 GB (found by fuzzing). Every index takes at least two bytes of the file ("0 "), so
+// all faces together hold at most half the file's size in indices: each resize draws on that
+// budget, and a face that asks for more is refused before anything is allocated.
+class OffFaceTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+thread_local std::size_t off_index_budget = 0;
+struct OffFace : std::vector<std::size_t> {
+  void resize(std::size_t n) {
+    if (n > off_index_budget)
+      throw OffFaceTooLarge("a face declares " + std::to_string(n) + " vertices, more than the file holds");
+    off_index_budget -= n;
+    std::vector<std::size_t>::resize(n);
+  }
+};
+static_assert(CGAL::internal::has_resize<OffFace>::value, "CGAL must size OffFace through its resize");
 
 // A convex face with a nonzero area whose vertices all lie in the plane of its Newell normal
 // (Sutherland, Sproull & Schumacker 1974), to 1e-9 of its size.
@@ -195,13 +226,21 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
     std::istringstream is(bytes, binary ? std::ios::in | std::ios::binary : std::ios::in);
     CGAL::IO::set_mode(is, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
     if (format == "stl") return CGAL::IO::read_STL(is, points, polygons, CGAL::parameters::use_binary_mode(binary));
-    if (format == "off") return CGAL::IO::read_OFF(is, points, polygons);
+    if (format == "off") {
+      std::vector<OffFace> faces;
+      off_index_budget = bytes.size() / 2;
+      const bool read_ok = CGAL::IO::read_OFF(is, points, faces);
+      for (auto& f : faces) polygons.push_back(std::move(static_cast<std::vector<std::size_t>&>(f)));
+      return read_ok;
+    }
     if (format == "ply") return CGAL::IO::read_PLY(is, points, polygons);
     return CGAL::IO::read_OBJ(is, points, polygons);
   };
   bool ok = false;
   try {
     ok = read(format == "stl" || format == "ply") || (format == "stl" && read(false));
+  } catch (const OffFaceTooLarge& e) {
+    throw std::invalid_argument("mesh " + name + ": " + e.what());
   } catch (const std::exception&) {
     ok = false;
   }
