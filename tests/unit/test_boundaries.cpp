@@ -222,3 +222,97 @@ TEST_CASE("ghost hydrostatic pressure: images below carry p_i + rho_i g 2d, side
   GhostHydrostaticPressure<2>(&gen, g, 1.0, [law](double p) { return law.density(p); }).apply(s.w);
   for (std::size_t k = 0; k < gen.count(); ++k) CHECK(s.w.p[base + k] == Approx(s.w.p[gen.sources()[k]]));
 }
+
+TEST_CASE("ghost generator: oblique mirror planes, their corners and the box faces as planes", "[ghost]") {
+  // A floor tilted by 30 degrees through the origin (fluid above it), a side wall at right angles to
+  // it through (0.2, 0) along the floor, moving along itself, and a third plane at 60 degrees to the
+  // floor far away (no corner images with it).
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  GhostPlane<2> floor{{-s, c}, 0.0, true, {0.3 * c, 0.3 * s}};   // a belt along the floor
+  GhostPlane<2> side{{-c, -s}, -(c * 0.2 * c + s * 0.2 * s), true, {0.0, 0.0}};
+  GhostPlane<2> far{{0.0, 1.0}, -5.0, false, {0.0, 0.0}};       // y = -5 (never near)
+  GhostGenerator<2> gen(BoxWalls<2>{}, 0.1, {floor, side, far});
+  Particles<2> pt;
+  // At distance 0.03 from the floor, 0.05 along it from the origin: one image; at 0.02 from the floor
+  // and 0.04 from the side wall: two images and their corner image.
+  const auto at = [&](double along, double up) { return std::array<double, 2>{along * c - up * s, along * s + up * c}; };
+  pt.add(Kind::Fluid, at(0.05, 0.03), {0.1, -0.2}, 1.0, 1000.0);
+  pt.add(Kind::Fluid, at(0.16, 0.02), {0.4, 0.1}, 1.0, 1000.0);
+  Workspace<2> w;
+  w.n = pt.size();
+  w.n_fluid = pt.n_fluid;
+  for (int d = 0; d < 2; ++d) w.x[d] = pt.x[d], w.v[d] = pt.v[d];
+  w.rho = pt.rho;
+  w.p.assign(w.n, 0.0);
+  w.h = 1.0;
+  w.hs.assign(w.n, 1.0);
+  w.e.assign(w.n, 0.0);
+  gen.generate(w.n, pt, w);
+  REQUIRE(gen.count() == 4);
+  const std::size_t base = 2;
+  const auto rel = [&](std::size_t g) {  // the image in the floor's frame: (along, up)
+    return std::array<double, 2>{w.x[0][base + g] * c + w.x[1][base + g] * s, -w.x[0][base + g] * s + w.x[1][base + g] * c};
+  };
+  int floor_images = 0, side_images = 0, corners = 0;
+  for (std::size_t g = 0; g < gen.count(); ++g) {
+    const auto q = rel(g);
+    const std::size_t i = gen.sources()[g];
+    const double vx = w.v[0][base + g], vy = w.v[1][base + g];
+    if (gen.masks()[g] == 0b001) {  // the floor: up -> -up; no slip: 2 v_w - v
+      ++floor_images;
+      CHECK(q[0] == Approx(i == 0 ? 0.05 : 0.16));
+      CHECK(q[1] == Approx(i == 0 ? -0.03 : -0.02));
+      CHECK(vx == Approx(2 * 0.3 * c - pt.v[0][i]));
+      CHECK(vy == Approx(2 * 0.3 * s - pt.v[1][i]));
+    } else if (gen.masks()[g] == 0b010) {  // the side wall at along = 0.2
+      ++side_images;
+      CHECK(q[0] == Approx(0.24));
+      CHECK(q[1] == Approx(0.02));
+      CHECK(vx == Approx(-0.4));
+      CHECK(vy == Approx(-0.1));
+    } else {  // the corner: through both; -v + v_floor + v_side
+      ++corners;
+      CHECK(gen.masks()[g] == 0b011);
+      CHECK(q[0] == Approx(0.24));
+      CHECK(q[1] == Approx(-0.02));
+      CHECK(vx == Approx(-0.4 + 0.3 * c));
+      CHECK(vy == Approx(-0.1 + 0.3 * s));
+    }
+  }
+  CHECK(floor_images == 2);
+  CHECK(side_images == 1);
+  CHECK(corners == 1);
+  CHECK(gen.max_wall_speed() == Approx(0.3));
+
+  // Free slip on an oblique plane: the normal component of v - v_w mirrored, the tangential kept.
+  GhostPlane<2> slip = floor;
+  slip.no_slip = false;
+  GhostGenerator<2> free(BoxWalls<2>{}, 0.1, {slip});
+  Particles<2> p1 = pt;
+  Workspace<2> w1 = w;
+  w1.n = 2;
+  free.generate(2, p1, w1);
+  for (std::size_t g = 0; g < free.count(); ++g) {
+    const std::size_t i = free.sources()[g];
+    const double vt = w1.v[0][2 + g] * c + w1.v[1][2 + g] * s, vn = -w1.v[0][2 + g] * s + w1.v[1][2 + g] * c;
+    CHECK(vt == Approx(pt.v[0][i] * c + pt.v[1][i] * s));
+    CHECK(vn == Approx(-(-pt.v[0][i] * s + pt.v[1][i] * c)));
+  }
+
+  // The box's faces given as planes make the same images as the box walls.
+  auto box = make_generator(true);
+  BoxWalls<2> none{};
+  std::vector<GhostPlane<2>> faces{{{1.0, 0.0}, 0.0, true, {0.0, 0.3}}, {{-1.0, 0.0}, -1.0, true, {0.0, 0.0}},
+                                   {{0.0, 1.0}, 0.0, true, {1.0, 0.0}}};
+  GhostGenerator<2> as_planes(none, 0.1, faces);
+  Scene a, b;
+  box.generate(a.w.n, a.pt, a.w);
+  as_planes.generate(b.w.n, b.pt, b.w);
+  REQUIRE(as_planes.count() == box.count());
+  CHECK(as_planes.masks() == box.masks());
+  for (std::size_t k = 0; k < a.w.n; ++k)
+    for (int d = 0; d < 2; ++d) {
+      CHECK(b.w.x[d][k] == Approx(a.w.x[d][k]).margin(1e-15));
+      CHECK(b.w.v[d][k] == Approx(a.w.v[d][k]).margin(1e-15));
+    }
+}

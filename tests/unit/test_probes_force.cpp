@@ -42,7 +42,8 @@ Tank make_tank(const Config& c, double speed) {
   t.sys->rhs(0.0, t.y.data(), t.ydot.data());  // also fills the density, pressure and sound speed
   const auto& d = c.discretization;
   t.model.momentum_116 = d.momentum == "symmetric_116";
-  t.model.dynamic_viscosity = d.viscosity == "morris" ? c.fluid.density * c.fluid.kinematic_viscosity : 0.0;
+  t.model.viscous = d.viscosity == "morris";
+  t.model.dynamic_viscosity = c.fluid.density * c.fluid.kinematic_viscosity;
   t.model.morris_wall_velocity = d.wall_model == "morris";
   t.model.beta_max = d.wall_beta_max;
   t.model.artificial_viscosity = d.artificial_viscosity.enabled;

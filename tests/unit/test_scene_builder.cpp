@@ -371,8 +371,8 @@ TEST_CASE("scene builder: every scene that makes no sense is an error at its lin
     Config g = c;
     g.discretization.boundary = "ghost";
     CHECK(error_of(fluid + "  walls:\n    - shape: {type: sphere, centre: [0.5, 0.8], radius: 0.1}\n", g) ==
-          "scene.yaml:6: scene.walls[0].shape: boundary: ghost mirrors the domain's planar faces only; wall bodies need "
-          "discretization.boundary: wall_particles");
+          "scene.yaml:6: scene.walls[0].shape: discretization.boundary: ghost mirrors only planes (the domain's faces and plane "
+          "wall bodies); a sphere body needs discretization.boundary: wall_particles");
     g.discretization.boundary = "virtual_repulsive";
     CHECK(error_of(fluid, g) ==
           "scene.yaml:2: scene.domain: the scene builds its walls from wall particles or ghost mirrors; discretization.boundary: "
@@ -465,8 +465,9 @@ time:
         "--set discretization.boundary=virtual_repulsive: discretization.boundary: a scene's walls are wall particles or ghost "
         "mirrors (wall_particles or ghost)");
   CHECK_THAT(error({"discretization.boundary=ghost"}, base),
-             Catch::StartsWith("--set discretization.boundary=ghost: discretization.boundary: ghost mirrors only the domain's "
-                               "planar faces; the scene's wall bodies (case.yaml:12: scene.walls[0].shape) need wall_particles"));
+             Catch::StartsWith("--set discretization.boundary=ghost: discretization.boundary: ghost mirrors only planes (the "
+                               "domain's faces and plane wall bodies); the scene's wall body wall0 (case.yaml:12: "
+                               "scene.walls[0].shape) is a sphere and needs wall_particles"));
   CHECK(error({"discretization.spacing=0.3"}, base) ==
         "case.yaml:8: scene.domain.hi: the domain length along x (1 m) is not a whole number of the spacing 0.3 m (a wall axis "
         "needs one, so the lattice meets the faces half a spacing inside)");
@@ -597,4 +598,62 @@ TEST_CASE("scene builder: a pitching cylinder in 3D turns about its axis", "[sce
     CHECK(st.x[1] == Approx(0.5 + std::sin(theta) * rx + std::cos(theta) * ry).margin(1e-12));
     CHECK(st.x[2] == Approx(P.x_ref[2][i]).margin(1e-12));
   }
+}
+
+TEST_CASE("scene builder: plane bodies under boundary: ghost are mirror planes without particles", "[scene][ghost]") {
+  Config c = config(2, 0.1);
+  c.discretization.boundary = "ghost";
+  // A raised floor at y = 0.3 (normal up), a free-slip side mirror at x = 0.8 moving along itself,
+  // the domain's x faces, and a lid on the domain's top face that replaces its mirror.
+  const std::string yaml = R"yaml(scene:
+  domain: {lo: [0, 0], hi: [1, 1]}
+  fluid:
+    - shape: {type: box, lo: [0, 0], hi: [1, 0.6]}
+  walls:
+    - name: floor
+      shape: {type: plane, point: [0, FLOOR], normal: [0, 2]}
+    - name: side
+      shape: {type: plane, point: [0.8, 0], normal: [-1, 0]}
+      velocity: [0, 0.5]
+      slip: free_slip
+    - name: lid
+      shape: {type: plane, point: [0.3, 1], normal: [0, -1]}
+      velocity: [1, 0]
+)yaml";
+  const auto with_floor = [&](const std::string& y) {
+    std::string t = yaml;
+    t.replace(t.find("FLOOR"), 5, y);
+    return t;
+  };
+  const auto s = build_scene<2>(read(with_floor("0.3"), 2), c);
+  CHECK(s.ghost);
+  CHECK(s.particles.n_wall() == 0u);
+  CHECK(s.particles.n_fluid == 8u * 3u);  // x 0.05..0.75, y 0.35..0.55
+  for (std::size_t i = 0; i < s.particles.n_fluid; ++i) {
+    CHECK(s.particles.x[1][i] > 0.3);
+    CHECK(s.particles.x[0][i] < 0.8);
+  }
+  REQUIRE(s.ghost_planes.size() == 3u);
+  CHECK(s.ghost_planes[0].normal == std::array<double, 2>{0.0, 1.0});
+  CHECK(s.ghost_planes[0].offset == Approx(0.3));
+  CHECK(s.ghost_planes[0].no_slip);
+  CHECK(s.ghost_planes[1].normal == std::array<double, 2>{-1.0, 0.0});
+  CHECK(s.ghost_planes[1].offset == Approx(-0.8));
+  CHECK_FALSE(s.ghost_planes[1].no_slip);
+  CHECK(s.ghost_planes[1].velocity == std::array<double, 2>{0.0, 0.5});
+  CHECK(s.ghost_planes[2].velocity == std::array<double, 2>{1.0, 0.0});
+  CHECK(s.body_names == std::vector<std::string>{"floor", "side", "lid"});
+  CHECK(s.particles.body_treatment == std::vector<WallTreatment>{WallTreatment::ghost, WallTreatment::ghost, WallTreatment::ghost});
+  CHECK(s.walls[1][0].present);        // the lower face stays a mirror: 0.3 m below the floor, beyond the support
+  CHECK_FALSE(s.walls[1][1].present);  // the lid replaces the top face's mirror
+  CHECK_FALSE(s.open_faces);
+  // A floor one spacing above the lower face with h = 2 dx (support 0.4 m): the face's images of the
+  // first rows (0.3 m from them) would reach the fluid.
+  Config wide = c;
+  wide.discretization.smoothing_ratio = 2.0;
+  CHECK(error_of(with_floor("0.1"), wide) ==
+        "scene.yaml:7: scene.walls[0].shape: this ghost mirror and the domain's lower y face face the same way 0.1 m apart: "
+        "the images of the one behind would reach the fluid of the other (2 gap + dx = 0.3 m within the kernel support, 0.4 m); "
+        "open that face or move the plane");
+  CHECK(error_of(with_floor("0.2"), wide) == "<no error>");
 }

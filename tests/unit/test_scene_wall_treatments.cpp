@@ -364,9 +364,42 @@ TEST_CASE("scene treatments and densities: what makes no sense is an error at it
   const std::string wall = head + "  walls:\n    - shape: {type: plane, point: [0, 0.9], normal: [0, -1]}\n";
   Config c = config(2, 0.1);
   c.discretization.density = "continuity";
+  // Ghost mirrors: plane bodies under boundary: ghost only, in place (scene/ghost_planes.hpp).
   CHECK(error_of(wall + "      treatment: ghost\n", c) ==
-        "scene.yaml:7: scene.walls[0].treatment: ghost mirrors are available for the domain's faces only (discretization.boundary: "
-        "ghost); a wall body takes rest, extrapolated, dynamic or repulsive");
+        "scene.yaml:7: scene.walls[0].treatment: a ghost mirror needs discretization.boundary: ghost, which makes every wall a "
+        "mirror (mirrors reflect fluid only, so wall particles beside them would get no images)");
+  CHECK(error_of(head + "  walls:\n    - shape: {type: sphere, centre: [0.5, 0.8], radius: 0.1}\n      treatment: ghost\n", c) ==
+        "scene.yaml:7: scene.walls[0].treatment: ghost mirrors need a plane body (shape type plane); a 'sphere' takes rest, "
+        "extrapolated, dynamic or repulsive");
+  CHECK_THAT(error_of(wall + "      treatment: ghost\n      layers: 2\n", c),
+             Contains("scene.walls[0].layers: a ghost mirror has no wall particles: remove layers"));
+  CHECK_THAT(error_of(wall + "      treatment: ghost\n      velocity: [0.1, 0.2]\n", c),
+             Contains("scene.walls[0].velocity: a ghost mirror stays in place, so its velocity must lie along the plane (normal "
+                      "component -0.2 m/s)"));
+  CHECK_THAT(error_of(wall + "      treatment: ghost\n      motion: {type: translation, velocity: [0.1, 0]}\n", c),
+             Contains("scene.walls[0].motion: a ghost mirror stays in place"));
+  {
+    Config g = c;
+    g.discretization.boundary = "ghost";
+    CHECK(error_of(wall + "      treatment: ghost\n      velocity: [0.1, 0]\n      slip: free_slip\n", g) == "<no error>");
+    CHECK(error_of(wall + "      treatment: rest\n", g) ==
+          "scene.yaml:7: scene.walls[0].treatment: 'rest' makes wall particles, and discretization.boundary: ghost makes every "
+          "wall a mirror (wall particles would get no images); use treatment: ghost or boundary: wall_particles");
+    // Across a periodic axis, off the lattice, and at 135 degrees to a face.
+    const std::string per = "scene:\n  domain: {lo: [0, 0], hi: [1, 1], boundaries: [periodic, wall]}\n  fluid:\n    - shape: "
+                            "{type: box, lo: [0, 0], hi: [1, 0.5]}\n  walls:\n    - shape: {type: plane, point: [0.5, 0.9], ";
+    CHECK(error_of(per + "normal: [1, -1]}\n", g) ==
+          "scene.yaml:6: scene.walls[0].shape: a ghost mirror across the periodic axis x would not be periodic; its normal must "
+          "have no x component");
+    CHECK(error_of(per + "normal: [0, -1]}\n", g) == "<no error>");
+    CHECK(error_of(head + "  walls:\n    - shape: {type: plane, point: [0, 0.95], normal: [0, -1]}\n", g) ==
+          "scene.yaml:6: scene.walls[0].shape: a ghost mirror along the y axis must lie a whole number of spacings (0.1 m) from "
+          "the domain's lower face, as the faces do; it lies 9.5 spacings from it");
+    CHECK(error_of(head + "  walls:\n    - shape: {type: plane, point: [0.5, 0], normal: [1, 1]}\n", g) ==
+          "scene.yaml:6: scene.walls[0].shape: this ghost mirror and the domain's lower x face meet at 135 degrees within the "
+          "kernel support (0.26 m) of the domain; mirrors need right angles where the fluid reaches both (use "
+          "discretization.boundary: wall_particles)");
+  }
   CHECK_THAT(error_of(wall + "      treatment: fixed\n", c), Contains("scene.yaml:7: scene.walls[0].treatment: unknown value 'fixed'"));
   CHECK(error_of(wall + "      repulsive: {strength: 1}\n", c) ==
         "scene.yaml:7: scene.walls[0].repulsive: the parameters of the repulsive force (Niedoba 2012, eq 2.76) need treatment: repulsive");

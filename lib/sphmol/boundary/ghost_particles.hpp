@@ -16,10 +16,16 @@
 //   makes the mean of source and image the mean of the two wall velocities; at a stationary corner
 //   simply -v). At the moving lid's corners of a driven cavity this gives the average of lid and side
 //   wall, i.e. half the lid speed: the corner singularity is smoothed over one image, nothing more.
+// Besides the box's faces, any plane (GhostPlane: a unit normal into the fluid, not necessarily along
+// an axis) mirrors the same way: x_g = x - 2 (n.x - c) n, and free slip mirrors the normal component
+// of v - v_w. Corner images are made for every set of nearby mirrors that are pairwise at right
+// angles (the images of mirrors at other angles do not close; the scene builder refuses such mirrors
+// where the fluid could reach both, scene/ghost_planes.hpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "sphmol/rhs/particle_generator.hpp"
@@ -39,11 +45,57 @@ struct PlanarWall {
 template <int D>
 using BoxWalls = std::array<std::array<PlanarWall<D>, 2>, D>;
 
+// |n_a . n_b| below this: two mirrors at right angles (corner images); |n_a . n_b| within it of 1:
+// parallel. Loose enough for normals typed to 7 digits.
+inline constexpr double kMirrorRightAngle = 1e-6;
+
+// A mirror plane n.x = offset, n the unit normal pointing into the fluid; velocity tangential.
+template <int D>
+struct GhostPlane {
+  std::array<double, D> normal{};
+  double offset = 0.0;
+  bool no_slip = true;
+  std::array<double, D> velocity{};
+};
+
 template <int D>
 class GhostGenerator final : public ParticleGenerator<D> {
  public:
   // support: the kernel support in units of h (images are made within support * max h of a wall).
-  GhostGenerator(BoxWalls<D> walls, double support) : walls_(walls), support_(support) {}
+  // The box's faces come first, in the order (x lower, x upper, y lower, ...), then `planes`.
+  GhostGenerator(BoxWalls<D> walls, double support, const std::vector<GhostPlane<D>>& planes = {}) : support_(support) {
+    for (int d = 0; d < D; ++d)
+      for (int s = 0; s < 2; ++s) {
+        const auto& w = walls[d][s];
+        if (!w.present) continue;
+        Mirror m;
+        m.axis = d;
+        m.position = w.position;
+        m.normal[d] = s == 0 ? 1.0 : -1.0;
+        m.offset = s == 0 ? w.position : -w.position;
+        m.no_slip = w.no_slip;
+        m.velocity = w.velocity;
+        mirrors_.push_back(m);
+      }
+    for (const auto& p : planes) {
+      Mirror m;
+      m.normal = p.normal;
+      m.offset = p.offset;
+      m.no_slip = p.no_slip;
+      m.velocity = p.velocity;
+      mirrors_.push_back(m);
+    }
+    if (mirrors_.size() > 32) throw std::invalid_argument("ghost walls: at most 32 mirror planes");
+    for (std::size_t a = 0; a < mirrors_.size(); ++a) {
+      std::uint32_t bits = 0;
+      for (std::size_t b = 0; b < mirrors_.size(); ++b) {
+        double c = 0.0;
+        for (int d = 0; d < D; ++d) c += mirrors_[a].normal[d] * mirrors_[b].normal[d];
+        if (b != a && std::abs(c) <= kMirrorRightAngle) bits |= 1u << b;
+      }
+      perpendicular_.push_back(bits);
+    }
+  }
 
   bool generate(std::size_t n_base, Particles<D>& pt, Workspace<D>& w) override {
     n_base_ = n_base;
@@ -52,26 +104,27 @@ class GhostGenerator final : public ParticleGenerator<D> {
     const double width = support_ * hmax;
     new_source_.clear();
     new_mask_.clear();
+    std::vector<std::uint32_t> near;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      unsigned near[2 * D];
-      int nn = 0;
-      for (int d = 0; d < D; ++d)
-        for (int s = 0; s < 2; ++s) {
-          const auto& wall = walls_[d][s];
-          if (!wall.present) continue;
-          const double dist = s == 0 ? w.x[d][i] - wall.position : wall.position - w.x[d][i];
-          if (dist < width) near[nn++] = 1u << (2 * d + s);
-        }
-      // every non-empty combination of the nearby walls, never both walls of one direction
-      for (unsigned sub = 1; sub < (1u << nn); ++sub) {
-        unsigned mask = 0;
-        for (int b = 0; b < nn; ++b)
-          if (sub & (1u << b)) mask |= near[b];
+      near.clear();
+      for (std::size_t m = 0; m < mirrors_.size(); ++m)
+        if (distance(mirrors_[m], w, i) < width) near.push_back(static_cast<std::uint32_t>(m));
+      // Every non-empty set of the nearby mirrors that are pairwise at right angles (never both walls
+      // of one direction). At most D mirrors are pairwise perpendicular, so the sets stay few.
+      const auto nn = static_cast<unsigned>(near.size());
+      if (nn > 16) throw std::invalid_argument("ghost walls: a particle lies near more than 16 mirror planes");
+      for (std::uint32_t sub = 1; sub < (1u << nn); ++sub) {
+        std::uint32_t mask = 0;
         bool ok = true;
-        for (int d = 0; d < D; ++d) ok = ok && ((mask >> (2 * d)) & 3u) != 3u;
+        for (unsigned b = 0; b < nn && ok; ++b) {
+          if (!(sub & (1u << b))) continue;
+          const std::uint32_t bit = 1u << near[b];
+          ok = (mask & ~perpendicular_[near[b]]) == 0;
+          mask |= bit;
+        }
         if (!ok) continue;
         new_source_.push_back(static_cast<std::uint32_t>(i));
-        new_mask_.push_back(static_cast<std::uint8_t>(mask));
+        new_mask_.push_back(mask);
       }
     }
     const bool changed = new_source_ != source_ || new_mask_ != mask_;
@@ -112,21 +165,35 @@ class GhostGenerator final : public ParticleGenerator<D> {
   std::size_t count() const override { return source_.size(); }
   double max_wall_speed() const override {
     double s = 0.0;
-    for (const auto& side : walls_)
-      for (const auto& wall : side) {
-        if (!wall.present) continue;
-        double v2 = 0.0;
-        for (double c : wall.velocity) v2 += c * c;
-        s = std::max(s, std::sqrt(v2));
-      }
+    for (const auto& m : mirrors_) {
+      double v2 = 0.0;
+      for (double c : m.velocity) v2 += c * c;
+      s = std::max(s, std::sqrt(v2));
+    }
     return s;
   }
   std::size_t base() const { return n_base_; }
   const std::vector<std::uint32_t>& sources() const { return source_; }
-  const std::vector<std::uint8_t>& masks() const { return mask_; }
+  const std::vector<std::uint32_t>& masks() const { return mask_; }
 
  private:
-  void image(Workspace<D>& w, std::size_t i, unsigned mask, std::size_t g) const {
+  struct Mirror {
+    int axis = -1;          // a box face: its axis (the exact arithmetic of the box walls); -1 a plane
+    double position = 0.0;  // a box face: x_axis = position
+    std::array<double, D> normal{};
+    double offset = 0.0;
+    bool no_slip = true;
+    std::array<double, D> velocity{};
+  };
+  // The signed distance of particle i from the mirror, positive on the fluid side.
+  static double distance(const Mirror& m, const Workspace<D>& w, std::size_t i) {
+    if (m.axis >= 0) return m.normal[m.axis] > 0.0 ? w.x[m.axis][i] - m.position : m.position - w.x[m.axis][i];
+    double s = -m.offset;
+    for (int d = 0; d < D; ++d) s += m.normal[d] * w.x[d][i];
+    return s;
+  }
+
+  void image(Workspace<D>& w, std::size_t i, std::uint32_t mask, std::size_t g) const {
     double v[D], vw_sum[D] = {};
     int walls = 0;
     bool all_no_slip = true;
@@ -134,30 +201,46 @@ class GhostGenerator final : public ParticleGenerator<D> {
       w.x[d][g] = w.x[d][i];
       v[d] = w.v[d][i];
     }
-    for (int d = 0; d < D; ++d)
-      for (int s = 0; s < 2; ++s) {
-        if (!(mask & (1u << (2 * d + s)))) continue;
-        const auto& wall = walls_[d][s];
-        w.x[d][g] = 2.0 * wall.position - w.x[d][g];
-        ++walls;
-        all_no_slip = all_no_slip && wall.no_slip;
-        for (int c = 0; c < D; ++c) vw_sum[c] += wall.velocity[c];
-        if (wall.no_slip) {
-          for (int c = 0; c < D; ++c) v[c] = 2.0 * wall.velocity[c] - v[c];
+    for (std::size_t k = 0; k < mirrors_.size(); ++k) {
+      if (!(mask & (1u << k))) continue;
+      const Mirror& m = mirrors_[k];
+      ++walls;
+      all_no_slip = all_no_slip && m.no_slip;
+      for (int c = 0; c < D; ++c) vw_sum[c] += m.velocity[c];
+      if (m.axis >= 0) {
+        const int d = m.axis;
+        w.x[d][g] = 2.0 * m.position - w.x[d][g];
+        if (m.no_slip) {
+          for (int c = 0; c < D; ++c) v[c] = 2.0 * m.velocity[c] - v[c];
         } else {
-          v[d] = 2.0 * wall.velocity[d] - v[d];
+          v[d] = 2.0 * m.velocity[d] - v[d];
         }
+        continue;
       }
+      // The image so far (for a corner: already mirrored through the other planes) mirrored again.
+      double dist = -m.offset, vn = 0.0;
+      for (int d = 0; d < D; ++d) {
+        dist += m.normal[d] * w.x[d][g];
+        vn += m.normal[d] * (v[d] - m.velocity[d]);
+      }
+      for (int d = 0; d < D; ++d) w.x[d][g] -= 2.0 * dist * m.normal[d];
+      if (m.no_slip) {
+        for (int c = 0; c < D; ++c) v[c] = 2.0 * m.velocity[c] - v[c];
+      } else {
+        for (int c = 0; c < D; ++c) v[c] -= 2.0 * vn * m.normal[c];
+      }
+    }
     if (walls > 1 && all_no_slip)
       for (int c = 0; c < D; ++c) v[c] = -w.v[c][i] + 2.0 * vw_sum[c] / walls;
     for (int c = 0; c < D; ++c) w.v[c][g] = v[c];
   }
 
-  BoxWalls<D> walls_;
+  std::vector<Mirror> mirrors_;
+  std::vector<std::uint32_t> perpendicular_;  // per mirror: the mirrors at right angles to it
   double support_;
   std::size_t n_base_ = 0;
   std::vector<std::uint32_t> source_, new_source_;
-  std::vector<std::uint8_t> mask_, new_mask_;
+  std::vector<std::uint32_t> mask_, new_mask_;
 };
 
 // Copies density (and, through the EOS that runs next, pressure) from each ghost's source. Runs right

@@ -103,7 +103,8 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     if (barotropic && f.eos.sound_speed > 0) dt_max = std::min(dt_max, t.cfl.acoustic * h / f.eos.sound_speed);
     // The IMEX integrators treat the viscous term implicitly: their CFL step has no viscous limit.
     const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
-    if (f.kinematic_viscosity > 0 && !imex) dt_max = std::min(dt_max, t.cfl.viscous * h * h / f.kinematic_viscosity);
+    const double nu = std::max(f.kinematic_viscosity, s.kinematic_viscosity);
+    if (nu > 0 && !imex) dt_max = std::min(dt_max, t.cfl.viscous * h * h / nu);
     if (t.t_end / dt_max > max_steps)
       r.time.fail("max_steps", std::to_string(t.max_steps) + " steps cannot reach time.t_end = " + shown(t.t_end) +
                                    " s: the CFL step is at most " + shown(dt_max) + " s (h = " + shown(h) + " m), so at least " +

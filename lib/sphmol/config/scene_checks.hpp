@@ -30,6 +30,7 @@ struct SceneSize {
   double spacing = 0.0;
   double fluid = 0.0, wall = 0.0;  // doubles: an absurd config must not overflow the count
   double bytes_per_particle = 0.0;
+  double kinematic_viscosity = 0.0;  // the largest of the scene's fluids, if above fluid.kinematic_viscosity [m^2/s]
   double bytes() const { return (fluid + wall) * bytes_per_particle; }
   // Periodic lengths of the scene, each with where it came from ("FILE:LINE: key.path", from
   // MapReader::where) for the message.

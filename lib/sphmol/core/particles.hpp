@@ -19,7 +19,8 @@ enum class Kind : std::uint8_t { Fluid = 0, Wall = 1 };
 // How a wall body's particles act on the fluid (a scene's walls[i].treatment): wall particles whose
 // pressure is the rest pressure, extrapolated from the fluid (Adami et al. 2012) or evolved as dynamic
 // boundary particles (Crespo et al. 2007), or massless repulsive particles (Monaghan 1994).
-enum class WallTreatment : std::uint8_t { rest, extrapolated, dynamic, repulsive };
+// ghost: a mirror plane of a scene (boundary/ghost_particles.hpp), a body without particles.
+enum class WallTreatment : std::uint8_t { rest, extrapolated, dynamic, repulsive, ghost };
 
 // The Lennard-Jones law of a repulsive body (Niedoba 2012, eq 2.76): strength D [m^2/s^2], exponents
 // p1 > p2 and cut-off r0 [m]. r0 = 0: no force (a body that is not repulsive).
@@ -81,6 +82,10 @@ struct Particles {
   // Per particle: the rest density rho0 of its fluid body (fluid.density for walls), which the EOS
   // reads (physics/eos_tait.hpp). Empty: every particle has fluid.density.
   std::vector<double> rest_density;
+  // Per particle: the dynamic viscosity mu = rho0 nu of its fluid body [Pa s] (walls: 0, unused: a
+  // wall pair takes the fluid particle's), which the Morris term reads (physics/morris_viscosity.hpp).
+  // Empty: every fluid particle has fluid.density * fluid.kinematic_viscosity.
+  std::vector<double> viscosity;
 
   // The prescribed motions of wall bodies (core/wall_motion.hpp) and, per particle, the index of the
   // one it follows; -1 (the default) for a wall that moves with its own v (x_ref + v t, or stays at

@@ -59,7 +59,8 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
   support_ = K.support;
   const auto& disc = config.discretization;
   model_.momentum_116 = disc.momentum == "symmetric_116";
-  model_.dynamic_viscosity = disc.viscosity == "morris" ? config.fluid.density * config.fluid.kinematic_viscosity : 0.0;
+  model_.viscous = disc.viscosity == "morris";
+  model_.dynamic_viscosity = config.fluid.density * config.fluid.kinematic_viscosity;
   model_.morris_wall_velocity = disc.wall_model == "morris";
   model_.beta_max = disc.wall_beta_max;
   model_.artificial_viscosity = disc.artificial_viscosity.enabled;
@@ -165,7 +166,7 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
       for (int d = 0; d < D; ++d) head << ",F" << kAxis[d] << " [" << unit << "]";
       s.description = "probe " + c.name + ": force of the fluid on wall body " + c.body +
                       " (sum over fluid-wall pairs of the momentum equation's pair forces: pressure, eq " +
-                      (model_.momentum_116 ? "116" : "117") + (model_.dynamic_viscosity > 0 ? ", Morris viscosity" : "") +
+                      (model_.momentum_116 ? "116" : "117") + (model_.viscous ? ", Morris viscosity" : "") +
                       (model_.artificial_viscosity ? ", artificial viscosity" : "") + ")" +
                       (D == 2 ? ", per unit depth" : "") + ", " + when;
     }

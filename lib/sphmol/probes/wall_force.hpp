@@ -26,7 +26,8 @@ namespace sphmol {
 
 struct WallForceModel {
   bool momentum_116 = false;        // eq 116 instead of eq 117
-  double dynamic_viscosity = 0.0;   // mu = rho0 nu of the Morris term; 0: no viscous term
+  bool viscous = false;             // the Morris term is on
+  double dynamic_viscosity = 0.0;   // mu = rho0 nu of the Morris term (Particles::viscosity instead, when set)
   bool morris_wall_velocity = false;
   double beta_max = 8.0;
   bool artificial_viscosity = false;
@@ -77,14 +78,16 @@ std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceStat
       if (model.artificial_viscosity)
         cx -= mj * model.pi(vx, r * r, h, 0.5 * (s.c[i] + s.c[j]), 0.5 * (s.rho[i] + s.rho[j])) * F;
       double cv = 0.0;
-      if (model.dynamic_viscosity > 0.0) {
+      if (model.viscous) {
         double beta = P.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
         if (model.morris_wall_velocity && beta > 0.0) {
           double dA = -P.wall_depth[j];
           for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
           beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;
         }
-        cv = mj * 2.0 * model.dynamic_viscosity / (s.rho[i] * s.rho[j]) * F * r * r / (r * r + eta2) * beta;
+        // A wall pair takes the fluid particle's mu (physics/morris_viscosity.hpp).
+        const double mu = P.viscosity.empty() ? model.dynamic_viscosity : P.viscosity[i];
+        cv = mj * 2.0 * mu / (s.rho[i] * s.rho[j]) * F * r * r / (r * r + eta2) * beta;
       }
       // The body receives -m_i a_ij.
       for (int d = 0; d < D; ++d) force[d] -= P.mass[i] * (cx * dx[d] + cv * (s.v[d][i] - s.v[d][j]));

@@ -43,7 +43,8 @@ namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
-                                              double spacing, const BoxWalls<D>* walls, std::vector<double> energy) {
+                                              double spacing, const BoxWalls<D>* walls, std::vector<double> energy,
+                                              const std::vector<GhostPlane<D>>& planes) {
   const auto& disc = config.discretization;
   const auto& fluid = config.fluid;
   const double h = disc.smoothing_ratio * spacing;
@@ -76,10 +77,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const auto walls_with = [&](WallTreatment t) { return global_walls == t || particles.any_body_treatment(t); };
   const bool dynamic_walls = walls_with(WallTreatment::dynamic);
   std::unique_ptr<GhostGenerator<D>> ghosts;
+  if (!planes.empty() && disc.boundary != "ghost") throw std::invalid_argument("ghost mirror planes need discretization.boundary: ghost");
   if (disc.boundary == "ghost") {
     if (!walls) throw std::invalid_argument("discretization.boundary: ghost needs a scene with planar walls");
     // Images of every particle within the kernel support of a wall; the set is rebuilt each evaluation.
-    ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support());
+    ghosts = std::make_unique<GhostGenerator<D>>(*walls, kernel->support(), planes);
     add("discretization.boundary", std::make_unique<GhostStateCopy<D>>(ghosts.get()));
   }
   std::array<double, D> g{};
@@ -160,13 +162,20 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.viscosity != "none" &&
       std::any_of(particles.free_slip_body.begin(), particles.free_slip_body.end(), [](std::uint8_t f) { return f != 0; }))
     add("discretization.viscosity", std::make_unique<FreeSlipWalls<D>>(particles.free_slip_body, disc.viscosity == "strain_rate"));
+  // Fluids of several viscosities (Particles::viscosity): Morris' form with each particle's own mu.
+  const bool variable_mu = !particles.viscosity.empty();
+  if (variable_mu && disc.viscosity != "morris")
+    throw std::invalid_argument("fluid bodies of their own kinematic_viscosity need discretization.viscosity: morris");
   if (disc.viscosity == "strain_rate") {
     add("discretization.viscosity", std::make_unique<StrainRate<D>>());
     add("discretization.momentum", pressure());
     add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
     add("discretization.momentum", pressure());
-    if (disc.laplacian_correction == "moment") add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true>>(mu));
+    const bool moment = disc.laplacian_correction == "moment";
+    if (variable_mu && moment) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true, true>>(mu));
+    else if (variable_mu) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, false, true>>(mu));
+    else if (moment) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true>>(mu));
     else add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
   } else if (disc.viscosity == "none") {
     if (!wc_row) add("discretization.momentum", pressure());
@@ -215,8 +224,15 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
 
   auto list = std::make_unique<VerletList<D>>(make_neighbor_search<D>(disc.neighbor_search), kernel->support() * h,
                                               disc.skin * h);
+  // The viscous limit of the most viscous fluid: nu = mu / rho0 of each particle.
+  double nu_max = fluid.kinematic_viscosity;
+  if (variable_mu) {
+    nu_max = 0.0;
+    for (std::size_t i = 0; i < particles.n_fluid; ++i)
+      nu_max = std::max(nu_max, particles.viscosity[i] / (particles.rest_density.empty() ? fluid.density : particles.rest_density[i]));
+  }
   CflLimits cfl{config.time.cfl.acoustic, config.time.cfl.force, config.time.cfl.viscous,
-                fluid.eos.type == "ideal_gas" ? 0.0 : fluid.eos.sound_speed, fluid.kinematic_viscosity};
+                fluid.eos.type == "ideal_gas" ? 0.0 : fluid.eos.sound_speed, nu_max};
   auto sys = std::make_unique<SphSystem<D>>(std::move(particles), domain, h, std::move(kernel), std::move(terms),
                                             std::move(list), cfl);
   StateFields fields;
@@ -245,8 +261,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   return sys;
 }
 
-template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double, const BoxWalls<1>*, std::vector<double>);
-template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double, const BoxWalls<2>*, std::vector<double>);
-template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double, const BoxWalls<3>*, std::vector<double>);
+template std::unique_ptr<SphSystem<1>> assemble_system<1>(const Config&, Particles<1>, const Domain<1>&, double, const BoxWalls<1>*, std::vector<double>, const std::vector<GhostPlane<1>>&);
+template std::unique_ptr<SphSystem<2>> assemble_system<2>(const Config&, Particles<2>, const Domain<2>&, double, const BoxWalls<2>*, std::vector<double>, const std::vector<GhostPlane<2>>&);
+template std::unique_ptr<SphSystem<3>> assemble_system<3>(const Config&, Particles<3>, const Domain<3>&, double, const BoxWalls<3>*, std::vector<double>, const std::vector<GhostPlane<3>>&);
 
 }  // namespace sphmol

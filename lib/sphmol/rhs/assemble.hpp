@@ -15,8 +15,9 @@ namespace sphmol {
 template <int D>
 std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D> particles, const Domain<D>& domain,
                                               double spacing, const BoxWalls<D>* walls = nullptr,
-                                              std::vector<double> energy = {});
-// `walls`: the scene's planar walls, needed by boundary: ghost (mirror images are generated from them).
+                                              std::vector<double> energy = {}, const std::vector<GhostPlane<D>>& planes = {});
+// `walls`: the scene's planar walls, needed by boundary: ghost (mirror images are generated from them);
+// `planes`: further mirror planes (a scene's ghost wall bodies), with boundary: ghost only.
 // `energy`: initial specific internal energy per particle, for scenes with the energy equation.
 
 }  // namespace sphmol

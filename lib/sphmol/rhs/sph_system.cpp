@@ -451,6 +451,7 @@ void SphSystem<D>::reorder_workspace() {
   }
   for (auto* v : {&ws_.rho, &ws_.p, &ws_.c, &ws_.e, &ws_.hs, &wp_.mass, &wp_.rho, &wp_.wall_depth}) both(*v, td);
   if (!wp_.rest_density.empty()) both(wp_.rest_density, td);
+  if (!wp_.viscosity.empty()) both(wp_.viscosity, td);
   for (auto& s : ws_.strain) both(s, td);
   if (!h_ref_.empty()) both(h_ref_, td);
   if (!rho_ref_.empty()) both(rho_ref_, td);

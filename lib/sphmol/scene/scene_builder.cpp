@@ -10,6 +10,7 @@
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
+#include "sphmol/scene/ghost_planes.hpp"
 #include "sphmol/scene/scene_shapes.hpp"
 #include "sphmol/scene/scene_velocity_scale.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
@@ -109,9 +110,10 @@ void check_scene_bodies(const SceneSpec& spec, const Config& config) {
   const bool barotropic = config.fluid.eos.type != "ideal_gas";
   const double support = (spec.dimension == 2 ? kernel_info<2>(d.kernel).support : kernel_info<3>(d.kernel).support) *
                          d.smoothing_ratio;  // in spacings
+  check_ghost_bodies(spec, config, "");
   for (const auto& w : spec.walls) {
     const std::string& t = w.treatment;
-    if (t.empty()) continue;  // discretization.wall_pressure, which the loader checked
+    if (t.empty() || t == "ghost") continue;  // discretization.wall_pressure, which the loader checked; mirrors
     const std::string& at = w.where_treatment;
     if (d.wall_model == "adami" && t != "extrapolated")
       fail(at, "'" + t + "' with discretization.wall_model: adami, which extrapolates every wall's pressure (Adami et al. 2012); "
@@ -131,6 +133,18 @@ void check_scene_bodies(const SceneSpec& spec, const Config& config) {
     if (t == "repulsive" && !(w.repulsion.r0 < support))
       fail(w.where_repulsion, "r0 = " + num(w.repulsion.r0) + " spacings must lie inside the kernel support (" + num(support) +
                                   " spacings)");
+  }
+  for (const auto& f : spec.fluid) {
+    const double nu = f.viscosity;
+    if (nu >= 0.0 && nu != config.fluid.kinematic_viscosity) {
+      const std::string& at = f.where_viscosity;
+      if (d.viscosity == "none" && nu > 0.0)
+        fail(at, "a viscous body needs discretization.viscosity: morris (it is 'none')");
+      if (d.viscosity == "strain_rate")
+        fail(at, "fluids of several viscosities need discretization.viscosity: morris (each particle's own mu in Morris et al. "
+                 "1997, eq 8); 'strain_rate' takes one mu");
+      if (d.energy && nu > 0.0) fail(at, "the energy equation has no viscous heating: the body's kinematic_viscosity must be 0");
+    }
   }
   for (const auto& f : spec.fluid) {
     if (!(f.density > 0.0) || f.density == config.fluid.density) continue;
@@ -208,10 +222,14 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   std::vector<double> thickness;
   double max_thickness = default_layers * dx;
   for (const auto& w : spec.walls) {
-    if (ghost)
-      fail(w.where, "boundary: ghost mirrors the domain's planar faces only; wall bodies need discretization.boundary: wall_particles");
     ShapePtr<D> s = make_shape<D>(w.shape);
     const Bounds<D> b = s->bounds();
+    // A mirror plane (scene/ghost_planes.hpp checks its place): it only keeps the fluid out.
+    if (is_ghost_body(w, config)) {
+      solids.push_back(s);
+      thickness.push_back(0.0);
+      continue;
+    }
     for (int d = 0; d < D; ++d) {
       if (dom.boundary[d] == AxisBoundary::periodic && !(b.lo[d] > box.lo[d] && b.hi[d] < box.hi[d]))
         fail(w.where, std::string("the wall body reaches across the periodic axis ") + kAxisName[d] +
@@ -394,6 +412,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
         w.position = side == 0 ? box.lo[d] : box.hi[d];
         w.no_slip = disc.wall_slip != "free_slip";
       }
+    out.ghost_planes = ghost_planes<D>(spec, config, out.walls, dx, support);
   } else {
     for (const auto& w : box_container_walls<D>(box.lo, box.hi, open, cubic, default_layers * dx))
       out.particles.add(Kind::Wall, w.x, {}, m_cubic, rho0, w.normal, w.depth);
@@ -403,6 +422,13 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   // beyond its faces), not already in an earlier body.
   for (std::size_t k = 0; k < solids.size(); ++k) {
     const auto& w = spec.walls[k];
+    if (is_ghost_body(w, config)) {  // no particles: its images are made at every evaluation
+      out.body_names.push_back(w.name);
+      out.particles.free_slip_body.push_back(w.free_slip ? 1 : 0);
+      out.particles.body_treatment.push_back(WallTreatment::ghost);
+      out.particles.body_repulsion.push_back({});
+      continue;
+    }
     const std::string& treatment = w.treatment.empty() ? disc.wall_pressure : w.treatment;
     const bool repulsive = treatment == "repulsive";
     const Bounds<D> region = box.grown(dx);
@@ -455,6 +481,19 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     auto& r = out.particles.rest_density;
     for (const auto& f : fills) r.insert(r.end(), f.pts.size(), f.rho0);
     r.resize(out.particles.size(), rho0);
+  }
+
+  // Morris' viscosity with each fluid body's own mu = rho0_k nu_k, where that differs from one body to
+  // another (its own kinematic_viscosity, or its own rest density at the common nu).
+  if (disc.viscosity == "morris") {
+    std::vector<double> mu_k;
+    for (std::size_t k = 0; k < fills.size(); ++k)
+      mu_k.push_back(fills[k].rho0 * (spec.fluid[k].viscosity >= 0.0 ? spec.fluid[k].viscosity : config.fluid.kinematic_viscosity));
+    if (std::any_of(mu_k.begin(), mu_k.end(), [&](double m) { return m != rho0 * config.fluid.kinematic_viscosity; })) {
+      auto& mu = out.particles.viscosity;
+      for (std::size_t k = 0; k < fills.size(); ++k) mu.insert(mu.end(), fills[k].pts.size(), mu_k[k]);
+      mu.resize(out.particles.size(), 0.0);
+    }
   }
 
   for (int d = 0; d < D; ++d) {

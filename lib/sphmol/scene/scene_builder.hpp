@@ -9,6 +9,8 @@
 //   domain walls (boundary axes `wall`, minus the open faces): wall_particles -> the lattice continued
 //     outside the box (geometry::box_container_walls); ghost -> planar mirror walls (BoxWalls), no
 //     particles;
+//   ghost wall bodies (plane bodies under boundary: ghost): mirror planes (scene/ghost_planes.hpp), no
+//     particles; they keep the fluid out as the other bodies do;
 //   wall bodies: the lattice points inside the solid within `layers` spacings of its surface
 //     (geometry::wall_layer), with the surface normal and depth the Morris et al. (1997) wall model
 //     reads, and Particles::body = the body's index. Particles::body_treatment holds each body's
@@ -20,7 +22,7 @@
 //     fluid.density), mass scaled with it; a hydrostatic body below another hydrostatic body (the
 //     lattice point one step above its highest particle lies in that body) carries its weight.
 // What makes no sense (an empty fill, a body outside the domain, a length that is not a whole number
-// of spacings, ghost walls with wall bodies, ...) is a ConfigError at the element's line.
+// of spacings, ghost walls with wall bodies other than planes, ...) is a ConfigError at the element's line.
 #include <string>
 #include <vector>
 
@@ -37,7 +39,8 @@ struct BuiltScene {
   Particles<D> particles;
   Domain<D> domain;
   BoxWalls<D> walls{};  // the domain's planar walls, for boundary: ghost
-  bool ghost = false;   // `walls` is to be handed to assemble_system
+  bool ghost = false;   // `walls` (and `ghost_planes`) are to be handed to assemble_system
+  std::vector<GhostPlane<D>> ghost_planes;  // the mirror planes of the ghost wall bodies
   double spacing = 0.0;
   int wall_layers = 0;                     // layers of the domain walls
   std::vector<std::string> body_names;     // wall bodies, by Particles::body index

@@ -1,9 +1,11 @@
 #include "sphmol/scene/scene_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/core/join.hpp"
 
 #include "sphmol/scene/scene_shapes.hpp"
@@ -208,10 +210,27 @@ void read_treatment(MapReader& w, WallBodySpec& b) {
   b.where_treatment = w.where("treatment");
   b.where_repulsion = w.where("repulsive");
   if (const auto v = w.string("treatment")) {
-    if (*v == "ghost")
-      w.fail("treatment", "ghost mirrors are available for the domain's faces only (discretization.boundary: ghost); a wall body "
-                          "takes rest, extrapolated, dynamic or repulsive");
-    b.treatment = w.choice("treatment", *v, {"rest", "extrapolated", "dynamic", "repulsive"});
+    b.treatment = w.choice("treatment", *v, {"rest", "extrapolated", "dynamic", "repulsive", "ghost"});
+  }
+  if (b.treatment == "ghost") {
+    // A mirror plane: no particles, and it must stay where it is (boundary/ghost_particles.hpp).
+    if (b.shape.type != "plane")
+      w.fail("treatment", "ghost mirrors need a plane body (shape type plane); a '" + b.shape.type +
+                              "' takes rest, extrapolated, dynamic or repulsive");
+    if (w.has("repulsive")) w.fail("repulsive", "the parameters of the repulsive force need treatment: repulsive");
+    if (b.layers > 0) w.fail("layers", "a ghost mirror has no wall particles: remove layers");
+    if (b.motion) w.fail("motion", "a ghost mirror stays in place; a moving surface is velocity: [...] along the plane");
+    double n2 = 0.0, vn = 0.0;
+    for (std::size_t d = 0; d < b.shape.normal.size(); ++d) {
+      n2 += b.shape.normal[d] * b.shape.normal[d];
+      if (d < b.velocity.size()) vn += b.shape.normal[d] * b.velocity[d];
+    }
+    double v2 = 0.0;
+    for (double c : b.velocity) v2 += c * c;
+    if (std::abs(vn) > 1e-12 * std::sqrt(n2 * v2))
+      w.fail("velocity", "a ghost mirror stays in place, so its velocity must lie along the plane (normal component " +
+                             number_text(vn / std::sqrt(n2)) + " m/s)");
+    return;
   }
   const bool repulsive = b.treatment == "repulsive";
   if (w.has("repulsive") && !repulsive)
@@ -250,7 +269,7 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
   const std::filesystem::path folder = std::filesystem::path(config_file).parent_path();
   s.domain = read_domain(scene, dimension);
 
-  auto fluids = scene.section_list("fluid", {"shape", "lattice", "velocity", "pressure", "density"});
+  auto fluids = scene.section_list("fluid", {"shape", "lattice", "velocity", "pressure", "density", "kinematic_viscosity"});
   if (fluids.empty()) scene.fail(scene.has("fluid") ? "fluid" : "domain", "the scene needs at least one fluid body under 'fluid'");
   for (auto& f : fluids) {
     FluidBodySpec b;
@@ -281,6 +300,12 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     if (const auto rho = f.real("density")) {
       b.density = *rho;
       if (!(b.density > 0.0)) f.fail("density", "the body's rest density must be > 0 kg/m^3");
+    }
+    b.where_viscosity = f.where("kinematic_viscosity");
+    if (const auto nu = f.real("kinematic_viscosity")) {
+      b.viscosity = *nu;
+      if (!(b.viscosity >= 0.0) || !std::isfinite(b.viscosity))
+        f.fail("kinematic_viscosity", "the body's kinematic viscosity must be a number >= 0 m^2/s");
     }
     s.fluid.push_back(std::move(b));
   }

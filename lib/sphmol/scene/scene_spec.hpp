@@ -50,7 +50,8 @@ struct FluidBodySpec {
   bool hydrostatic = false;  // pressure from the depth below the body's free surface under the body force
   double pressure = 0.0;     // [Pa] above the rest state when not hydrostatic
   double density = 0.0;      // rest density rho0 of the body [kg/m^3]; 0 = fluid.density
-  std::string where, where_lattice, where_pressure, where_density;
+  double viscosity = -1.0;   // kinematic viscosity nu of the body [m^2/s]; < 0 = fluid.kinematic_viscosity
+  std::string where, where_lattice, where_pressure, where_density, where_viscosity;
 };
 
 // A wall body's prescribed rigid motion (`motion:`), as read; build_scene<D> turns it into a

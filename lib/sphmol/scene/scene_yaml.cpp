@@ -80,6 +80,7 @@ std::string scene_to_yaml(const SceneSpec& spec) {
       y << (a ? ", " : "") << (b.velocity.empty() ? std::string("0") : scalar(b.velocity[static_cast<std::size_t>(a)]->text()));
     y << "]\n      pressure: " << (b.hydrostatic ? std::string(kHydrostaticPressure) : num(b.pressure)) << "\n";
     if (b.density > 0.0) y << "      density: " << num(b.density) << "\n";
+    if (b.viscosity >= 0.0) y << "      kinematic_viscosity: " << num(b.viscosity) << "\n";
   }
   if (spec.walls.empty()) {
     y << "  walls: []\n";

@@ -25,6 +25,7 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
     body_treatments_.push_back(t == WallTreatment::rest           ? "rest"
                                : t == WallTreatment::extrapolated ? "extrapolated"
                                : t == WallTreatment::dynamic      ? "dynamic"
+                               : t == WallTreatment::ghost        ? "ghost"
                                                                   : "repulsive");
   // KE(0) and M from the built state (also on a restart, which rebuilds the scene): the first
   // measurement is at the first output time, not at t = 0.
@@ -35,7 +36,8 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
     ke0_ += 0.5 * s.particles.mass[i] * v2;
     mass0_ += s.particles.mass[i];
   }
-  return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr);
+  return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr, {},
+                            s.ghost_planes);
 }
 
 template <int D>

@@ -1,10 +1,12 @@
 // The `scene` case module: a user scene from shapes (the `scene:` section, scene/scene_reader.hpp),
 // checked against the shared settings and built once while loading, so every error has its line.
+#include <algorithm>
 #include <memory>
 
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/cases/scene/scene_case.hpp"
 #include "sphmol/cases/scene/scene_settings.hpp"
+#include "sphmol/scene/ghost_planes.hpp"
 #include "sphmol/scene/scene_builder.hpp"
 #include "sphmol/scene/scene_reader.hpp"
 
@@ -34,9 +36,7 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
   const auto& d = c.discretization;
   if (d.boundary == "virtual_repulsive")
     r.discretization.fail("boundary", "a scene's walls are wall particles or ghost mirrors (wall_particles or ghost)");
-  if (d.boundary == "ghost" && !spec.walls.empty())
-    r.discretization.fail("boundary", "ghost mirrors only the domain's planar faces; the scene's wall bodies (" +
-                                          spec.walls.front().where + ") need wall_particles");
+  check_ghost_bodies(spec, c, r.discretization.where("boundary"));
   check_scene_bodies(spec, c);  // also for a scene too large to build while loading
   SceneSize size;
   const double bound = scene_particle_bound(spec, c);
@@ -46,6 +46,7 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
   } else {
     size = c.dimension == 2 ? built_size<2>(r, spec, c) : built_size<3>(r, spec, c);
   }
+  for (const auto& f : spec.fluid) size.kinematic_viscosity = std::max(size.kinematic_viscosity, f.viscosity);
   for (int a = 0; a < c.dimension; ++a)
     if (spec.domain.boundary[a] == AxisBoundary::periodic)
       size.periodic.push_back({spec.domain.where_hi, spec.domain.hi[a] - spec.domain.lo[a]});
