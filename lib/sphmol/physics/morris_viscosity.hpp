@@ -18,15 +18,46 @@
 // M_i uses the geometric volumes of wall particles too (the extrapolation factor is a velocity model,
 // not quadrature). Rows of unequal M_i exchange unequal forces, so momentum is conserved only to the
 // moment's variation (exactly on a lattice).
+//
+// `moment_symmetric` scales each fluid pair by the mean of the two particles' moments instead,
+//   dv_i/dt += sum_j c_ij v_ij * 2 / (M_i + M_j)   (fluid j),   c_ij v_ij / M_i   (wall j),
+// with c_ij the Morris coefficient above and M from physics/morris_moment.hpp. The factor is symmetric
+// in i and j and so is m_i c_ij = m_i m_j (mu_i + mu_j) / (rho_i rho_j) F_ij ..., so fluid pairs exchange
+// equal and opposite forces: linear momentum is conserved to round-off on any particle set. Where M is
+// uniform (a lattice, away from walls and surfaces) 2 / (M_i + M_j) = 1 / M_i and the sum is exact for
+// quadratic fields like `moment`. Where M varies, expanding 2 / (M_i + M_j) = (1 / M_i)(1 - (M_j - M_i) /
+// (2 M_i) + ...) with M_i - M_j ~ x_ij . grad M, v_ij ~ (x_ij . grad) v and sum_j V_j F_ij x_ij x_ij ~ -I,
+// the pair form is the row form minus nu (grad M . grad) v / M^2: first order in the moment's gradient,
+// small where the support is full (disorder only), of order one at a wall or free surface, where the
+// wall pairs keep the row's own 1 / M_i (wall particles have no moment and receive no force). The
+// recorded IMEX operator keeps the symmetry of the uncorrected one (equal masses), so conjugate
+// gradients stay applicable.
+#include <memory>
+#include <stdexcept>
+
+#include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
-template <int D, bool Normalised = false>
-class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalised>> {
+// discretization.laplacian_correction: none, moment (each row by its own M_i), moment_symmetric (each
+// pair by 2 / (M_i + M_j)).
+enum class LaplacianCorrection { none, moment, moment_symmetric };
+
+template <int D, LaplacianCorrection C = LaplacianCorrection::none>
+class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, C>> {
+  static constexpr bool Normalised = C == LaplacianCorrection::moment;
+  static constexpr bool Symmetric = C == LaplacianCorrection::moment_symmetric;
+
  public:
-  explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
-  std::string_view name() const override { return Normalised ? "morris_viscosity_normalised" : "morris_viscosity"; }
+  // `moment`: the field MorrisMoment writes earlier in the same evaluation (moment_symmetric only).
+  explicit MorrisViscosity(double dynamic_viscosity, std::shared_ptr<const MorrisMomentField> moment = nullptr)
+      : mu_(dynamic_viscosity), moment_(std::move(moment)) {
+    if (Symmetric && !moment_) throw std::invalid_argument("MorrisViscosity: moment_symmetric needs the moment field");
+  }
+  std::string_view name() const override {
+    return Normalised ? "morris_viscosity_normalised" : Symmetric ? "morris_viscosity_moment_symmetric" : "morris_viscosity";
+  }
   // Linear in the fluid velocities at fixed positions: the implicit part of an IMEX split.
   bool implicit() const override { return true; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
@@ -37,6 +68,11 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     for (int d = 0; d < D; ++d) vj[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
     double a[D] = {};
     double moment = 0.0;  // sum_j V_j F_ij r^4 / (r^2 + eta^2), negative
+    // Fluid pairs [0, nf), then wall pairs [nf, n) (rows are sorted, pair_row.hpp): moment_symmetric's
+    // factor is 2 / (M_i + M_j) on the first, 1 / M_i on the second (a select on k, not on the scene).
+    const std::uint32_t nf = Symmetric ? r.first_wall(w.n_fluid) : r.n;
+    const double* M = Symmetric ? moment_->data() : nullptr;
+    const double Mi = Symmetric ? M[i] : 1.0;
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
       double r2 = 0.0;
@@ -45,7 +81,8 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
         r2 += dx * dx;
       }
       const double g = r.F[k] * r2 / (r2 + eta2);
-      const double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g;
+      double s = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g;
+      if constexpr (Symmetric) s *= k < nf ? 2.0 / (Mi + M[j]) : 1.0 / Mi;
       for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - vj[d][j]);
       if constexpr (Normalised) moment += m[j] / w.rho[j] * g * r2;
     }
@@ -71,12 +108,16 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     const std::uint32_t first = op.first(i);
     std::uint32_t count = 0;
     double diag = 0.0, b[D] = {}, moment = 0.0;
+    const std::uint32_t nf = Symmetric ? r.first_wall(w.n_fluid) : r.n;
+    const double* M = Symmetric ? moment_->data() : nullptr;
+    const double Mi = Symmetric ? M[i] : 1.0;
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) r2 += r.dx[d][k] * r.dx[d][k];
       const double g = r.F[k] * r2 / (r2 + eta2);
-      const double c = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g * r.vfac[k];
+      double c = m[j] * 2.0 * mu_ / (w.rho[i] * w.rho[j]) * g * r.vfac[k];
+      if constexpr (Symmetric) c *= k < nf ? 2.0 / (Mi + M[j]) : 1.0 / Mi;
       diag += c;
       if (j < w.n_fluid) {
         col[first + count] = w.order ? w.order[j] : j;
@@ -96,8 +137,8 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     op.finish_row(i, count, scale * diag, b);
   }
 
-
   double mu_;
+  std::shared_ptr<const MorrisMomentField> moment_;  // moment_symmetric only
 };
 
 }  // namespace sphmol

@@ -27,6 +27,7 @@
 #include "sphmol/physics/pressure_gradient_116.hpp"
 #include "sphmol/physics/smoothing_length_rate.hpp"
 #include "sphmol/physics/eos_linear.hpp"
+#include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
 #include "sphmol/physics/pressure_gradient.hpp"
 #include "sphmol/physics/strain_rate.hpp"
@@ -165,9 +166,19 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.momentum", pressure());
     add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
-    add("discretization.momentum", pressure());
-    if (disc.laplacian_correction == "moment") add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true>>(mu));
-    else add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
+    using LC = LaplacianCorrection;
+    if (disc.laplacian_correction == "moment_symmetric") {
+      // The moments in a pass of their own: each viscous row reads its neighbours' M_j.
+      auto moment = std::make_shared<MorrisMomentField>();
+      add("discretization.laplacian_correction", std::make_unique<MorrisMoment<D>>(moment));
+      add("discretization.momentum", pressure());
+      add("discretization.viscosity", std::make_unique<MorrisViscosity<D, LC::moment_symmetric>>(mu, moment));
+    } else {
+      add("discretization.momentum", pressure());
+      if (disc.laplacian_correction == "moment") add("discretization.viscosity", std::make_unique<MorrisViscosity<D, LC::moment>>(mu));
+      else if (disc.laplacian_correction == "none") add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
+      else throw std::invalid_argument("discretization.laplacian_correction: unsupported '" + disc.laplacian_correction + "'");
+    }
   } else if (disc.viscosity == "none") {
     if (!wc_row) add("discretization.momentum", pressure());
   } else {
