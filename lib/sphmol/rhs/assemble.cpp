@@ -248,9 +248,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
                                 " (they need the stored pair list); use 'auto' or 'stored'");
   // auto: fused when one pass holds every pair term (one kernel evaluation per pair either way, and no
   // stored list: 1.2-1.5x faster on the dam break, equal on the shock tube). A scene that needs several
-  // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green, three
-  // passes: 1.4-1.7x; Poiseuille, two: 1.5x) at about three times the memory (README, Performance);
-  // `fused` is then the choice for memory.
+  // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green
+  // without its Laplacian correction, three passes: 1.4-1.7x; Poiseuille, two: 1.5x) at about three
+  // times the memory (README, Performance); `fused` is then the choice for memory.
   const bool fuse_auto = unfusable.empty() && sys->fused_pass_count() <= 1;
   if (disc.pair_passes == "fused" || (disc.pair_passes == "auto" && fuse_auto)) sys->fuse_pair_passes();
   return sys;
