@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Taylor-Green vortex over Re = 10, 100, 1000 with the transport velocity and with particle shifting.
+"""Taylor-Green vortex over Re = 10, 100, 1000 with the transport velocity and with particle shifting,
+each with and without the Laplacian correction of the shipped file.
 
 Runs verification/taylor_green.yaml (50 x 50) through sph-mol with --set overrides only, collects the
 decay-rate error (vortex-mode fit) and L1 of every run into OUT/re_sweep.csv and draws
@@ -18,10 +19,14 @@ import shutil
 import subprocess
 import sys
 
+SHIFTING = ["discretization.transport_velocity.enabled=false", "discretization.particle_shifting={coefficient: 4}"]
+# The shipped file corrects the Morris Laplacian (laplacian_correction: moment_symmetric); the
+# *_uncorrected schemes turn the correction off.
 SCHEMES = {
     "transport_velocity": [],
-    "particle_shifting": ["discretization.transport_velocity.enabled=false",
-                          "discretization.particle_shifting={coefficient: 4}"],
+    "transport_velocity_uncorrected": ["discretization.laplacian_correction=none"],
+    "particle_shifting": SHIFTING,
+    "particle_shifting_uncorrected": SHIFTING + ["discretization.laplacian_correction=none"],
 }
 RES = {10: ["fluid.kinematic_viscosity=0.1", "time.t_end=5"], 100: [], 1000: ["fluid.kinematic_viscosity=0.001"]}
 
@@ -71,11 +76,15 @@ set title 'decay-rate error (vortex-mode fit)'
 set xlabel 'Re'
 set ylabel 'relative error'
 plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $3 : 1/0) with linespoints pt 7 title 'transport velocity', \\
-     '' using 1:(strcol(2) eq 'particle_shifting' ? $3 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4'
+     '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $3 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
+     '' using 1:(strcol(2) eq 'particle_shifting' ? $3 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
+     '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $3 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction'
 set title 'L1 velocity error / (U e^{bt})'
 set ylabel 'L1'
 plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $4 : 1/0) with linespoints pt 7 title 'transport velocity', \\
-     '' using 1:(strcol(2) eq 'particle_shifting' ? $4 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4'
+     '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $4 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
+     '' using 1:(strcol(2) eq 'particle_shifting' ? $4 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
+     '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $4 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction'
 unset multiplot
 """
     with open(os.path.join(out, "re_sweep.gp"), "w") as f:

@@ -240,6 +240,10 @@ probes:
   const auto corrected = run_scene("slip-corrected", variant("no_slip", "  laplacian_correction: moment\n"));
   CHECK(corrected.code == 2);
   CHECK_THAT(corrected.err, Catch::Matchers::Contains("probes[0].body: a force probe needs discretization.laplacian_correction: none"));
+  // The pair-symmetric correction scales the wall pairs by the row's moment: refused too.
+  const auto symmetric = run_scene("slip-corrected-symmetric", variant("no_slip", "  laplacian_correction: moment_symmetric\n"));
+  CHECK(symmetric.code == 2);
+  CHECK_THAT(symmetric.err, Catch::Matchers::Contains("discretization.laplacian_correction: none (not moment_symmetric)"));
   // Nor does it know the Adami wall velocities.
   const auto adami = run_scene("slip-adami", variant("no_slip", "  wall_model: adami\n"));
   CHECK(adami.code == 2);

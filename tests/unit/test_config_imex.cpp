@@ -38,6 +38,12 @@ TEST_CASE("config imex: integrator names, default pair and Krylov defaults", "[c
   // GMRES by default where the Laplacian correction scales rows apart (not symmetric).
   const Config g = load_config_string(time_lines("  integrator: leapfrog_imex"), {"discretization.laplacian_correction=moment"}, "case.yaml");
   CHECK(g.time.krylov.solver == "spgmr");
+  // Conjugate gradients stay the default, and allowed, with the pair-symmetric correction (symmetric L).
+  const Config s = load_config_string(time_lines("  integrator: leapfrog_imex"), {"discretization.laplacian_correction=moment_symmetric"}, "case.yaml");
+  CHECK(s.time.krylov.solver == "pcg");
+  const Config sp = load_config_string(time_lines("  integrator: arkode_imex\n  krylov:\n    solver: pcg"),
+                                       {"discretization.laplacian_correction=moment_symmetric"}, "case.yaml");
+  CHECK(sp.time.krylov.solver == "pcg");
   const Config e = load_config_string(to_yaml(b), {}, "resolved.yaml");
   CHECK(e.time.table == "ARKODE_ARK548L2SA_DIRK_8_4_5");
 }

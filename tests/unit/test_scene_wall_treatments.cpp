@@ -477,3 +477,40 @@ TEST_CASE("scene treatments: the written config reads back to the same bodies", 
   CHECK(b.walls[1].repulsion.r0 == 0.9);
   CHECK(b.walls[1].repulsion.p1 == 12.0);
 }
+
+TEST_CASE("scene fluid bodies of their own viscosity: mu = rho0 nu per particle, checked at its line",
+          "[scene][config]") {
+  const std::string two = "scene:\n  domain: {lo: [0, 0], hi: [1, 1]}\n  fluid:\n    - shape: {type: box, lo: [0, 0], hi: [1, 0.5]}\n"
+                          "    - shape: {type: box, lo: [0, 0.5], hi: [1, 0.8]}\n";
+  Config c = config(2, 0.1);
+  c.discretization.density = "continuity";
+  c.discretization.viscosity = "morris";
+  c.fluid.kinematic_viscosity = 1e-6;
+  const auto mu_of = [&](const std::string& yaml, const Config& cc) { return build_scene<2>(read(yaml, 2), cc).particles; };
+  // One viscosity: no per-particle field (the uniform term, unchanged).
+  CHECK(mu_of(two, c).viscosity.empty());
+  const auto P = mu_of(two + "      kinematic_viscosity: 4.0e-6\n", c);
+  REQUIRE(P.viscosity.size() == P.size());
+  for (std::size_t i = 0; i < P.n_fluid; ++i) CHECK(P.viscosity[i] == Approx(P.x[1][i] < 0.5 ? 1e-3 : 4e-3));
+  for (std::size_t i = P.n_fluid; i < P.size(); ++i) CHECK(P.viscosity[i] == 0.0);
+  // A body of its own rest density keeps the common kinematic viscosity: mu = rho0_k nu.
+  Config lin = c;
+  lin.fluid.eos.type = "linear_relative";
+  const auto H = mu_of(two + "      density: 2000\n", lin);
+  REQUIRE(H.viscosity.size() == H.size());
+  for (std::size_t i = 0; i < H.n_fluid; ++i) CHECK(H.viscosity[i] == Approx(H.x[1][i] < 0.5 ? 1e-3 : 2e-3));
+  // The same body under strain-rate or no viscosity.
+  Config sr = c;
+  sr.discretization.viscosity = "strain_rate";
+  CHECK(error_of(two + "      kinematic_viscosity: 4.0e-6\n", sr) ==
+        "scene.yaml:6: scene.fluid[1].kinematic_viscosity: fluids of several viscosities need discretization.viscosity: morris "
+        "(each particle's own mu in Morris et al. 1997, eq 8); 'strain_rate' takes one mu");
+  Config none = c;
+  none.discretization.viscosity = "none";
+  none.fluid.kinematic_viscosity = 0.0;
+  CHECK(error_of(two + "      kinematic_viscosity: 4.0e-6\n", none) ==
+        "scene.yaml:6: scene.fluid[1].kinematic_viscosity: a viscous body needs discretization.viscosity: morris (it is 'none')");
+  CHECK(error_of(two + "      kinematic_viscosity: 0\n", none) == "<no error>");
+  CHECK_THAT(error_of(two + "      kinematic_viscosity: -1\n", c),
+             Contains("scene.yaml:6: scene.fluid[1].kinematic_viscosity: the body's kinematic viscosity must be a number >= 0 m^2/s"));
+}

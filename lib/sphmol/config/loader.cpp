@@ -304,7 +304,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       rep.check("r0", r.r0 > 0, r.r0, "> 0 (particle spacings)");
     }
     if (const auto v = disc.string("laplacian_correction")) {
-      d.laplacian_correction = disc.choice("laplacian_correction", *v, {"none", "moment"});
+      d.laplacian_correction = disc.choice("laplacian_correction", *v, {"none", "moment", "moment_symmetric"});
       if (d.laplacian_correction != "none" && d.viscosity != "morris")
         disc.fail("laplacian_correction", "corrects the Morris viscosity only (discretization.viscosity is '" + d.viscosity + "')");
     }
@@ -487,9 +487,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (!imex && time.has("krylov"))
       time.fail("krylov", "applies to time.integrator: leapfrog_imex or arkode_imex (got '" + t.integrator + "')");
     // Default: conjugate gradients where the operator is symmetric, GMRES where rows are scaled apart.
-    if (c.discretization.laplacian_correction != "none") t.krylov.solver = "spgmr";
+    // moment_symmetric scales each pair by a factor symmetric in i and j: the operator stays symmetric.
+    if (c.discretization.laplacian_correction == "moment") t.krylov.solver = "spgmr";
     if (const auto v = krylov.string("solver")) t.krylov.solver = krylov.choice("solver", *v, {"pcg", "spgmr"});
-    if (krylov.has("solver") && t.krylov.solver == "pcg" && c.discretization.laplacian_correction != "none")
+    if (krylov.has("solver") && t.krylov.solver == "pcg" && c.discretization.laplacian_correction == "moment")
       krylov.fail("solver", "'pcg' needs a symmetric operator; discretization.laplacian_correction: " +
                                 c.discretization.laplacian_correction + " scales each row by its own moment (use spgmr)");
     if (const auto v = krylov.real("tolerance")) {

@@ -9,8 +9,8 @@
 //
 // On particles the second moment is a sum, and with eta it is not -I: on a cubic lattice with the cubic
 // spline at h = 1.3 dx it is 0.985 I in 3D (0.9998 I in 2D), a viscosity 1.5 % low at every resolution
-// (the square duct ran 1.3 % fast at 16, 24 and 32 particles across). `Normalised` divides each row by
-// its own discrete moment,
+// (the square duct ran 1.3 % fast at 16, 24 and 32 particles across); with Wendland C2 at h = 2 dx it is
+// 0.985 I in 2D. `moment` (LaplacianCorrection::moment) divides each row by its own discrete moment,
 //   M_i = -(1/D) sum_j (m_j / rho_j) F_ij r_ij^2 * r_ij^2 / (r_ij^2 + eta^2),
 // which makes the sum exact for quadratic fields wherever the support is full and isotropic: the
 // scalar normalisation of the corrective smoothed particle method's second derivative (Chen, Beraun &
@@ -19,19 +19,50 @@
 // not quadrature). Rows of unequal M_i exchange unequal forces, so momentum is conserved only to the
 // moment's variation (exactly on a lattice).
 //
+// `moment_symmetric` scales each fluid pair by the mean of the two particles' moments instead,
+//   dv_i/dt += sum_j c_ij v_ij * 2 / (M_i + M_j)   (fluid j),   c_ij v_ij / M_i   (wall j),
+// with c_ij the Morris coefficient above and M from physics/morris_moment.hpp. The factor is symmetric
+// in i and j and so is m_i c_ij = m_i m_j (mu_i + mu_j) / (rho_i rho_j) F_ij ..., so fluid pairs exchange
+// equal and opposite forces: linear momentum is conserved to round-off on any particle set. Where M is
+// uniform (a lattice, away from walls and surfaces) 2 / (M_i + M_j) = 1 / M_i and the sum is exact for
+// quadratic fields like `moment`. Where M varies, expanding 2 / (M_i + M_j) = (1 / M_i)(1 - (M_j - M_i) /
+// (2 M_i) + ...) with M_i - M_j ~ x_ij . grad M, v_ij ~ (x_ij . grad) v and sum_j V_j F_ij x_ij x_ij ~ -I,
+// the pair form is the row form minus nu (grad M . grad) v / M^2: small where the support is full (M
+// varies with the disorder only), large where M changes within a kernel radius (a free surface, walls
+// that do not fill the support). Wall pairs keep the row's own 1 / M_i (wall particles have no moment
+// and receive no force). The recorded IMEX operator keeps the symmetry m_i L_ij = m_j L_ji of the
+// uncorrected one (L itself for equal masses), so conjugate gradients stay applicable.
+//
 // `Variable`: fluids of several viscosities (a scene's fluid bodies with their own
-// kinematic_viscosity, Particles::viscosity), eq. (8) with each pair's mu from its two particles'
-// (pair_mu below): symmetric in i and j, so pairs still exchange equal and opposite forces. A wall
-// particle takes the fluid particle's mu (the stress at a wall is that of the fluid beside it).
+// kinematic_viscosity or rest density, Particles::viscosity), eq. (8) with each pair's mu from its two
+// particles' (pair_mu below): symmetric in i and j, so pairs still exchange equal and opposite forces.
+// A wall particle takes the fluid particle's mu (the stress at a wall is that of the fluid beside it).
+#include <memory>
+#include <stdexcept>
+
+#include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
-template <int D, bool Normalised = false, bool Variable = false>
-class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalised, Variable>> {
+// discretization.laplacian_correction: none, moment (each row by its own M_i), moment_symmetric (each
+// pair by 2 / (M_i + M_j)).
+enum class LaplacianCorrection { none, moment, moment_symmetric };
+
+template <int D, LaplacianCorrection C = LaplacianCorrection::none, bool Variable = false>
+class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, C, Variable>> {
+  static constexpr bool Normalised = C == LaplacianCorrection::moment;
+  static constexpr bool Symmetric = C == LaplacianCorrection::moment_symmetric;
+
  public:
-  explicit MorrisViscosity(double dynamic_viscosity) : mu_(dynamic_viscosity) {}
-  std::string_view name() const override { return Normalised ? "morris_viscosity_normalised" : "morris_viscosity"; }
+  // `moment`: the field MorrisMoment writes earlier in the same evaluation (moment_symmetric only).
+  explicit MorrisViscosity(double dynamic_viscosity, std::shared_ptr<const MorrisMomentField> moment = nullptr)
+      : mu_(dynamic_viscosity), moment_(std::move(moment)) {
+    if (Symmetric && !moment_) throw std::invalid_argument("MorrisViscosity: moment_symmetric needs the moment field");
+  }
+  std::string_view name() const override {
+    return Normalised ? "morris_viscosity_normalised" : Symmetric ? "morris_viscosity_moment_symmetric" : "morris_viscosity";
+  }
   // Linear in the fluid velocities at fixed positions: the implicit part of an IMEX split.
   bool implicit() const override { return true; }
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
@@ -42,6 +73,11 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     for (int d = 0; d < D; ++d) vj[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
     double a[D] = {};
     double moment = 0.0;  // sum_j V_j F_ij r^4 / (r^2 + eta^2), negative
+    // Fluid pairs [0, nf), then wall pairs [nf, n) (rows are sorted, pair_row.hpp): moment_symmetric's
+    // factor is 2 / (M_i + M_j) on the first, 1 / M_i on the second (a select on k, not on the scene).
+    const std::uint32_t nf = Symmetric ? r.first_wall(w.n_fluid) : r.n;
+    const double* M = Symmetric ? moment_->data() : nullptr;
+    const double Mi = Symmetric ? M[i] : 1.0;
     [[maybe_unused]] const double* mu = Variable ? w.particles->viscosity.data() : nullptr;
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
@@ -51,7 +87,8 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
         r2 += dx * dx;
       }
       const double g = r.F[k] * r2 / (r2 + eta2);
-      const double s = m[j] * pair_mu(mu, w.n_fluid, i, j) / (w.rho[i] * w.rho[j]) * g;
+      double s = m[j] * pair_mu(mu, w.n_fluid, i, j) / (w.rho[i] * w.rho[j]) * g;
+      if constexpr (Symmetric) s *= k < nf ? 2.0 / (Mi + M[j]) : 1.0 / Mi;
       for (int d = 0; d < D; ++d) a[d] += s * r.vfac[k] * (w.v[d][i] - vj[d][j]);
       if constexpr (Normalised) moment += m[j] / w.rho[j] * g * r2;
     }
@@ -77,13 +114,17 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     const std::uint32_t first = op.first(i);
     std::uint32_t count = 0;
     double diag = 0.0, b[D] = {}, moment = 0.0;
+    const std::uint32_t nf = Symmetric ? r.first_wall(w.n_fluid) : r.n;
+    const double* M = Symmetric ? moment_->data() : nullptr;
+    const double Mi = Symmetric ? M[i] : 1.0;
     [[maybe_unused]] const double* mu = Variable ? w.particles->viscosity.data() : nullptr;
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
       double r2 = 0.0;
       for (int d = 0; d < D; ++d) r2 += r.dx[d][k] * r.dx[d][k];
       const double g = r.F[k] * r2 / (r2 + eta2);
-      const double c = m[j] * pair_mu(mu, w.n_fluid, i, j) / (w.rho[i] * w.rho[j]) * g * r.vfac[k];
+      double c = m[j] * pair_mu(mu, w.n_fluid, i, j) / (w.rho[i] * w.rho[j]) * g * r.vfac[k];
+      if constexpr (Symmetric) c *= k < nf ? 2.0 / (Mi + M[j]) : 1.0 / Mi;
       diag += c;
       if (j < w.n_fluid) {
         col[first + count] = w.order ? w.order[j] : j;
@@ -103,7 +144,6 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
     op.finish_row(i, count, scale * diag, b);
   }
 
-
   // mu_i + mu_j of Morris et al. (1997) eq. (8): 2 mu for one fluid. Across fluids of different mu,
   // twice their harmonic mean 4 mu_i mu_j / (mu_i + mu_j) (Cleary 1998), as for the heat flux across
   // materials of different conductivity (Cleary & Monaghan 1999): the shear stress is then continuous
@@ -121,6 +161,7 @@ class MorrisViscosity final : public PairTermFor<D, MorrisViscosity<D, Normalise
   }
 
   double mu_;
+  std::shared_ptr<const MorrisMomentField> moment_;  // moment_symmetric only
 };
 
 }  // namespace sphmol

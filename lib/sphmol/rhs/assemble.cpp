@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string_view>
+#include <type_traits>
 
 #include "sphmol/boundary/adami_wall_velocity.hpp"
 #include "sphmol/boundary/dynamic_wall_density.hpp"
@@ -27,6 +28,7 @@
 #include "sphmol/physics/pressure_gradient_116.hpp"
 #include "sphmol/physics/smoothing_length_rate.hpp"
 #include "sphmol/physics/eos_linear.hpp"
+#include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
 #include "sphmol/physics/pressure_gradient.hpp"
 #include "sphmol/physics/strain_rate.hpp"
@@ -171,12 +173,25 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     add("discretization.momentum", pressure());
     add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
   } else if (disc.viscosity == "morris") {
-    add("discretization.momentum", pressure());
-    const bool moment = disc.laplacian_correction == "moment";
-    if (variable_mu && moment) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true, true>>(mu));
-    else if (variable_mu) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, false, true>>(mu));
-    else if (moment) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, true>>(mu));
-    else add("discretization.viscosity", std::make_unique<MorrisViscosity<D>>(mu));
+    using LC = LaplacianCorrection;
+    // One term of the correction C and of Variable (fluids of several mu) each.
+    const auto morris = [&](auto c, std::shared_ptr<const MorrisMomentField> moment) {
+      constexpr LC C = decltype(c)::value;
+      if (variable_mu) add("discretization.viscosity", std::make_unique<MorrisViscosity<D, C, true>>(mu, moment));
+      else add("discretization.viscosity", std::make_unique<MorrisViscosity<D, C>>(mu, moment));
+    };
+    if (disc.laplacian_correction == "moment_symmetric") {
+      // The moments in a pass of their own: each viscous row reads its neighbours' M_j.
+      auto moment = std::make_shared<MorrisMomentField>();
+      add("discretization.laplacian_correction", std::make_unique<MorrisMoment<D>>(moment));
+      add("discretization.momentum", pressure());
+      morris(std::integral_constant<LC, LC::moment_symmetric>{}, moment);
+    } else {
+      add("discretization.momentum", pressure());
+      if (disc.laplacian_correction == "moment") morris(std::integral_constant<LC, LC::moment>{}, nullptr);
+      else if (disc.laplacian_correction == "none") morris(std::integral_constant<LC, LC::none>{}, nullptr);
+      else throw std::invalid_argument("discretization.laplacian_correction: unsupported '" + disc.laplacian_correction + "'");
+    }
   } else if (disc.viscosity == "none") {
     if (!wc_row) add("discretization.momentum", pressure());
   } else {
@@ -253,9 +268,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
                                 " (they need the stored pair list); use 'auto' or 'stored'");
   // auto: fused when one pass holds every pair term (one kernel evaluation per pair either way, and no
   // stored list: 1.2-1.5x faster on the dam break, equal on the shock tube). A scene that needs several
-  // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green, three
-  // passes: 1.4-1.7x; Poiseuille, two: 1.5x) at about three times the memory (README, Performance);
-  // `fused` is then the choice for memory.
+  // passes evaluates the kernel once per pass, and there the stored list is faster (Taylor-Green
+  // without its Laplacian correction, three passes: 1.4-1.7x; Poiseuille, two: 1.5x) at about three
+  // times the memory (README, Performance); `fused` is then the choice for memory.
   const bool fuse_auto = unfusable.empty() && sys->fused_pass_count() <= 1;
   if (disc.pair_passes == "fused" || (disc.pair_passes == "auto" && fuse_auto)) sys->fuse_pair_passes();
   return sys;

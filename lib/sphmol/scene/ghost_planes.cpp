@@ -6,19 +6,15 @@
 #include <sstream>
 #include <string>
 
+#include "sphmol/scene/scene_messages.hpp"
+
 namespace sphmol {
 
 namespace {
 
-const char* const kAxisName[] = {"x", "y", "z"};
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-[[noreturn]] void fail(const std::string& where, const std::string& what) { throw ConfigError(where + ": " + what); }
+using scene_messages::fail;
+using scene_messages::kAxisName;
+using scene_messages::num;
 
 // A half-space a.x <= b.
 template <int D>

@@ -11,6 +11,7 @@
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/scene/ghost_planes.hpp"
+#include "sphmol/scene/scene_messages.hpp"
 #include "sphmol/scene/scene_shapes.hpp"
 #include "sphmol/scene/scene_velocity_scale.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
@@ -20,15 +21,9 @@ namespace sphmol {
 
 namespace {
 
-const char* const kAxisName[] = {"x", "y", "z"};
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-[[noreturn]] void fail(const std::string& where, const std::string& what) { throw ConfigError(where + ": " + what); }
+using scene_messages::fail;
+using scene_messages::kAxisName;
+using scene_messages::num;
 
 // The hexagonal counterpart of lattice_particle_mass: rho0 over the kernel sum of the 2D hexagonal
 // lattice (rows dx sqrt(3)/2 apart, every other row shifted by dx/2), so that summation density gives
