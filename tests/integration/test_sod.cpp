@@ -62,19 +62,23 @@ TEST_CASE("Sod 1D runs to t = 0.2 with L1 rho <= 0.005 and the waves in place", 
   CHECK(std::abs(w["rarefaction_tail"]["offset_local_spacings"].get<double>()) < 2.5);
 }
 
-// Measured (leapfrog, 2800 + 350 particles): L1 rho 0.0039 and p 0.0044, 1.7x and 1.5x the 1D tube's
-// 0.0023 and 0.0029 (with the C1 cut-off of the kernel the 1D tube improved by a fifth, the 2D one
-// did not move). At h0 = 1.0 (m / rho)^(1/2), the 1D value, the 2D rarefaction is under-resolved along
-// x (measured L1 rho 0.0058 with the plain cut-off: 2.6x the 1D tube's now, 2x then).
-TEST_CASE("Sod 2D: L1 errors within 2x of the 1D tube's", "[shock_tube][sod]") {
-  const auto s1 = run("sod_1d.yaml", "2d-ref", {});
+// Against the 1D tube at the 2D tube's spacing (2.5e-3 on the dense side; the shipped 1D file has
+// half of it). Measured (leapfrog, 2800 + 350 particles): 2D L1 rho/u/p/e 0.0039/0.0058/0.0044/0.0100,
+// 1D at 2.5e-3 0.0040/0.0086/0.0053/0.0127: 0.98x, 0.67x, 0.84x, 0.79x. (Against the 1D tube at its
+// own 1.25e-3, 0.0023/0.0050/0.0029/0.0069, the 2D one is 1.7x in rho: that is the spacing, first
+// order with shocks.) At h0 = 1.0 (m / rho)^(1/2), the 1D value, the 2D rarefaction is under-resolved
+// along x (measured L1 rho 0.0058).
+TEST_CASE("Sod 2D: L1 errors within 1.5x of the 1D tube's at the same spacing", "[shock_tube][sod]") {
+  const auto s1 = run("sod_1d.yaml", "2d-ref", {"discretization.spacing=2.5e-3"});
   const auto s2 = run("sod.yaml", "2d", {});
   REQUIRE_FALSE(s1.is_null());
   REQUIRE_FALSE(s2.is_null());
   INFO("1D " << s1["final_errors"].dump() << "\n2D " << s2["final_errors"].dump());
   CHECK(s2["status"] == "completed");
-  CHECK(l1(s2, "L1_rho") < 2.0 * l1(s1, "L1_rho"));
-  CHECK(l1(s2, "L1_p") < 2.0 * l1(s1, "L1_p"));
+  for (const char* k : {"L1_rho", "L1_u", "L1_p", "L1_e"}) {
+    INFO(k);
+    CHECK(l1(s2, k) < 1.5 * l1(s1, k));
+  }
   CHECK(l1(s2, "L1_rho") < 0.0075);
   const auto& w = s2["final_errors"]["waves"];
   CHECK(std::abs(w["shock"]["offset_local_spacings"].get<double>()) < 1.5);
