@@ -36,8 +36,9 @@ TEST_CASE("IMEX integrators reach the explicit e_rms on Poiseuille and Couette",
   INFO(file);
   const auto lf = run(file, {"time.integrator=leapfrog_kdk"});
   const double e_ref = lf["final_errors"]["e_rms"];
-  // leapfrog_imex at its CFL step (acoustic and force limits only).
-  const auto li = run(file, {"time.integrator=leapfrog_imex"});
+  // leapfrog_imex at the acoustic CFL step 0.25 h / c (no viscous limit), 12x the viscous limit;
+  // couette.yaml ships 0.125 for its final e_max, poiseuille.yaml 0.5.
+  const auto li = run(file, {"time.integrator=leapfrog_imex", "time.cfl.acoustic=0.25"});
   CHECK(li["status"] == "completed");
   CHECK(li["final_errors"]["e_rms"].get<double>() == Approx(e_ref).epsilon(0.1));
   const double li_step = 0.2 / li["steps"].get<double>();  // the mean CFL step
