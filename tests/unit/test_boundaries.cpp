@@ -316,3 +316,34 @@ TEST_CASE("ghost generator: oblique mirror planes, their corners and the box fac
       CHECK(b.w.v[d][k] == Approx(a.w.v[d][k]).margin(1e-15));
     }
 }
+
+TEST_CASE("ghost generator in 3D: an oblique plane and a box face at right angles to it", "[ghost][3d]") {
+  // A floor tilted about y through the origin (normal n) and the box's lower y face at y = 0.
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  BoxWalls<3> box{};
+  box[1][0] = {true, 0.0, true, {0.0, 0.0, 0.0}};
+  GhostGenerator<3> gen(box, 0.1, {GhostPlane<3>{{-s, 0.0, c}, 0.0, true, {0.0, 0.0, 0.0}}});
+  Particles<3> pt;
+  // 0.04 above the floor, 0.03 from the y face, 0.2 along the floor.
+  pt.add(Kind::Fluid, {0.2 * c - 0.04 * s, 0.03, 0.2 * s + 0.04 * c}, {0.1, 0.2, 0.3}, 1.0, 1000.0);
+  Workspace<3> w;
+  w.n = pt.size();
+  w.n_fluid = pt.n_fluid;
+  for (int d = 0; d < 3; ++d) w.x[d] = pt.x[d], w.v[d] = pt.v[d];
+  w.rho = pt.rho;
+  w.p.assign(w.n, 0.0);
+  w.h = 1.0;
+  w.hs.assign(w.n, 1.0);
+  w.e.assign(w.n, 0.0);
+  gen.generate(1, pt, w);
+  REQUIRE(gen.count() == 3);  // the y face, the floor, and the corner through both
+  for (std::size_t g = 0; g < 3; ++g) {
+    const std::size_t k = 1 + g;
+    const double up = -s * w.x[0][k] + c * w.x[2][k], along = c * w.x[0][k] + s * w.x[2][k];
+    CHECK(along == Approx(0.2));
+    const std::uint32_t m = gen.masks()[g];
+    CHECK(up == Approx(m & 0b10u ? -0.04 : 0.04));       // bit 1: the floor (after the box face)
+    CHECK(w.x[1][k] == Approx(m & 0b01u ? -0.03 : 0.03));  // bit 0: the y face
+    for (int d = 0; d < 3; ++d) CHECK(w.v[d][k] == Approx(-pt.v[d][0]));  // no slip at rest: -v
+  }
+}

@@ -657,3 +657,37 @@ TEST_CASE("scene builder: plane bodies under boundary: ghost are mirror planes w
         "open that face or move the plane");
   CHECK(error_of(with_floor("0.2"), wide) == "<no error>");
 }
+
+TEST_CASE("scene builder: ghost planes in 3D, along an axis and oblique, and their checks", "[scene][ghost][3d]") {
+  Config c = config(3, 0.1);
+  c.discretization.boundary = "ghost";
+  const std::string head = "scene:\n  domain: {lo: [0, 0, 0], hi: [1, 1, 1], boundaries: [open, open, open]}\n"
+                           "  fluid:\n    - shape: {type: box, lo: [0, 0, 0], hi: [1, 1, 0.5]}\n  walls:\n";
+  // A floor tilted about the y axis, a side plane at right angles to it (its normal in the x-z plane,
+  // perpendicular to the floor's) and one along y: all pairwise at right angles.
+  const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+  std::ostringstream w;
+  w.precision(15);
+  w << "    - shape: {type: plane, point: [0.5, 0.5, 0.2], normal: [" << -s30 << ", 0, " << c30 << "]}\n"
+    << "    - shape: {type: plane, point: [0.1, 0.5, 0.3], normal: [" << c30 << ", 0, " << s30 << "]}\n"
+    << "    - shape: {type: plane, point: [0.5, 0.1, 0.3], normal: [0, 1, 0]}\n";
+  const auto s = build_scene<3>(read(head + w.str(), 3), c);
+  CHECK(s.particles.n_wall() == 0u);
+  REQUIRE(s.ghost_planes.size() == 3u);
+  CHECK(s.ghost_planes[0].normal[0] == Approx(-s30));
+  CHECK(s.ghost_planes[0].normal[2] == Approx(c30));
+  CHECK(s.ghost_planes[0].offset == Approx(-s30 * 0.5 + c30 * 0.2));
+  for (std::size_t i = 0; i < s.particles.n_fluid; ++i)
+    for (const auto& p : s.ghost_planes) {
+      double d = -p.offset;
+      for (int k = 0; k < 3; ++k) d += p.normal[k] * s.particles.x[k][i];
+      CHECK(d >= 0.05 - 1e-9);  // every fluid particle half a spacing or more on the fluid side
+    }
+  // A plane at 30 degrees to the y plane is refused where the fluid reaches both.
+  CHECK_THAT(error_of(head + "    - shape: {type: plane, point: [0.5, 0.1, 0.3], normal: [0, 1, 0]}\n"
+                             "    - shape: {type: plane, point: [0.5, 0.5, 0.3], normal: [0, " +
+                          std::to_string(-c30) + ", " + std::to_string(s30) + "]}\n",
+                      c),
+             Catch::Contains("scene.walls[1].shape: this ghost mirror and the ghost mirror at scene.yaml:6: scene.walls[0].shape meet at "
+                      "30 degrees"));
+}
