@@ -66,6 +66,21 @@ TEST_CASE("repulsive force of Niedoba 2012, eq 2.76", "[repulsive]") {
 }
 
 namespace {
+// The workspace of particles `pt` at h = 1, before any term ran: positions, velocities, densities.
+template <int D>
+Workspace<D> workspace_of(const Particles<D>& pt) {
+  Workspace<D> w;
+  w.n = pt.size();
+  w.n_fluid = pt.n_fluid;
+  for (int d = 0; d < D; ++d) w.x[d] = pt.x[d], w.v[d] = pt.v[d];
+  w.rho = pt.rho;
+  w.p.assign(w.n, 0.0);
+  w.h = 1.0;
+  w.hs.assign(w.n, 1.0);
+  w.e.assign(w.n, 0.0);
+  return w;
+}
+
 // Unit box with walls on the left (moving up at 0.3), bottom (moving right at 1) and right; top open.
 GhostGenerator<2> make_generator(bool no_slip) {
   BoxWalls<2> walls{};
@@ -83,17 +98,7 @@ struct Scene {
     pt.add(Kind::Fluid, {0.5, 0.5}, {0.0, 0.0}, 1.0, 1000.0);     // interior: none
     pt.add(Kind::Fluid, {0.97, 0.95}, {0.0, 0.1}, 1.0, 1000.0);   // right wall near the open top: 1
     pt.add(Kind::Wall, {0.5, -0.5}, {0.0, 0.0}, 1.0, 1000.0);     // a scene wall particle (base)
-    w.n = pt.size();
-    w.n_fluid = pt.n_fluid;
-    for (int d = 0; d < 2; ++d) {
-      w.x[d] = pt.x[d];
-      w.v[d] = pt.v[d];
-    }
-    w.rho = pt.rho;
-    w.p.assign(w.n, 0.0);
-    w.h = 1.0;  // with support 0.1 (make_generator): images within 0.1 of a wall
-    w.hs.assign(w.n, 1.0);
-    w.e.assign(w.n, 0.0);
+    w = workspace_of(pt);  // h = 1 with support 0.1 (make_generator): images within 0.1 of a wall
   }
 };
 }  // namespace
@@ -238,15 +243,7 @@ TEST_CASE("ghost generator: oblique mirror planes, their corners and the box fac
   const auto at = [&](double along, double up) { return std::array<double, 2>{along * c - up * s, along * s + up * c}; };
   pt.add(Kind::Fluid, at(0.05, 0.03), {0.1, -0.2}, 1.0, 1000.0);
   pt.add(Kind::Fluid, at(0.16, 0.02), {0.4, 0.1}, 1.0, 1000.0);
-  Workspace<2> w;
-  w.n = pt.size();
-  w.n_fluid = pt.n_fluid;
-  for (int d = 0; d < 2; ++d) w.x[d] = pt.x[d], w.v[d] = pt.v[d];
-  w.rho = pt.rho;
-  w.p.assign(w.n, 0.0);
-  w.h = 1.0;
-  w.hs.assign(w.n, 1.0);
-  w.e.assign(w.n, 0.0);
+  Workspace<2> w = workspace_of(pt);
   gen.generate(w.n, pt, w);
   REQUIRE(gen.count() == 4);
   const std::size_t base = 2;
@@ -326,15 +323,7 @@ TEST_CASE("ghost generator in 3D: an oblique plane and a box face at right angle
   Particles<3> pt;
   // 0.04 above the floor, 0.03 from the y face, 0.2 along the floor.
   pt.add(Kind::Fluid, {0.2 * c - 0.04 * s, 0.03, 0.2 * s + 0.04 * c}, {0.1, 0.2, 0.3}, 1.0, 1000.0);
-  Workspace<3> w;
-  w.n = pt.size();
-  w.n_fluid = pt.n_fluid;
-  for (int d = 0; d < 3; ++d) w.x[d] = pt.x[d], w.v[d] = pt.v[d];
-  w.rho = pt.rho;
-  w.p.assign(w.n, 0.0);
-  w.h = 1.0;
-  w.hs.assign(w.n, 1.0);
-  w.e.assign(w.n, 0.0);
+  Workspace<3> w = workspace_of(pt);
   gen.generate(1, pt, w);
   REQUIRE(gen.count() == 3);  // the y face, the floor, and the corner through both
   for (std::size_t g = 0; g < 3; ++g) {

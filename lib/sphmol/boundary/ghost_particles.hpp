@@ -56,7 +56,23 @@ struct GhostPlane {
   double offset = 0.0;
   bool no_slip = true;
   std::array<double, D> velocity{};
+  double speed() const {
+    double v2 = 0.0;
+    for (double c : velocity) v2 += c * c;
+    return std::sqrt(v2);
+  }
 };
+
+// Box face (d, s) (s = 0 the lower one) as a mirror plane: its normal points into the box.
+template <int D>
+GhostPlane<D> face_plane(int d, int s, const PlanarWall<D>& wall) {
+  GhostPlane<D> p;
+  p.normal[d] = s == 0 ? 1.0 : -1.0;
+  p.offset = s == 0 ? wall.position : -wall.position;
+  p.no_slip = wall.no_slip;
+  p.velocity = wall.velocity;
+  return p;
+}
 
 template <int D>
 class GhostGenerator final : public ParticleGenerator<D> {
@@ -65,32 +81,15 @@ class GhostGenerator final : public ParticleGenerator<D> {
   // The box's faces come first, in the order (x lower, x upper, y lower, ...), then `planes`.
   GhostGenerator(BoxWalls<D> walls, double support, const std::vector<GhostPlane<D>>& planes = {}) : support_(support) {
     for (int d = 0; d < D; ++d)
-      for (int s = 0; s < 2; ++s) {
-        const auto& w = walls[d][s];
-        if (!w.present) continue;
-        Mirror m;
-        m.axis = d;
-        m.position = w.position;
-        m.normal[d] = s == 0 ? 1.0 : -1.0;
-        m.offset = s == 0 ? w.position : -w.position;
-        m.no_slip = w.no_slip;
-        m.velocity = w.velocity;
-        mirrors_.push_back(m);
-      }
-    for (const auto& p : planes) {
-      Mirror m;
-      m.normal = p.normal;
-      m.offset = p.offset;
-      m.no_slip = p.no_slip;
-      m.velocity = p.velocity;
-      mirrors_.push_back(m);
-    }
+      for (int s = 0; s < 2; ++s)
+        if (walls[d][s].present) mirrors_.push_back({face_plane(d, s, walls[d][s]), d, walls[d][s].position});
+    for (const auto& p : planes) mirrors_.push_back({p, -1, 0.0});
     if (mirrors_.size() > 32) throw std::invalid_argument("ghost walls: at most 32 mirror planes");
     for (std::size_t a = 0; a < mirrors_.size(); ++a) {
       std::uint32_t bits = 0;
       for (std::size_t b = 0; b < mirrors_.size(); ++b) {
         double c = 0.0;
-        for (int d = 0; d < D; ++d) c += mirrors_[a].normal[d] * mirrors_[b].normal[d];
+        for (int d = 0; d < D; ++d) c += mirrors_[a].plane.normal[d] * mirrors_[b].plane.normal[d];
         if (b != a && std::abs(c) <= kMirrorRightAngle) bits |= 1u << b;
       }
       perpendicular_.push_back(bits);
@@ -165,11 +164,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
   std::size_t count() const override { return source_.size(); }
   double max_wall_speed() const override {
     double s = 0.0;
-    for (const auto& m : mirrors_) {
-      double v2 = 0.0;
-      for (double c : m.velocity) v2 += c * c;
-      s = std::max(s, std::sqrt(v2));
-    }
+    for (const auto& m : mirrors_) s = std::max(s, m.plane.speed());
     return s;
   }
   std::size_t base() const { return n_base_; }
@@ -178,18 +173,15 @@ class GhostGenerator final : public ParticleGenerator<D> {
 
  private:
   struct Mirror {
+    GhostPlane<D> plane;
     int axis = -1;          // a box face: its axis (the exact arithmetic of the box walls); -1 a plane
     double position = 0.0;  // a box face: x_axis = position
-    std::array<double, D> normal{};
-    double offset = 0.0;
-    bool no_slip = true;
-    std::array<double, D> velocity{};
   };
   // The signed distance of particle i from the mirror, positive on the fluid side.
   static double distance(const Mirror& m, const Workspace<D>& w, std::size_t i) {
-    if (m.axis >= 0) return m.normal[m.axis] > 0.0 ? w.x[m.axis][i] - m.position : m.position - w.x[m.axis][i];
-    double s = -m.offset;
-    for (int d = 0; d < D; ++d) s += m.normal[d] * w.x[d][i];
+    if (m.axis >= 0) return m.plane.normal[m.axis] > 0.0 ? w.x[m.axis][i] - m.position : m.position - w.x[m.axis][i];
+    double s = -m.plane.offset;
+    for (int d = 0; d < D; ++d) s += m.plane.normal[d] * w.x[d][i];
     return s;
   }
 
@@ -203,30 +195,26 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
     for (std::size_t k = 0; k < mirrors_.size(); ++k) {
       if (!(mask & (1u << k))) continue;
-      const Mirror& m = mirrors_[k];
+      const Mirror& mirror = mirrors_[k];
+      const GhostPlane<D>& m = mirror.plane;
       ++walls;
       all_no_slip = all_no_slip && m.no_slip;
       for (int c = 0; c < D; ++c) vw_sum[c] += m.velocity[c];
-      if (m.axis >= 0) {
-        const int d = m.axis;
-        w.x[d][g] = 2.0 * m.position - w.x[d][g];
-        if (m.no_slip) {
-          for (int c = 0; c < D; ++c) v[c] = 2.0 * m.velocity[c] - v[c];
-        } else {
-          v[d] = 2.0 * m.velocity[d] - v[d];
-        }
-        continue;
+      // The image so far (for a corner: already mirrored through the other mirrors) mirrored again.
+      if (mirror.axis >= 0) {
+        w.x[mirror.axis][g] = 2.0 * mirror.position - w.x[mirror.axis][g];
+      } else {
+        double dist = -m.offset;
+        for (int d = 0; d < D; ++d) dist += m.normal[d] * w.x[d][g];
+        for (int d = 0; d < D; ++d) w.x[d][g] -= 2.0 * dist * m.normal[d];
       }
-      // The image so far (for a corner: already mirrored through the other planes) mirrored again.
-      double dist = -m.offset, vn = 0.0;
-      for (int d = 0; d < D; ++d) {
-        dist += m.normal[d] * w.x[d][g];
-        vn += m.normal[d] * (v[d] - m.velocity[d]);
-      }
-      for (int d = 0; d < D; ++d) w.x[d][g] -= 2.0 * dist * m.normal[d];
       if (m.no_slip) {
         for (int c = 0; c < D; ++c) v[c] = 2.0 * m.velocity[c] - v[c];
+      } else if (mirror.axis >= 0) {
+        v[mirror.axis] = 2.0 * m.velocity[mirror.axis] - v[mirror.axis];
       } else {
+        double vn = 0.0;
+        for (int d = 0; d < D; ++d) vn += m.normal[d] * (v[d] - m.velocity[d]);
         for (int c = 0; c < D; ++c) v[c] -= 2.0 * vn * m.normal[c];
       }
     }

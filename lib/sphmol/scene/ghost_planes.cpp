@@ -127,10 +127,7 @@ std::vector<GhostPlane<D>> ghost_planes(const SceneSpec& spec, const Config& con
   for (int d = 0; d < D; ++d)
     for (int s = 0; s < 2; ++s) {
       if (!faces[d][s].present) continue;
-      GhostPlane<D> f;
-      f.normal[d] = s == 0 ? 1.0 : -1.0;
-      f.offset = s == 0 ? faces[d][s].position : -faces[d][s].position;
-      all.push_back(f);
+      all.push_back(face_plane(d, s, faces[d][s]));
       names.push_back(std::string("the domain's ") + (s == 0 ? "lower " : "upper ") + kAxisName[d] + " face");
     }
   const std::size_t n_faces = all.size();

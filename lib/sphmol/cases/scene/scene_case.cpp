@@ -18,11 +18,7 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   spacing_ = s.spacing;
   velocity_scale_ = scene_velocity_scale<D>(s.particles, config.fluid.body_force, s.spacing);
   // A mirror plane moving along itself drives the fluid as a moving wall body does.
-  for (const auto& p : s.ghost_planes) {
-    double v2 = 0.0;
-    for (double c : p.velocity) v2 += c * c;
-    velocity_scale_ = std::max(velocity_scale_, std::sqrt(v2));
-  }
+  for (const auto& p : s.ghost_planes) velocity_scale_ = std::max(velocity_scale_, p.speed());
   free_surface_ = s.open_faces || !s.fills_domain;
   body_names_ = s.body_names;
   fluid_counts_ = s.fluid_counts;
