@@ -103,7 +103,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
     const double width = support_ * hmax;
     new_source_.clear();
     new_mask_.clear();
-    std::vector<std::uint32_t> near;
+    std::vector<std::uint32_t>& near = near_;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
       near.clear();
       for (std::size_t m = 0; m < mirrors_.size(); ++m)
@@ -229,6 +229,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
   std::size_t n_base_ = 0;
   std::vector<std::uint32_t> source_, new_source_;
   std::vector<std::uint32_t> mask_, new_mask_;
+  std::vector<std::uint32_t> near_;  // generate's scratch: the mirrors near one particle
 };
 
 // Copies density (and, through the EOS that runs next, pressure) from each ghost's source. Runs right
