@@ -286,3 +286,31 @@ TEST_CASE("health check: the last good state is the latest state that passed, on
   }
   omp_set_num_threads(1);
 }
+
+TEST_CASE("health check: the energy sums over blocks of particles give the same message on 1, 2 and 3 threads",
+          "[health][threads]") {
+  // The dam break at dp = 0.04: 1,250 fluid particles, three blocks of the sums (HealthCheck::kSumBlock),
+  // Tait elastic energy. Every particle at 3 m/s: far more kinetic energy than the column's budget.
+  const Config c = shipped("dam_break", {"discretization.spacing=0.04"});
+  auto cs = make_case<2>(c);
+  auto sys = cs->build(c);
+  std::vector<double> y0 = sys->initial_state(), ydot(y0.size());
+  sys->rhs(0.0, y0.data(), ydot.data());
+  const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
+  const auto& L = sys->layout();
+  REQUIRE(L.n > 2 * 512);
+  std::vector<double> y = y0;
+  for (std::size_t i = 0; i < L.n; ++i) y[L.velocity(0) + i] = 3.0 * std::sin(0.1 * static_cast<double>(i));
+  std::vector<std::string> causes;
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    HealthCheck<2> check(*sys, y0.data(), 0.0, lim);
+    CHECK(cause_of(check, y0) == "");
+    causes.push_back(cause_of(check, y));
+  }
+  omp_set_num_threads(1);
+  INFO(causes[0]);
+  CHECK(causes[0].rfind("kinetic energy ", 0) == 0);
+  CHECK(causes[1] == causes[0]);
+  CHECK(causes[2] == causes[0]);
+}
