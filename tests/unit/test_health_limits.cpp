@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,21 @@ std::string cause_of(HealthCheck<2>& check, const std::vector<double>& y) {
   }
   return "";
 }
+
+// A shipped case built, its RHS evaluated at the initial state (the densities the check reads), and
+// the health limits of the scene.
+struct Evaluated {
+  Config c;
+  std::unique_ptr<Case<2>> cs;
+  std::unique_ptr<SphSystem<2>> sys;
+  std::vector<double> y0;
+  HealthLimits lim;
+  explicit Evaluated(Config config) : c(std::move(config)), cs(make_case<2>(c)), sys(cs->build(c)), y0(sys->initial_state()) {
+    std::vector<double> ydot(y0.size());
+    sys->rhs(0.0, y0.data(), ydot.data());
+    lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
+  }
+};
 
 }  // namespace
 
@@ -251,12 +267,10 @@ TEST_CASE("health limits: walls that all share one translation measure the energ
 TEST_CASE("health check: the last good state is the latest state that passed, on 1 and 2 threads", "[health][threads]") {
   // The check copies each state before it knows whether the state passes, and keeps the copy only
   // when it does: a state that fails must leave the previous good one in place.
-  const Config c = shipped("taylor_green", {"discretization.particles_across=16"});
-  auto cs = make_case<2>(c);
-  auto sys = cs->build(c);
-  std::vector<double> y0 = sys->initial_state(), ydot(y0.size());
-  sys->rhs(0.0, y0.data(), ydot.data());
-  const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
+  const Evaluated e(shipped("taylor_green", {"discretization.particles_across=16"}));
+  const auto& sys = e.sys;
+  const auto& y0 = e.y0;
+  const HealthLimits& lim = e.lim;
   const auto& L = sys->layout();
   for (const int threads : {1, 2}) {
     INFO("threads " << threads);
@@ -285,4 +299,29 @@ TEST_CASE("health check: the last good state is the latest state that passed, on
     CHECK(check.last_good_time() == 3e-3);
   }
   omp_set_num_threads(1);
+}
+
+TEST_CASE("health check: the energy sums over blocks of particles give the same message on 1, 2 and 3 threads",
+          "[health][threads]") {
+  // The dam break at dp = 0.04: 1,250 fluid particles, three blocks of the sums (HealthCheck::kSumBlock),
+  // Tait elastic energy. Every particle at 3 m/s: far more kinetic energy than the column's budget.
+  const Evaluated e(shipped("dam_break", {"discretization.spacing=0.04"}));
+  const auto& sys = e.sys;
+  const auto& y0 = e.y0;
+  const auto& L = sys->layout();
+  REQUIRE(L.n > 2 * 512);
+  std::vector<double> y = y0;
+  for (std::size_t i = 0; i < L.n; ++i) y[L.velocity(0) + i] = 3.0 * std::sin(0.1 * static_cast<double>(i));
+  std::vector<std::string> causes;
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    HealthCheck<2> check(*sys, y0.data(), 0.0, e.lim);
+    CHECK(cause_of(check, y0) == "");
+    causes.push_back(cause_of(check, y));
+  }
+  omp_set_num_threads(1);
+  INFO(causes[0]);
+  CHECK(causes[0].rfind("kinetic energy ", 0) == 0);
+  CHECK(causes[1] == causes[0]);
+  CHECK(causes[2] == causes[0]);
 }

@@ -29,10 +29,10 @@ class HealthCheck {
 
   HealthCheck(const SphSystem<D>& sys, const double* y0, double t0, HealthLimits limits = {})
       : sys_(sys), last_good_(y0, y0 + sys.size()), last_good_t_(t0), initial_cfl_(sys.stable_step()),
-        limits_(std::move(limits)), power_t_(t0), power_(body_force_power(y0, t0)) {}
+        limits_(std::move(limits)), power_t_(t0), power_(body_force_power(serial_sums(y0, t0, false), t0)) {}
 
   void operator()(double t, const double* y, double /*h*/) {
-    const Scan s = scan(y);
+    const Scan s = scan(t, y);
     if (!s.healthy) report(t, y);
     physical(t, y, s);
     const double cfl = sys_.stable_step();
@@ -50,26 +50,80 @@ class HealthCheck {
   double body_force_work() const { return work_; }
 
  private:
+  // Sums over the fluid particles for the physical bounds: the largest speed squared, the kinetic
+  // energy relative to the walls' frame, the elastic energy, and per direction sum_i m_i (v_i - V)
+  // for the body force's power. Each sum is taken over fixed blocks of kSumBlock particles and the
+  // block sums are added in block order, so the totals do not depend on the thread count while the
+  // blocks are summed in parallel inside scan()'s region.
+  static constexpr long kSumBlock = 512;
+  struct Sums {
+    double vmax2 = 0.0, ke = 0.0, el = 0.0;
+    std::array<double, D> mv{};
+    void add(const Sums& o) {
+      vmax2 = std::max(vmax2, o.vmax2);
+      ke += o.ke;
+      el += o.el;
+      for (int d = 0; d < D; ++d) mv[d] += o.mv[d];
+    }
+  };
+  struct SumInputs {
+    std::array<double, D> V{};     // the walls' frame velocity at t (0 without a frame)
+    const double* rho = nullptr;   // state order; null: no elastic energy
+    long nrho = 0;
+  };
+  SumInputs sum_inputs(double t, bool elastic) const {
+    SumInputs in;
+    if (limits_.frame.on)
+      for (int d = 0; d < D; ++d) in.V[d] = limits_.frame.V(d, t);
+    if (elastic && limits_.energy && limits_.elastic.kind != HealthLimits::Elastic::Kind::none) {
+      const auto& rho = sys_.density();  // state order, as the masses
+      in.rho = rho.data();
+      in.nrho = std::min(static_cast<long>(sys_.layout().n), static_cast<long>(rho.size()));
+    }
+    return in;
+  }
+  Sums block_sums(const double* y, const SumInputs& in, long b) const {
+    const auto& L = sys_.layout();
+    const auto& m = sys_.particles().mass;
+    const auto& own = sys_.particles().rest_density;
+    const long lo = b * kSumBlock, hi = std::min(static_cast<long>(L.n), lo + kSumBlock);
+    Sums s;
+    for (long i = lo; i < hi; ++i) {
+      double v2 = 0.0, w2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double v = y[L.velocity(d) + i], w = v - in.V[d];
+        v2 += v * v;
+        w2 += w * w;
+        s.mv[d] += m[i] * w;
+      }
+      s.vmax2 = std::max(s.vmax2, v2);
+      s.ke += 0.5 * m[i] * w2;
+      if (i < in.nrho)
+        s.el += m[i] * limits_.elastic.per_mass(in.rho[i], static_cast<std::size_t>(i) < own.size() ? own[i] : 0.0);
+    }
+    return s;
+  }
+  long sum_blocks() const { return (static_cast<long>(sys_.layout().n) + kSumBlock - 1) / kSumBlock; }
+  Sums serial_sums(const double* y, double t, bool elastic) const {
+    const SumInputs in = sum_inputs(t, elastic);
+    Sums s;
+    for (long b = 0; b < sum_blocks(); ++b) s.add(block_sums(y, in, b));
+    return s;
+  }
   struct Scan {
     bool healthy = true;
     double rho_lo = std::numeric_limits<double>::infinity(), rho_hi = -std::numeric_limits<double>::infinity();
+    Sums sums;  // of the velocities and densities; meaningful only when healthy
   };
   // The power of the body force on the fluid, sum_i m_i g(t) . v_i; in the walls' frame
   // (HealthLimits::WallFrame) that of g(t) - A(t) on the velocities relative to the frame.
-  double body_force_power(const double* y, double t) const {
-    const auto& L = sys_.layout();
-    const auto& m = sys_.particles().mass;
+  double body_force_power(const Sums& s, double t) const {
     const auto& fr = limits_.frame;
     const double f = body_force_ramp_factor(t, limits_.g_ramp);
     double p = 0.0;
     for (int d = 0; d < D; ++d) {
       const double g = f * limits_.g[d] - (fr.on ? fr.A(d, t) : 0.0);
-      if (g == 0.0) continue;
-      const double V = fr.on ? fr.V(d, t) : 0.0;
-      const double* v = y + L.velocity(d);
-      double s = 0.0;  // serial: a sum must not depend on the thread count
-      for (std::size_t i = 0; i < L.n; ++i) s += m[i] * (v[i] - V);
-      p += g * s;
+      if (g != 0.0) p += g * s.mv[d];
     }
     return p;
   }
@@ -77,24 +131,10 @@ class HealthCheck {
   // The scene's physical bounds (run/health_limits.hpp), after the state is known to be finite.
   void physical(double t, const double* y, const Scan& s) {
     const auto& L = sys_.layout();
-    const auto& m = sys_.particles().mass;
     const long n = static_cast<long>(L.n);
-    // Serial: the kinetic energy (and so the message) must not depend on the thread count.
-    // The kinetic energy relative to the walls' frame when there is one (health_limits.hpp).
-    std::array<double, D> V{};
-    if (limits_.frame.on)
-      for (int d = 0; d < D; ++d) V[d] = limits_.frame.V(d, t);
-    double vmax2 = 0.0, ke = 0.0;
-    for (long i = 0; i < n; ++i) {
-      double v2 = 0.0, w2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double v = y[L.velocity(d) + i], w = v - V[d];
-        v2 += v * v;
-        w2 += w * w;
-      }
-      vmax2 = std::max(vmax2, v2);
-      ke += 0.5 * m[i] * w2;
-    }
+    // The kinetic energy relative to the walls' frame when there is one (health_limits.hpp), from
+    // scan()'s block sums: the same for any thread count, and so the message.
+    const double vmax2 = s.sums.vmax2, ke = s.sums.ke;
     if (vmax2 > limits_.max_speed * limits_.max_speed)
       for (long i = 0; i < n; ++i) {
         double v2 = 0.0;
@@ -130,18 +170,12 @@ class HealthCheck {
         }
       }
     }
-    const double p = body_force_power(y, t);
+    const double p = body_force_power(s.sums, t);
     work_ += 0.5 * (p + power_) * (t - power_t_);
     power_ = p;
     power_t_ = t;
     if (limits_.energy) {
-      double el = 0.0;  // serial, as the kinetic energy
-      if (limits_.elastic.kind != HealthLimits::Elastic::Kind::none) {
-        const auto& rho = sys_.density();  // state order, as the masses
-        const auto& own = sys_.particles().rest_density;
-        for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
-          el += m[i] * limits_.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
-      }
+      const double el = s.sums.el;  // block sums, as the kinetic energy
       const double budget = limits_.energy_budget + std::max(0.0, work_);
       const double allowed = (1.0 + HealthLimits::kEnergySlack) * budget + limits_.energy_floor;
       // Energies of a D-dimensional model: per unit depth in 2D, per unit area in 1D.
@@ -165,9 +199,10 @@ class HealthCheck {
 
   // Every per-particle pass after a step in one parallel region (its start and end are the only
   // synchronisations): the tests of report() (which then finds the first failure in its order, so
-  // the message does not depend on the thread count), the fluid density range, and a copy of y into
-  // candidate_, which becomes the last good state once every test has passed.
-  Scan scan(const double* y) {
+  // the message does not depend on the thread count), the fluid density range, the block sums of
+  // the physical bounds, and a copy of y into candidate_, which becomes the last good state once
+  // every test has passed.
+  Scan scan(double t, const double* y) {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
     const long n = static_cast<long>(L.n), size = static_cast<long>(L.size()), ve = static_cast<long>(L.velocities_end());
@@ -179,6 +214,10 @@ class HealthCheck {
     double* const keep = candidate_.data();
     bool bad = false;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    const SumInputs in = sum_inputs(t, true);
+    const long nb = sum_blocks();
+    parts_.resize(static_cast<std::size_t>(nb));
+    Sums* const part = parts_.data();
 #pragma omp parallel reduction(|| : bad)
     {
       for (int d = 0; d < D; ++d) {
@@ -197,9 +236,13 @@ class HealthCheck {
         lo = std::min(lo, rho[i]);
         hi = std::max(hi, rho[i]);
       }
+#pragma omp for schedule(static) nowait
+      for (long b = 0; b < nb; ++b) part[b] = block_sums(y, in, b);
       for_each_by_particle(0, static_cast<std::size_t>(size), L.n, [&](std::size_t k) { keep[k] = y[k]; });
     }
-    return {!bad, lo, hi};
+    Scan s{!bad, lo, hi, {}};
+    for (long b = 0; b < nb; ++b) s.sums.add(part[b]);  // in block order
+    return s;
   }
 
   // Throws for the first particle that fails, in the order the tests are listed in the file comment.
@@ -229,6 +272,7 @@ class HealthCheck {
 
   const SphSystem<D>& sys_;
   std::vector<double> last_good_, candidate_;
+  std::vector<Sums> parts_;  // scan()'s block sums
   double last_good_t_;
   double initial_cfl_;
   HealthLimits limits_;
