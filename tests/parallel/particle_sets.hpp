@@ -75,8 +75,8 @@ void take_share(const GlobalSet<D>& s, const parallel::Communicator& comm, Parti
     p.stationary.back() = q.stationary[k];
     p.body.back() = q.body[k];
     p.motion.back() = q.motion[k];
-    p.rest_density.push_back(q.rest_density[k]);
-    p.viscosity.push_back(q.viscosity[k]);
+    if (!q.rest_density.empty()) p.rest_density.push_back(q.rest_density[k]);
+    if (!q.viscosity.empty()) p.viscosity.push_back(q.viscosity[k]);
     gid.push_back(s.gid[k]);
   }
 }
