@@ -1,5 +1,5 @@
 #pragma once
-// Recursive coordinate bisection of the particles over the ranks, by Zoltan (Boman et al. 2007;
+// Recursive coordinate bisection of the particles over the ranks, by Zoltan (Devine et al. 2002;
 // Berger and Bokhari 1987): cuts at right angles to the axes split the total weight in halves,
 // recursively, until each rank has one box. A particle's weight is its share of the work: its
 // pair count (the row length of the neighbour list) plus one for the per-particle updates.
