@@ -1,0 +1,27 @@
+#include "sphmol/parallel/mpi_environment.hpp"
+
+#include <stdexcept>
+
+namespace sphmol::parallel {
+
+MpiEnvironment::MpiEnvironment(int& argc, char**& argv) {
+  int started = 0;
+  MPI_Initialized(&started);
+  if (started) return;
+  int provided = 0;
+  if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
+    throw std::runtime_error("MPI_Init_thread failed");
+  owns_ = true;
+  if (provided < MPI_THREAD_FUNNELED) {
+    MPI_Finalize();
+    throw std::runtime_error("the MPI library does not support MPI_THREAD_FUNNELED");
+  }
+}
+
+MpiEnvironment::~MpiEnvironment() {
+  int finished = 0;
+  MPI_Finalized(&finished);
+  if (owns_ && !finished) MPI_Finalize();
+}
+
+}  // namespace sphmol::parallel
