@@ -9,6 +9,8 @@
 #include <csignal>
 #include <iostream>
 #include <new>
+#include <optional>
+#include <sstream>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/version.hpp"
@@ -19,22 +21,42 @@
 #include "command_line.hpp"
 #include "subcommand.hpp"
 
+#ifdef SPHMOL_HAVE_MPI
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_environment.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#endif
+
 namespace {
 
 // Exit codes: 0 done, 1 run failed, 2 bad input (config, command line, checkpoint; nothing is
 // written), 3 blown up (last good state written), 128 + signal when interrupted (130 SIGINT, 143 SIGTERM; checkpoint + summary written).
-int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd) {
+// `partitioner`: the run is split over MPI ranks (docs/parallel.md); rank 0 prints and writes. An
+// error that may concern one rank only ends every rank (MPI_Abort), so none waits for it forever;
+// a config error is the same on every rank, which all return 2.
+int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd, const sphmol::RunPartitioner* partitioner) {
   const std::string& output = cmd.output;
+  const bool root = !partitioner || partitioner->root();
+  const auto fail = [partitioner](int code) {
+#ifdef SPHMOL_HAVE_MPI
+    if (partitioner) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+    return code;
+  };
   try {
     sphmol::RunOptions opt;
     opt.output_dir = output;
-    opt.log = cmd.quiet ? nullptr : &std::cerr;
-    if (!cmd.quiet && ::isatty(STDERR_FILENO)) opt.progress = &std::cerr;
+    opt.log = cmd.quiet || !root ? nullptr : &std::cerr;
+    if (!cmd.quiet && root && ::isatty(STDERR_FILENO)) opt.progress = &std::cerr;
     opt.restart_from = cmd.restart;
     opt.force_physics_change = cmd.force_physics_change;
     opt.overwrite = cmd.overwrite;
-    opt.handle_signals = true;
+    // Over ranks a signal reaches each rank at its own step: they would stop apart. mpirun's own
+    // handling (it ends every rank) applies instead.
+    opt.handle_signals = partitioner == nullptr;
+    opt.partitioner = partitioner;
     const auto s = sphmol::run_case(config, opt);
+    if (!root) return s["status"] == "blown_up" ? 3 : 0;
     if (s.contains("warnings"))
       for (const auto& w : s["warnings"]) std::cerr << "sph-mol: warning: " << w.get<std::string>() << '\n';
     const std::string dir = s.value("output_directory", output.empty() ? config.output.directory : output);
@@ -56,20 +78,20 @@ int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd) {
               << "\n  results in " << dir << "/summary.json\n";
   } catch (const sphmol::ConfigError& e) {
     // Config checks that need the built scene (a probe outside it): bad input, before any file.
-    std::cerr << "sph-mol: config error: " << e.what() << '\n';
+    if (root) std::cerr << "sph-mol: config error: " << e.what() << '\n';
     return 2;
   } catch (const sphmol::CheckpointError& e) {
     std::cerr << "sph-mol: restart error: " << e.what() << '\n';
-    return 2;
+    return fail(2);
   } catch (const sphmol::OutputFolderError& e) {
     std::cerr << "sph-mol: " << e.what() << '\n';
-    return 2;
+    return fail(2);
   } catch (const std::bad_alloc&) {
     std::cerr << "sph-mol: run failed: out of memory\n";
-    return 1;
+    return fail(1);
   } catch (const std::exception& e) {
     std::cerr << "sph-mol: run failed: " << e.what() << '\n';
-    return 1;
+    return fail(1);
   }
   return 0;
 }
@@ -104,9 +126,21 @@ int main(int argc, char** argv) {
     if (cmd.threads > 0) omp_set_num_threads(cmd.threads);
     for (auto& s : sphmol::app::subcommands())
       if (app.got_subcommand(s.name)) return s.run();
+#ifdef SPHMOL_HAVE_MPI
+    // Started by mpirun with several ranks: the run is split over them. One rank runs serially.
+    sphmol::parallel::MpiEnvironment mpi(argc, argv);
+    const sphmol::parallel::Communicator world;
+    std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
+    if (world.size() > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance);
+    std::ostringstream elsewhere;  // every rank reads the config alike: rank 0 tells
+    const auto config = sphmol::app::resolve_run_config(app, cmd, world.rank() == 0 ? static_cast<std::ostream&>(std::cerr) : elsewhere);
+    if (!config) return 2;
+    return run(*config, cmd, partitioner ? &*partitioner : nullptr);
+#else
     const auto config = sphmol::app::resolve_run_config(app, cmd, std::cerr);
     if (!config) return 2;
-    return run(*config, cmd);
+    return run(*config, cmd, nullptr);
+#endif
   } catch (const std::bad_alloc&) {
     // Whatever asked for more memory than there is (input limits catch the usual causes first).
     std::cerr << "sph-mol: out of memory\n";

@@ -359,12 +359,8 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   }
   ws_.implicit = nullptr;
   if (record_) record_->end();
-  double dt = std::numeric_limits<double>::infinity();
-  if (std::isfinite(acoustic)) dt = std::min(dt, cfl_.acoustic * acoustic);
-  if (amax2 > 0.0) dt = std::min(dt, cfl_.force * std::sqrt(hmin / std::sqrt(amax2)));
   // The viscous limit binds an explicit viscous term only: not the explicit part of an IMEX split.
-  if (cfl_.kinematic_viscosity > 0.0 && !record_) dt = std::min(dt, cfl_.viscous * hmin * hmin / cfl_.kinematic_viscosity);
-  stable_step_ = dt;
+  stable_step_ = cfl_step(cfl_, acoustic, amax2, hmin, !record_);
   rhs_seconds_ += omp_get_wtime() - t_start;
 }
 

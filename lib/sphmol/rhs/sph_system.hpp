@@ -4,6 +4,8 @@
 // once per pair, then runs the scene's terms in order. Also supplies the CFL limit.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +28,17 @@ struct CflLimits {
   double sound_speed = 0.0;
   double kinematic_viscosity = 0.0;
 };
+
+// The step the limits allow, from the per-particle extremes of an evaluation: the smallest h_i/(c_i+|v_i|)
+// (`acoustic`), the largest |a_i|^2 and the smallest h_i. `viscous`: whether the viscous limit binds
+// (not for the explicit part of an IMEX split). A distributed run reduces the extremes over ranks first.
+inline double cfl_step(const CflLimits& cfl, double acoustic, double amax2, double hmin, bool viscous) {
+  double dt = std::numeric_limits<double>::infinity();
+  if (std::isfinite(acoustic)) dt = std::min(dt, cfl.acoustic * acoustic);
+  if (amax2 > 0.0) dt = std::min(dt, cfl.force * std::sqrt(hmin / std::sqrt(amax2)));
+  if (cfl.kinematic_viscosity > 0.0 && viscous) dt = std::min(dt, cfl.viscous * hmin * hmin / cfl.kinematic_viscosity);
+  return dt;
+}
 
 template <int D>
 class SphSystem final : public OdeSystem, public ImexSystem {
@@ -112,6 +125,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   const StateLayout<D>& layout() const { return layout_; }
   const Particles<D>& particles() const { return particles_; }
   const Domain<D>& domain() const { return domain_; }
+  const CflLimits& cfl_limits() const { return cfl_; }
   double smoothing_length() const { return ws_.h; }
   std::vector<double> initial_state() const;
   std::vector<std::string> active_terms() const;

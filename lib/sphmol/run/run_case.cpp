@@ -21,6 +21,7 @@
 #include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/observers.hpp"
 #include "sphmol/run/output_folder.hpp"
+#include "sphmol/run/partitioned_run.hpp"
 #include "sphmol/run/plots.hpp"
 #include "sphmol/run/progress.hpp"
 #include "sphmol/run/restart_check.hpp"
@@ -45,6 +46,19 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   std::vector<double> y = sys->initial_state();
   auto integrator = make_integrator(config.time);
   auto observers = make_observers<D>(config, *sys);
+  // Over several ranks (run/partitioned_run.hpp) the integrator advances this rank's part of the
+  // state, and `y` holds the whole state only after a gather (output times, the end); the root rank
+  // measures and writes, with the whole system `sys`.
+  std::unique_ptr<PartitionedRun<D>> part;
+  if (opt.partitioner) {
+    if (!opt.restart_from.empty()) throw ConfigError("--restart: not available in a run over several MPI ranks");
+    if (config.output.checkpoint_every > 0.0)
+      throw ConfigError("output.checkpoint_every: checkpoints are not written by a run over several MPI ranks");
+    part = opt.partitioner->partition(config, *sys, y);
+  }
+  const bool root = !part || opt.partitioner->root();
+  OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
+  double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
 
   // Restart: the checkpoint's state, time, integrator state and measurements so far.
   double t = 0.0;
@@ -69,10 +83,16 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     rhs_before_s = restart->rhs_seconds;
     search_before_s = restart->search_seconds;
   }
-  integrator->initialize(*sys, t, y.data());
-  // Blow-up detection after every accepted step (run/health_check.hpp), and conservation diagnostics.
-  HealthCheck<D> health(*sys, y.data(), t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
-  integrator->set_step_hook([&health](double tt, const double* yy, double hh) { health(tt, yy, hh); });
+  integrator->initialize(ode, t, y_step);
+  // Blow-up detection after every accepted step (run/health_check.hpp; over ranks, the partition's
+  // own checks), and conservation diagnostics.
+  std::optional<HealthCheck<D>> health;
+  if (part) {
+    integrator->set_step_hook([&part](double tt, const double*, double hh) { part->check(tt, hh); });
+  } else {
+    health.emplace(*sys, y.data(), t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
+    integrator->set_step_hook([&health](double tt, const double* yy, double hh) { (*health)(tt, yy, hh); });
+  }
   ConservationLog<D> conservation;
   conservation.record(*sys, y.data(), t);
   if (restart) {
@@ -153,17 +173,22 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     bool refreshed = false;
     for (auto& o : observers)
       if (o->next_time() <= t) {
-        if (!refreshed) sys->refresh_fields(t, y.data(), scratch);
+        if (!refreshed) {
+          if (part) part->gather(y);  // every rank has the same observers: all of them gather
+          if (root) sys->refresh_fields(t, y.data(), scratch);
+        }
         refreshed = true;
-        o->at_time(*sys, y.data(), t, out);
+        if (root) o->at_time(*sys, y.data(), t, out);
       }
   };
   try {
   // The initial state: the observers (VTK files, probes) write t = 0 too; the case measures from the
   // first output time on. A restart continues from its checkpoint, which has them already.
   if (!restart) {
-    sys->refresh_fields(t, y.data(), scratch);
-    for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+    if (root) {
+      sys->refresh_fields(t, y.data(), scratch);
+      for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+    }
     observe_own_times();
   }
   while (next_out < times.size()) {
@@ -175,15 +200,18 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
     // so the interrupt checkpoint never misses a measurement at its own time.
     if (t >= times[next_out]) {
-      // The per-particle fields (density, pressure) of this very state, not of the integrator's last
-      // stage: both the case's measurement and the observers read them.
-      sys->refresh_fields(t, y.data(), scratch);
-      nlohmann::json m = c.measure(*sys, y.data(), t, out);
-      for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
-      progress.clear();
-      if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
-      errors.push_back(std::move(m));
-      conservation.record(*sys, y.data(), t);
+      if (part) part->gather(y);
+      if (root) {
+        // The per-particle fields (density, pressure) of this very state, not of the integrator's
+        // last stage: both the case's measurement and the observers read them.
+        sys->refresh_fields(t, y.data(), scratch);
+        nlohmann::json m = c.measure(*sys, y.data(), t, out);
+        for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+        progress.clear();
+        if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
+        errors.push_back(std::move(m));
+        conservation.record(*sys, y.data(), t);
+      }
       ++next_out;
     }
     observe_own_times();
@@ -196,21 +224,24 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   } catch (const BlowUp& b) {
     // End cleanly: report the cause and keep the last state that passed the checks.
     progress.clear();
-    blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()}, {"last_good_t", health.last_good_time()}};
+    blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()},
+               {"last_good_t", part ? part->last_good_time() : health->last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
-    if (out.enabled) {
-      write_last_good_state<D>(*sys, health.last_good_state().data(), out.path("last_good_state.csv"));
+    if (out.enabled && health) {
+      write_last_good_state<D>(*sys, health->last_good_state().data(), out.path("last_good_state.csv"));
       out.record("last_good_state.csv");
       blow_up["state_file"] = "last_good_state.csv";
     }
-    if (opt.log) *opt.log << "sph-mol: " << b.what() << '\n';
+    if (opt.log && root) *opt.log << "sph-mol: " << b.what() << '\n';
   }
   progress.clear();
   if (signal) {
     checkpoint();
     if (opt.log) *opt.log << "interrupted by signal " << signal << " at t = " << t << " s; checkpoint written\n";
   } else if (blow_up.is_null()) {
-    for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
+    if (part) part->gather(y);
+    if (root)
+      for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
     if (opt.final_state) *opt.final_state = y;
   }
   const double wall = wall_now();
@@ -226,18 +257,19 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
   j["rejected_steps"] = st.rejected_steps;
-  j["rhs_evals"] = rhs_before + sys->rhs_evaluations();
-  j["neighbor_rebuilds"] = sys->pair_list().rebuilds();
+  j["rhs_evals"] = rhs_before + ode.rhs_evaluations();
+  j["neighbor_rebuilds"] = part ? part->neighbor_rebuilds() : sys->pair_list().rebuilds();
   j["wall_seconds"] = wall;
   {
     // Where the wall time went: the neighbour list (staleness test, rebuilds), the rest of the RHS
     // (particle sums, EOS, CFL limit), and everything else (set-up, integrator updates, output).
-    const double rhs_s = rhs_before_s + sys->rhs_seconds(), search_s = search_before_s + sys->search_seconds();
+    const double rhs_s = rhs_before_s + (part ? part->rhs_seconds() : sys->rhs_seconds());
+    const double search_s = search_before_s + (part ? part->search_seconds() : sys->search_seconds());
     j["wall_seconds_breakdown"] = {{"neighbour_search", search_s}, {"rhs_without_search", rhs_s - search_s},
                                    {"setup_integrator_output", wall - rhs_s}};
     // Fused pair passes only: each thread's time on pair rows in this process (not carried over a
     // restart, whose thread count may differ).
-    if (!sys->pair_thread_seconds().empty()) j["wall_seconds_breakdown"]["pair_rows_per_thread"] = sys->pair_thread_seconds();
+    if (!part && !sys->pair_thread_seconds().empty()) j["wall_seconds_breakdown"]["pair_rows_per_thread"] = sys->pair_thread_seconds();
   }
   j["threads"] = omp_get_max_threads();
   j["active_terms"] = sys->active_terms();
@@ -257,6 +289,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
   for (const auto& o : observers) o->annotate(j);
+  if (part) j["parallel"] = part->describe();
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
   // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
@@ -308,7 +341,8 @@ std::string output_directory(const Config& config, const RunOptions& options) {
 
 nlohmann::json run_case(const Config& config, const RunOptions& options) {
   if (!find_case_module(config.case_name)) throw std::invalid_argument("case: unknown case '" + config.case_name + "'");
-  OutputSink out{output_directory(config, options), options.write_files};
+  const bool root = !options.partitioner || options.partitioner->root();
+  OutputSink out{output_directory(config, options), options.write_files && root};
   // The resolved config records the folder the run really writes to, as an absolute path, so a
   // restart from one of its checkpoints continues there whatever the current folder.
   Config resolved = config;

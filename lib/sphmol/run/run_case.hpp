@@ -11,6 +11,8 @@
 
 namespace sphmol {
 
+class RunPartitioner;
+
 struct RunOptions {
   std::string output_dir;    // empty: config.output.directory
   bool write_files = true;
@@ -24,6 +26,8 @@ struct RunOptions {
   bool overwrite = false;
   // Set by run_case: a restart into the folder of its checkpoint continues that run's file list.
   bool continuing = false;
+  // Set: the run is split over ranks (run/partitioned_run.hpp); only the root rank writes files.
+  const RunPartitioner* partitioner = nullptr;
 };
 
 // 128 + the signal that interrupted the run (summary "signal"), or 0 if it completed.

@@ -1,0 +1,299 @@
+#include "sphmol/parallel/distributed_system.hpp"
+
+#include <mpi.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "sphmol/neighbors/neighbor_search.hpp"
+#include "sphmol/parallel/halo_particles.hpp"
+#include "sphmol/parallel/migration.hpp"
+#include "sphmol/parallel/particle_selection.hpp"
+#include "sphmol/parallel/rcb_partition.hpp"
+#include "sphmol/parallel/region_bounds.hpp"
+#include "sphmol/rhs/assemble.hpp"
+
+namespace sphmol::parallel {
+
+namespace {
+
+// One particle's state as it travels: fluid x, v and the density of the state (when it has one);
+// a wall's integrated density in the first entry.
+template <int D>
+using StateRecord = std::array<double, 2 * D + 1>;
+
+template <int D>
+struct GatherRow {
+  std::uint64_t gid;
+  StateRecord<D> value;
+};
+
+}  // namespace
+
+template <int D>
+DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole,
+                                        double imbalance_tolerance)
+    : comm_(comm), config_(config), domain_(whole.domain()), whole_layout_(whole.layout()) {
+  if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
+  if (whole.has_generator() || whole.reorder() || whole.layout().has_energy || whole.layout().has_smoothing_length)
+    throw std::invalid_argument("DistributedSystem: generated particles, reordering, energy and variable h are not supported");
+  const Particles<D>& P = whole.particles();
+  const std::size_t n = P.size();
+  n_fluid_global_ = P.n_fluid;
+  // assemble_system sets h = smoothing_ratio * spacing: a spacing that gives the whole system's h to
+  // the bit (round-off may make it differ from the scene's in the last place) gives the same h.
+  const double h = whole.smoothing_length(), ratio = config.discretization.smoothing_ratio;
+  spacing_ = h / ratio;
+  for (int k = 0; k < 16 && ratio * spacing_ != h; ++k)
+    spacing_ = std::nextafter(spacing_, ratio * spacing_ < h ? std::numeric_limits<double>::infinity() : 0.0);
+  if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: no spacing reproduces the smoothing length");
+  // Halo depth: one list radius per dependent pair pass (the top of the header).
+  const std::size_t passes = whole.pair_passes().empty() ? whole.fused_pass_count() : whole.pair_passes().size();
+  stats_.depth = static_cast<int>(std::max<std::size_t>(1, passes));
+  range_ = stats_.depth * whole.pair_list().list_radius();
+  skin_ = config.discretization.skin * h;
+
+  // Work per particle: its row of the neighbour list (support + skin) plus one, from a search over
+  // the whole scene at t = 0, which every rank holds.
+  std::array<std::vector<double>, D> xw;
+  for (int d = 0; d < D; ++d) {
+    xw[d].resize(n);
+    for (std::size_t i = 0; i < n; ++i) xw[d][i] = domain_.wrap(d, i < P.n_fluid ? P.x[d][i] : P.wall_position(d, i, 0.0));
+  }
+  SearchInput<D> in;
+  for (int d = 0; d < D; ++d) in.x[d] = xw[d].data();
+  in.kind = P.kind.data();
+  in.n = n;
+  in.domain = &domain_;
+  in.radius = whole.pair_list().list_radius();
+  PairList rows;
+  make_neighbor_search<D>(config.discretization.neighbor_search)->build(in, rows);
+
+  // Each rank starts from an equal slice of the global ids, which RCB then redistributes.
+  const auto R = static_cast<std::size_t>(comm.size()), r = static_cast<std::size_t>(comm.rank());
+  const std::size_t lo = n * r / R, hi = n * (r + 1) / R;
+  std::vector<std::uint32_t> slice(hi - lo);
+  std::iota(slice.begin(), slice.end(), static_cast<std::uint32_t>(lo));
+  const std::size_t slice_fluid = std::clamp(P.n_fluid, lo, hi) - lo;
+  owned_ = select_particles(P, slice, slice_fluid);
+  gid_.assign(slice.begin(), slice.end());
+  std::vector<double> weight(hi - lo);
+  for (std::size_t k = 0; k < weight.size(); ++k) weight[k] = 1.0 + (rows.offset[lo + k + 1] - rows.offset[lo + k]);
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = xw[d].data() + lo;
+  RcbPartitioner<D> rcb(comm, imbalance_tolerance);
+  const RcbResult<D> cut = rcb.partition(xs, weight.data(), gid_.data(), gid_.size());
+  migrate(comm, owned_, gid_, cut.destination, {&weight});
+  stats_.imbalance = load_imbalance(comm, std::accumulate(weight.begin(), weight.end(), 0.0));
+
+  nfo_ = owned_.n_fluid;
+  layout_.n = nfo_;
+  layout_.has_density = whole_layout_.has_density;
+  layout_.n_wall_density = whole_layout_.n_wall_density > 0 ? owned_.n_wall() : 0;
+  for (int d = 0; d < D; ++d) x_now_[d].resize(owned_.size());
+}
+
+template <int D>
+void DistributedSystem<D>::owned_positions(double t, const double* y) {
+  const std::size_t no = owned_.size();
+  for (int d = 0; d < D; ++d) {
+    double* x = x_now_[d].data();
+    const double* yx = y + layout_.position(d);
+    for (std::size_t o = 0; o < nfo_; ++o) x[o] = domain_.wrap(d, yx[o]);
+    for (std::size_t o = nfo_; o < no; ++o) x[o] = domain_.wrap(d, owned_.wall_position(d, o, t));
+  }
+}
+
+template <int D>
+bool DistributedSystem<D>::moved_too_far() const {
+  const double limit2 = 0.25 * skin_ * skin_;
+  bool far = false;
+  for (std::size_t o = 0; o < owned_.size() && !far; ++o) {
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double dx = domain_.min_image(d, x_now_[d][o] - x_plan_[d][o]);
+      r2 += dx * dx;
+    }
+    far = r2 > limit2;
+  }
+  return !comm_.all(!far);
+}
+
+template <int D>
+void DistributedSystem<D>::plan() {
+  const std::size_t no = owned_.size();
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
+  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range_);
+  const std::vector<std::uint64_t> hgid = halo_.exchange(comm_, gid_);
+  Particles<D> all = owned_;
+  append_particles(all, exchange_halo_particles(comm_, halo_, owned_));
+  // The local set in global-id order: the serial order of these particles, fluid first.
+  const std::size_t nh = hgid.size();
+  const auto gid_of = [&](std::uint32_t k) { return k < no ? gid_[k] : hgid[k - no]; };
+  std::vector<std::uint32_t> order(no + nh);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return gid_of(a) < gid_of(b); });
+  nf_local_ = static_cast<std::size_t>(std::count_if(order.begin(), order.end(), [&](std::uint32_t k) { return gid_of(k) < n_fluid_global_; }));
+  owned_at_.resize(no);
+  halo_at_.resize(nh);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    (order[k] < no ? owned_at_[order[k]] : halo_at_[order[k] - no]) = static_cast<std::uint32_t>(k);
+  if (local_) {  // the counters of the system it replaces
+    stats_.search_seconds += local_->search_seconds();
+    stats_.rebuilds += local_->pair_list().rebuilds();
+  }
+  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_);
+  y_local_.assign(local_->size(), 0.0);
+  f_local_.assign(local_->size(), 0.0);
+  x_plan_ = x_now_;
+  ++stats_.plans;
+  stats_.halo = nh;
+  stats_.halo_max = std::max(stats_.halo_max, nh);
+}
+
+template <int D>
+void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
+  ++rhs_evals_;
+  const double t_start = omp_get_wtime();
+  owned_positions(t, y);
+  if (stats_.plans == 0 || moved_too_far()) plan();
+  const double t_planned = omp_get_wtime();
+
+  // The owned state to the ranks whose halo holds it, and both into the local system's state.
+  const std::size_t no = owned_.size();
+  const StateLayout<D>& L = layout_;
+  std::vector<StateRecord<D>> rec(no);
+  for (std::size_t o = 0; o < nfo_; ++o) {
+    for (int d = 0; d < D; ++d) {
+      rec[o][d] = y[L.position(d) + o];
+      rec[o][D + d] = y[L.velocity(d) + o];
+    }
+    rec[o][2 * D] = L.has_density ? y[L.density() + o] : 0.0;
+  }
+  for (std::size_t o = nfo_; o < no; ++o) {
+    rec[o].fill(0.0);
+    if (L.n_wall_density > 0) rec[o][0] = y[L.wall_density() + (o - nfo_)];
+  }
+  const std::vector<StateRecord<D>> hrec = halo_.exchange(comm_, rec);
+  const StateLayout<D>& LL = local_->layout();
+  const auto put = [&](std::size_t k, const StateRecord<D>& r) {
+    if (k < nf_local_) {
+      for (int d = 0; d < D; ++d) {
+        y_local_[LL.position(d) + k] = r[d];
+        y_local_[LL.velocity(d) + k] = r[D + d];
+      }
+      if (LL.has_density) y_local_[LL.density() + k] = r[2 * D];
+    } else if (LL.n_wall_density > 0) {
+      y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
+    }
+  };
+  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec[o]);
+  for (std::size_t q = 0; q < hrec.size(); ++q) put(halo_at_[q], hrec[q]);
+  stats_.exchange_seconds += omp_get_wtime() - t_planned;
+
+  local_->rhs(t, y_local_.data(), f_local_.data());
+
+  // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
+  const double t_reduce = omp_get_wtime();
+  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);  // position, velocity and density blocks
+  for (std::size_t o = 0; o < nfo_; ++o) {
+    const std::size_t k = owned_at_[o];
+    for (std::size_t b = 0; b < blocks; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
+  }
+  if (L.n_wall_density > 0)
+    for (std::size_t o = nfo_; o < no; ++o)
+      ydot[L.wall_density() + (o - nfo_)] = f_local_[LL.wall_density() + (owned_at_[o] - nf_local_)];
+  const CflLimits& cfl = local_->cfl_limits();
+  const std::vector<double>& c = local_->sound_speed();
+  const std::vector<double>& hs = local_->smoothing_lengths();
+  const auto& v = local_->velocities();
+  double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = local_->smoothing_length();
+  for (std::size_t o = 0; o < nfo_; ++o) {
+    const std::size_t k = owned_at_[o];
+    double v2 = 0.0, a2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      v2 += v[d][k] * v[d][k];
+      const double a = f_local_[LL.velocity(d) + k];
+      a2 += a * a;
+    }
+    amax2 = std::max(amax2, a2);
+    const double speed = std::max(cfl.sound_speed, c[k]) + std::sqrt(v2);
+    if (speed > 0.0) acoustic = std::min(acoustic, hs[k] / speed);
+    hmin = std::min(hmin, hs[k]);
+  }
+  // One reduction for the three: max |a|^2 as the minimum of its negative (min and max are exact).
+  const double mine[3] = {acoustic, -amax2, hmin};
+  double all[3];
+  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MIN, comm_.handle());
+  stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], true);
+  if (rhs_evals_ == 1) first_stable_step_ = stable_step_;
+  const double t_end = omp_get_wtime();
+  stats_.exchange_seconds += t_end - t_reduce;
+  stats_.rhs_seconds += t_end - t_start;
+  stats_.search_seconds += t_planned - t_start;  // the displacement test and the plan
+}
+
+template <int D>
+typename DistributedSystem<D>::Stats DistributedSystem<D>::stats() const {
+  Stats s = stats_;
+  if (local_) {
+    s.search_seconds += local_->search_seconds();
+    s.rebuilds += local_->pair_list().rebuilds();
+  }
+  return s;
+}
+
+template <int D>
+double DistributedSystem<D>::owned_density(std::size_t o) const {
+  return local_ ? local_->density()[owned_at_[o]] : owned_.rho[o];
+}
+
+template <int D>
+std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& whole) const {
+  if (whole.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem::local_part: not a whole state");
+  const StateLayout<D>& L = layout_;
+  const StateLayout<D>& W = whole_layout_;
+  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  std::vector<double> y(L.size());
+  for (std::size_t o = 0; o < nfo_; ++o)
+    for (std::size_t b = 0; b < blocks; ++b) y[b * nfo_ + o] = whole[b * W.n + gid_[o]];
+  if (L.n_wall_density > 0)
+    for (std::size_t o = nfo_; o < owned_.size(); ++o) y[L.wall_density() + (o - nfo_)] = whole[W.wall_density() + (gid_[o] - W.n)];
+  return y;
+}
+
+template <int D>
+void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) const {
+  const StateLayout<D>& L = layout_;
+  const StateLayout<D>& W = whole_layout_;
+  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  std::vector<GatherRow<D>> mine(owned_.size());
+  for (std::size_t o = 0; o < owned_.size(); ++o) {
+    mine[o].gid = gid_[o];
+    mine[o].value.fill(0.0);
+    if (o < nfo_)
+      for (std::size_t b = 0; b < blocks; ++b) mine[o].value[b] = y[b * nfo_ + o];
+    else if (L.n_wall_density > 0)
+      mine[o].value[0] = y[L.wall_density() + (o - nfo_)];
+  }
+  const std::vector<GatherRow<D>> rows = comm_.all_gather_v(mine);
+  whole.assign(W.size(), 0.0);
+  for (const auto& r : rows) {
+    if (r.gid < W.n)
+      for (std::size_t b = 0; b < blocks; ++b) whole[b * W.n + r.gid] = r.value[b];
+    else if (W.n_wall_density > 0)
+      whole[W.wall_density() + (r.gid - W.n)] = r.value[0];
+  }
+}
+
+template class DistributedSystem<1>;
+template class DistributedSystem<2>;
+template class DistributedSystem<3>;
+
+}  // namespace sphmol::parallel

@@ -1,0 +1,108 @@
+#pragma once
+// The particle ODE system of one rank in a run over several ranks: the rank owns part of the
+// particles (recursive coordinate bisection by pair count, rcb_partition.hpp) and its state holds
+// theirs only; an evaluation hands the owned particles together with halo copies of other ranks'
+// particles to an ordinary SphSystem, assembled from the same config (rhs/assemble.hpp), whose
+// terms run unchanged. The integrator sees an OdeSystem like any other.
+//
+// Deep halo instead of exchanges between passes: a pass reads, at neighbours, what the pass before
+// computed (summation density's rho_j, then the EOS's p_j). The halo here reaches P times the
+// list radius (kernel support + skin) for a scene of P dependent pair passes, so every particle a
+// pass reads at an owned particle's neighbour has all its own neighbours on the rank: its values
+// are computed here as on its owner, and the state alone is exchanged, once per evaluation. The
+// price is redundant work on the halo rows (one pass: none beyond the halo itself).
+//
+// Bit for bit the serial result: global ids number the particles as the serial scene does (fluid
+// first), and the local set is in global-id order, so every neighbour row (sorted by index, as
+// every search makes it) lists the serial neighbours in the serial order, and every per-particle
+// sum is the serial sum. The CFL limit is reduced over ranks with min/max, which are exact.
+//
+// The halo plan is made again, with a new local system, when some particle has moved more than half
+// the skin since the last plan (the Verlet rule, halo.hpp). Ownership stays that of the start.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/halo.hpp"
+#include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/time/ode_system.hpp"
+
+namespace sphmol::parallel {
+
+template <int D>
+class DistributedSystem final : public OdeSystem {
+ public:
+  // Collective. `whole`: the whole scene (every rank builds it, from `config`), before any
+  // evaluation; its particle index is the global id. imbalance_tolerance (> 1): the partition's aim
+  // for the largest rank's pair work over the mean.
+  DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, double imbalance_tolerance);
+
+  std::size_t size() const override { return layout_.size(); }
+  // Collective (every rank evaluates at the same t, as the leapfrogs do).
+  void rhs(double t, const double* y, double* ydot) override;
+  double stable_step() const override { return stable_step_; }
+  double first_stable_step() const { return first_stable_step_; }  // of the first evaluation
+  std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
+  std::size_t velocities_end() const override { return layout_.velocities_end(); }
+  std::size_t block_length() const override { return layout_.n; }
+  long rhs_evaluations() const override { return rhs_evals_; }
+
+  const StateLayout<D>& layout() const { return layout_; }
+  // This rank's part of a whole state (the serial layout), and (collective) the whole state from
+  // every rank's part, on every rank.
+  std::vector<double> local_part(const std::vector<double>& whole) const;
+  void gather(const double* y, std::vector<double>& whole) const;
+
+  // Owned particles: fluid first; the global id of each; the density of the latest evaluation.
+  const Particles<D>& owned() const { return owned_; }
+  const std::vector<std::uint64_t>& gid() const { return gid_; }
+  double owned_density(std::size_t o) const;
+  const Domain<D>& domain() const { return domain_; }
+
+  struct Stats {
+    long plans = 0;                 // halo plans (the first included)
+    long rebuilds = 0;              // neighbour-list rebuilds of the local systems
+    std::size_t halo = 0;           // halo particles of the current plan
+    std::size_t halo_max = 0;       // the most over the run
+    int depth = 1;                  // halo depth, in list radii
+    double exchange_seconds = 0.0;  // state exchanges and their reductions
+    double rhs_seconds = 0.0;       // in rhs(), everything included
+    double search_seconds = 0.0;    // displacement tests, halo plans and the local neighbour lists
+    double imbalance = 1.0;         // largest rank's pair work over the mean, at the partition
+  };
+  Stats stats() const;
+
+ private:
+  // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
+  void owned_positions(double t, const double* y);
+  bool moved_too_far() const;  // collective
+  void plan();                 // collective: halo plan and a new local system
+
+  Communicator comm_;
+  Config config_;
+  Domain<D> domain_;
+  double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
+  std::size_t n_fluid_global_ = 0;
+  Particles<D> owned_;
+  std::vector<std::uint64_t> gid_;
+  std::size_t nfo_ = 0;  // owned fluid particles
+  StateLayout<D> layout_, whole_layout_;
+  Halo<D> halo_;
+  std::unique_ptr<SphSystem<D>> local_;
+  std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
+  std::size_t nf_local_ = 0;
+  std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
+  std::vector<double> y_local_, f_local_;
+  double stable_step_ = 0.0, first_stable_step_ = 0.0;
+  long rhs_evals_ = 0;
+  Stats stats_;
+};
+
+extern template class DistributedSystem<1>;
+extern template class DistributedSystem<2>;
+extern template class DistributedSystem<3>;
+
+}  // namespace sphmol::parallel

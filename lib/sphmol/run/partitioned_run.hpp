@@ -1,0 +1,56 @@
+#pragma once
+// A run split over several processes (sph-mol under mpirun in an MPI build): what the run loop
+// (run/run_case.cpp) needs from the decomposition, declared here without MPI so that the serial
+// library stays MPI-free. The implementation lives in lib/sphmol/parallel (parallel/mpi_run.hpp).
+//
+// Every rank builds the whole scene; the integrator then advances each rank's own part of the
+// state. At output times the whole state is gathered, and the root rank measures, writes the
+// observers' files and the summary with the whole system, as a serial run does.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/time/ode_system.hpp"
+
+namespace sphmol {
+
+template <int D>
+class PartitionedRun {
+ public:
+  virtual ~PartitionedRun() = default;
+  // The system the integrator advances (this rank's particles) and its state vector.
+  virtual OdeSystem& system() = 0;
+  virtual std::vector<double>& state() = 0;
+  // Collective: the whole state in the serial layout, on every rank.
+  virtual void gather(std::vector<double>& whole) = 0;
+  // Collective, after each accepted step: throws BlowUp on every rank when any rank's part fails a
+  // check (the same BlowUp everywhere).
+  virtual void check(double t, double h) = 0;
+  virtual double last_good_time() const = 0;
+  // Run counters of this rank: seconds in the RHS and in its neighbour search, list rebuilds.
+  virtual double rhs_seconds() const = 0;
+  virtual double search_seconds() const = 0;
+  virtual long neighbor_rebuilds() const = 0;
+  // The summary's "parallel" object (ranks, halo sizes, exchange time, load imbalance).
+  virtual nlohmann::json describe() const = 0;
+};
+
+// Splits a run over the ranks; set in RunOptions by a program started under MPI.
+class RunPartitioner {
+ public:
+  virtual ~RunPartitioner() = default;
+  // The rank that writes files and the summary.
+  virtual bool root() const = 0;
+  // Collective. `whole`: the scene as built on every rank; y0 its initial state. Throws ConfigError
+  // on every rank for a configuration the partitioned run does not support.
+  virtual std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
+                                                       const std::vector<double>& y0) const = 0;
+  virtual std::unique_ptr<PartitionedRun<2>> partition(const Config& config, const SphSystem<2>& whole,
+                                                       const std::vector<double>& y0) const = 0;
+  virtual std::unique_ptr<PartitionedRun<3>> partition(const Config& config, const SphSystem<3>& whole,
+                                                       const std::vector<double>& y0) const = 0;
+};
+
+}  // namespace sphmol
