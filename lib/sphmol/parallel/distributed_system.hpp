@@ -22,6 +22,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sphmol/config/config.hpp"
@@ -61,6 +62,8 @@ class DistributedSystem final : public OdeSystem {
   const std::vector<std::uint64_t>& gid() const { return gid_; }
   double owned_density(std::size_t o) const;
   const Domain<D>& domain() const { return domain_; }
+  // The terms of the local systems (the scene's, from the config; empty before the first evaluation).
+  std::vector<std::string> active_terms() const { return local_ ? local_->active_terms() : std::vector<std::string>{}; }
 
   struct Stats {
     long plans = 0;                 // halo plans (the first included)

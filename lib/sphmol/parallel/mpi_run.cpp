@@ -1,5 +1,6 @@
 #include "sphmol/parallel/mpi_run.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -16,7 +17,8 @@ class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
          double tolerance)
-      : comm_(comm), sys_(comm, config, whole, tolerance), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0) {}
+      : comm_(comm), sys_(comm, config, whole, tolerance), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
+        whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
@@ -34,7 +36,14 @@ class MpiRun final : public PartitionedRun<D> {
     const auto halo = comm_.all_gather(static_cast<std::uint64_t>(s.halo_max));
     const auto exchange = comm_.all_gather(s.exchange_seconds);
     const auto rhs = comm_.all_gather(s.rhs_seconds);
-    return {{"ranks", comm_.size()},
+    // Terms a case appends to its whole system (monitors such as the dam break's wall penetration
+    // count) are not in the local systems: they see only the evaluations at output times, on rank 0.
+    const auto local = sys_.active_terms();
+    std::vector<std::string> output_only;
+    for (const auto& t : whole_terms_)
+      if (std::find(local.begin(), local.end(), t) == local.end()) output_only.push_back(t);
+    return {{"terms_at_output_times_only", output_only},
+            {"ranks", comm_.size()},
             {"decomposition", "recursive coordinate bisection by pair count (Zoltan), at the start"},
             {"load_imbalance", s.imbalance},
             {"halo_depth_list_radii", s.depth},
@@ -52,6 +61,7 @@ class MpiRun final : public PartitionedRun<D> {
   DistributedSystem<D> sys_;
   std::vector<double> y_;
   DistributedHealthCheck<D> health_;
+  std::vector<std::string> whole_terms_;
 };
 
 // What the distributed system does not support yet: a ConfigError naming the keys, on every rank.

@@ -1,0 +1,114 @@
+// A run over ranks (parallel/mpi_run.hpp through run_case): the final state is the serial run's,
+// bit for bit, on any rank count, for wall-particle scenes with both leapfrogs: the channel flows
+// (summation density: two dependent pair passes, a two-radius halo) and the dam break (continuity
+// density with dynamic wall densities in the state; particles travel far enough to re-plan the
+// halo many times). Each rank runs the serial reference itself. Unsupported settings are refused
+// with a ConfigError on every rank.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#include "sphmol/run/run_case.hpp"
+
+using namespace sphmol;
+using namespace sphmol::parallel;
+
+namespace {
+
+std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
+
+struct Finished {
+  nlohmann::json summary;
+  std::vector<double> y;
+};
+
+Finished run(const Config& c, const RunPartitioner* partitioner) {
+  Finished f;
+  RunOptions opt;
+  opt.write_files = false;
+  opt.final_state = &f.y;
+  opt.partitioner = partitioner;
+  f.summary = run_case(c, opt);
+  return f;
+}
+
+// Number of entries whose bits differ (0: the same state to the bit).
+std::size_t differing_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) n += std::memcmp(&a[k], &b[k], sizeof(double)) != 0;
+  return n;
+}
+
+// `output_only`: final_errors keys measured by a case's own per-evaluation monitor, which a run
+// over ranks runs at output times only (they may differ).
+void check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}) {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance);
+  const Finished serial = run(c, nullptr);
+  const Finished split = run(c, &partitioner);
+  REQUIRE(serial.summary["status"] == "completed");
+  CHECK(split.summary["status"] == "completed");
+  CHECK(split.summary["steps"] == serial.summary["steps"]);
+  CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
+  INFO(comm.size() << " ranks, rank " << comm.rank() << ": " << split.y.size() << " state values");
+  CHECK(split.y.size() == serial.y.size());
+  CHECK(differing_bits(split.y, serial.y) == 0);
+  if (comm.rank() == 0) {  // the measurements on the gathered state are the serial ones
+    nlohmann::json a = split.summary["final_errors"], b = serial.summary["final_errors"];
+    for (const auto& k : output_only) {
+      CHECK(a.contains(k));
+      a.erase(k);
+      b.erase(k);
+    }
+    CHECK(a == b);
+    CHECK(split.summary["parallel"]["ranks"] == comm.size());
+  }
+}
+
+}  // namespace
+
+TEST_CASE("distributed run: Poiseuille with the leapfrog equals the serial run bit for bit", "[parallel][run]") {
+  check_same_as_serial(load_config(verification("poiseuille.yaml"),
+                                   {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.05",
+                                    "output.times=[0.02,0.05]", "output.plots=false"}));
+}
+
+TEST_CASE("distributed run: Couette with the kick-drift-kick leapfrog equals the serial run bit for bit", "[parallel][run]") {
+  check_same_as_serial(load_config(verification("couette.yaml"),
+                                   {"discretization.particles_across=20", "time.integrator=leapfrog_kdk", "time.t_end=0.05",
+                                    "output.times=[0.05]", "output.plots=false"}));
+}
+
+TEST_CASE("distributed run: the dam break equals the serial run bit for bit, through many halo plans", "[parallel][run]") {
+  const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.2",
+                                                                "output.times=[0.1,0.2]", "output.plots=false"});
+  check_same_as_serial(c, {"min_wall_gap", "wall_penetrations"});
+  // The particles moved: the halo was planned again (with a new local system) during the run.
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance);
+  const Finished split = run(c, &partitioner);
+  CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 5);
+  CHECK(split.summary["parallel"]["halo_depth_list_radii"] == 1);
+  CHECK(split.summary["parallel"]["terms_at_output_times_only"] == nlohmann::json::array({"wall_penetration_monitor"}));
+}
+
+TEST_CASE("distributed run: settings it does not support are refused on every rank", "[parallel][run]") {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance);
+  const std::vector<std::string> base{"discretization.particles_across=20", "time.t_end=0.01", "output.times=[0.01]",
+                                      "output.plots=false"};
+  auto with = [&](const std::string& extra) {
+    auto o = base;
+    o.push_back(extra);
+    return load_config(verification("poiseuille.yaml"), o);
+  };
+  CHECK_THROWS_AS(run(with("time.integrator=arkode_erk"), &partitioner), ConfigError);
+  CHECK_THROWS_AS(run(with("time.integrator=leapfrog_imex"), &partitioner), ConfigError);
+  CHECK_THROWS_WITH(run(with("time.integrator=arkode_erk"), &partitioner), Catch::Contains("time.integrator"));
+}
