@@ -52,8 +52,10 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   for (int k = 0; k < 16 && ratio * spacing_ != h; ++k)
     spacing_ = std::nextafter(spacing_, ratio * spacing_ < h ? std::numeric_limits<double>::infinity() : 0.0);
   if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: no spacing reproduces the smoothing length");
-  // Halo depth: one list radius per dependent pair pass (the top of the header).
-  const std::size_t passes = whole.pair_passes().empty() ? whole.fused_pass_count() : whole.pair_passes().size();
+  // Halo depth: one list radius per dependent pair pass (the top of the header); a term that sums
+  // over the stored pair list without a row form counts as a pass of its own.
+  const std::size_t passes = (whole.pair_passes().empty() ? whole.fused_pass_count() : whole.pair_passes().size()) +
+                             whole.terms_needing_stored_pairs().size();
   stats_.depth = static_cast<int>(std::max<std::size_t>(1, passes));
   range_ = stats_.depth * whole.pair_list().list_radius();
   skin_ = config.discretization.skin * h;

@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "sphmol/core/join.hpp"
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
 
@@ -78,8 +77,6 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
   if (disc.smoothing_length != "constant") why.push_back("discretization.smoothing_length: '" + disc.smoothing_length + "'");
   if (disc.reorder) why.push_back("discretization.reorder: true");
   if (whole.has_generator()) why.push_back("generated particles");
-  const auto stored = whole.terms_needing_stored_pairs();
-  if (!stored.empty()) why.push_back("terms without a row form (" + join(stored) + ")");
   if (why.empty()) return;
   std::string text;
   for (const auto& w : why) text += (text.empty() ? "" : "; ") + w;
