@@ -23,6 +23,12 @@ void add_run_options(CLI::App& app, RunCommand& cmd) {
                      "(docs/performance.md)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--set", cmd.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
+#ifdef SPHMOL_HAVE_MPI
+  app.add_option("--rebalance-threshold", cmd.rebalance_threshold,
+                 "under mpirun: partition the particles again when the largest rank's pair work exceeds this many "
+                 "times the mean (checked at each halo re-plan; default 1.2)")
+      ->check(CLI::Range(1.0, 1e300));
+#endif
 }
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv, std::ostream& out,

@@ -20,6 +20,9 @@ struct RunCommand {
   bool quiet = false;
   bool force_physics_change = false;
   bool overwrite = false;
+  // Under mpirun (an MPI build, several ranks): the load imbalance past which the particles are
+  // partitioned again (docs/parallel.md).
+  double rebalance_threshold = 1.2;
 };
 
 // Declares the run command's options on the top-level app.

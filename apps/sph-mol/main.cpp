@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
     sphmol::parallel::MpiEnvironment mpi(argc, argv);
     const sphmol::parallel::Communicator world;
     std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
-    if (world.size() > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance);
+    if (world.size() > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
     std::ostringstream elsewhere;  // every rank reads the config alike: rank 0 tells
     const auto config = sphmol::app::resolve_run_config(app, cmd, world.rank() == 0 ? static_cast<std::ostream&>(std::cerr) : elsewhere);
     if (!config) return 2;

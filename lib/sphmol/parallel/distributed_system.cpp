@@ -37,8 +37,13 @@ struct GatherRow {
 
 template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole,
-                                        double imbalance_tolerance)
-    : comm_(comm), config_(config), domain_(whole.domain()), whole_layout_(whole.layout()) {
+                                        double imbalance_tolerance, double rebalance_threshold)
+    : comm_(comm),
+      config_(config),
+      rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
+      rebalance_threshold_(rebalance_threshold),
+      domain_(whole.domain()),
+      whole_layout_(whole.layout()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
   if (whole.has_generator() || whole.reorder() || whole.layout().has_energy || whole.layout().has_smoothing_length)
     throw std::invalid_argument("DistributedSystem: generated particles, reordering, energy and variable h are not supported");
@@ -88,16 +93,107 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   for (std::size_t k = 0; k < weight.size(); ++k) weight[k] = 1.0 + (rows.offset[lo + k + 1] - rows.offset[lo + k]);
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = xw[d].data() + lo;
-  RcbPartitioner<D> rcb(comm, imbalance_tolerance);
-  const RcbResult<D> cut = rcb.partition(xs, weight.data(), gid_.data(), gid_.size());
+  const RcbResult<D> cut = rcb_->partition(xs, weight.data(), gid_.data(), gid_.size());
   migrate(comm, owned_, gid_, cut.destination, {&weight});
-  stats_.imbalance = load_imbalance(comm, std::accumulate(weight.begin(), weight.end(), 0.0));
+  stats_.imbalance = stats_.imbalance_seen = load_imbalance(comm, std::accumulate(weight.begin(), weight.end(), 0.0));
+  set_layout();
+}
 
+template <int D>
+DistributedSystem<D>::~DistributedSystem() = default;
+
+template <int D>
+void DistributedSystem<D>::set_layout() {
   nfo_ = owned_.n_fluid;
   layout_.n = nfo_;
   layout_.has_density = whole_layout_.has_density;
   layout_.n_wall_density = whole_layout_.n_wall_density > 0 ? owned_.n_wall() : 0;
   for (int d = 0; d < D; ++d) x_now_[d].resize(owned_.size());
+}
+
+template <int D>
+bool DistributedSystem<D>::imbalanced() {
+  if (!replanned_) return false;  // the same on every rank: plans are collective
+  replanned_ = false;
+  const PairList& rows = local_->pair_list().pairs();
+  weight_.resize(owned_.size());
+  for (std::size_t o = 0; o < owned_.size(); ++o) {
+    const std::size_t k = owned_at_[o];
+    weight_[o] = 1.0 + (rows.offset[k + 1] - rows.offset[k]);
+  }
+  stats_.imbalance_seen = load_imbalance(comm_, std::accumulate(weight_.begin(), weight_.end(), 0.0));
+  return stats_.imbalance_seen > rebalance_threshold_;
+}
+
+template <int D>
+void DistributedSystem<D>::to_columns(const std::vector<double>& array, std::size_t blocks,
+                                      std::vector<std::vector<double>>& columns) const {
+  const std::size_t no = owned_.size();
+  // Arrays of the state's length hold the wall densities too, when the scene has them: a column on
+  // every rank alike (migrate() moves the same arrays everywhere), whatever walls a rank owns.
+  const bool walls = blocks > D && whole_layout_.n_wall_density > 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    columns.emplace_back(no, 0.0);
+    for (std::size_t o = 0; o < nfo_; ++o) columns.back()[o] = array[b * nfo_ + o];
+  }
+  if (walls) {
+    columns.emplace_back(no, 0.0);
+    for (std::size_t o = nfo_; o < no; ++o) columns.back()[o] = array[layout_.wall_density() + (o - nfo_)];
+  }
+}
+
+template <int D>
+void DistributedSystem<D>::from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks,
+                                        std::vector<double>& array) const {
+  const std::size_t no = owned_.size();
+  const bool walls = blocks > D && whole_layout_.n_wall_density > 0;
+  array.assign(blocks * nfo_ + (walls ? layout_.n_wall_density : 0), 0.0);
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t o = 0; o < nfo_; ++o) array[b * nfo_ + o] = columns[b][o];
+  if (walls)
+    for (std::size_t o = nfo_; o < no; ++o) array[layout_.wall_density() + (o - nfo_)] = columns[blocks][o];
+}
+
+template <int D>
+void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const std::vector<std::vector<double>*>& state,
+                                       const std::vector<std::vector<double>*>& positions) {
+  owned_positions(t, y.data());
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
+  const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
+  // Every array as per-particle columns, which migrate() moves with the particles.
+  const std::size_t state_blocks = 2 * D + (layout_.has_density ? 1 : 0);
+  std::vector<std::vector<double>> columns;
+  std::vector<const std::vector<double>*> arrays{&y};
+  for (const auto* a : state) arrays.push_back(a);
+  for (const auto* a : arrays) {
+    if (a->size() != layout_.size()) throw std::invalid_argument("DistributedSystem::repartition: an array is not of the state's length");
+    to_columns(*a, state_blocks, columns);
+  }
+  for (const auto* a : positions) {
+    if (a->size() != D * nfo_) throw std::invalid_argument("DistributedSystem::repartition: an array is not of the positions' length");
+    to_columns(*a, D, columns);
+  }
+  std::vector<std::vector<double>*> extra;
+  for (auto& c : columns) extra.push_back(&c);
+  extra.push_back(&weight_);
+  const bool walls = whole_layout_.n_wall_density > 0;
+  migrate(comm_, owned_, gid_, cut.destination, extra);
+  set_layout();
+  // Back from columns, in the order they were made.
+  std::size_t at = 0;
+  const std::size_t per_state = state_blocks + (walls ? 1 : 0);
+  const auto take = [&](std::size_t count) {
+    std::vector<std::vector<double>> c(columns.begin() + static_cast<long>(at), columns.begin() + static_cast<long>(at + count));
+    at += count;
+    return c;
+  };
+  from_columns(take(per_state), state_blocks, y);
+  for (auto* a : state) from_columns(take(per_state), state_blocks, *a);
+  for (auto* a : positions) from_columns(take(D), D, *a);
+  stats_.imbalance = load_imbalance(comm_, std::accumulate(weight_.begin(), weight_.end(), 0.0));
+  ++stats_.repartitions;
+  plan_due_ = true;
 }
 
 template <int D>
@@ -154,6 +250,8 @@ void DistributedSystem<D>::plan() {
   y_local_.assign(local_->size(), 0.0);
   f_local_.assign(local_->size(), 0.0);
   x_plan_ = x_now_;
+  replanned_ = true;
+  plan_due_ = false;
   ++stats_.plans;
   stats_.halo = nh;
   stats_.halo_max = std::max(stats_.halo_max, nh);
@@ -164,7 +262,7 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
   const double t_start = omp_get_wtime();
   owned_positions(t, y);
-  if (stats_.plans == 0 || moved_too_far()) plan();
+  if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
   const double t_planned = omp_get_wtime();
 
   // The owned state to the ranks whose halo holds it, and both into the local system's state.

@@ -18,7 +18,10 @@
 // sum is the serial sum. The CFL limit is reduced over ranks with min/max, which are exact.
 //
 // The halo plan is made again, with a new local system, when some particle has moved more than half
-// the skin since the last plan (the Verlet rule, halo.hpp). Ownership stays that of the start.
+// the skin since the last plan (the Verlet rule, halo.hpp). After such a re-plan, when the largest
+// rank's pair work has drifted past `rebalance_threshold` times the mean, the particles are
+// partitioned again by their current pair counts and migrate with their state (repartition(),
+// between steps, with whatever per-particle arrays the integrator carries).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -28,6 +31,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/halo.hpp"
+#include "sphmol/parallel/rcb_partition.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/time/ode_system.hpp"
 
@@ -38,8 +42,11 @@ class DistributedSystem final : public OdeSystem {
  public:
   // Collective. `whole`: the whole scene (every rank builds it, from `config`), before any
   // evaluation; its particle index is the global id. imbalance_tolerance (> 1): the partition's aim
-  // for the largest rank's pair work over the mean.
-  DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, double imbalance_tolerance);
+  // for the largest rank's pair work over the mean; rebalance_threshold: the imbalance past which
+  // imbalanced() asks for a new partition.
+  DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, double imbalance_tolerance,
+                    double rebalance_threshold);
+  ~DistributedSystem() override;
 
   std::size_t size() const override { return layout_.size(); }
   // Collective (every rank evaluates at the same t, as the leapfrogs do).
@@ -56,6 +63,15 @@ class DistributedSystem final : public OdeSystem {
   // every rank's part, on every rank.
   std::vector<double> local_part(const std::vector<double>& whole) const;
   void gather(const double* y, std::vector<double>& whole) const;
+
+  // Collective, between steps: true when the halo was planned again since the last call and the
+  // load imbalance (pair work of the owned rows, over the mean) now exceeds the threshold.
+  bool imbalanced();
+  // Collective, after imbalanced() said true: a new partition by the current pair counts at (t, y);
+  // the particles move with y and with the integrator's arrays of the state's length (`state`) or
+  // of its position block's (`positions`), which are all resized to the new share.
+  void repartition(double t, std::vector<double>& y, const std::vector<std::vector<double>*>& state,
+                   const std::vector<std::vector<double>*>& positions);
 
   // Owned particles: fluid first; the global id of each; the density of the latest evaluation.
   const Particles<D>& owned() const { return owned_; }
@@ -74,7 +90,9 @@ class DistributedSystem final : public OdeSystem {
     double exchange_seconds = 0.0;  // state exchanges and their reductions
     double rhs_seconds = 0.0;       // in rhs(), everything included
     double search_seconds = 0.0;    // displacement tests, halo plans and the local neighbour lists
-    double imbalance = 1.0;         // largest rank's pair work over the mean, at the partition
+    double imbalance = 1.0;         // largest rank's pair work over the mean, at the last partition
+    double imbalance_seen = 1.0;    // the same, at the last re-plan
+    long repartitions = 0;          // partitions after the first
   };
   Stats stats() const;
 
@@ -84,8 +102,19 @@ class DistributedSystem final : public OdeSystem {
   bool moved_too_far() const;  // collective
   void plan();                 // collective: halo plan and a new local system
 
+  // Per owned particle, `array` in this rank's state layout (L entries per particle block) as
+  // columns, and back.
+  void to_columns(const std::vector<double>& array, std::size_t blocks, std::vector<std::vector<double>>& columns) const;
+  void from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks, std::vector<double>& array) const;
+  void set_layout();
+
   Communicator comm_;
   Config config_;
+  std::unique_ptr<RcbPartitioner<D>> rcb_;
+  double rebalance_threshold_ = 0.0;
+  bool replanned_ = false;        // a plan since the last imbalanced()
+  bool plan_due_ = false;         // the owned particles changed: plan at the next evaluation
+  std::vector<double> weight_;    // the owned rows' work, from imbalanced()
   Domain<D> domain_;
   double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
   std::size_t n_fluid_global_ = 0;

@@ -6,6 +6,7 @@
 
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
+#include "sphmol/io/double_codec.hpp"
 
 namespace sphmol::parallel {
 
@@ -15,14 +16,33 @@ template <int D>
 class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-         double tolerance)
-      : comm_(comm), sys_(comm, config, whole, tolerance), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
+         double tolerance, double rebalance_threshold)
+      : comm_(comm), sys_(comm, config, whole, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
         whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
   void check(double t, double) override { health_(t, y_.data()); }
+  void rebalance(Integrator& integrator, double t) override {
+    if (!sys_.imbalanced()) return;
+    // The leapfrogs carry, beyond y, their last evaluation f (the state's length) and the XSPH
+    // correction c (the positions' length): both travel through the integrator's checkpoint state,
+    // which is restored after the integrator is started on the new share (its first evaluation
+    // there is replaced by the restored f: the steps go on bit for bit).
+    nlohmann::json js = integrator.save_state();
+    std::vector<double> f = decode_doubles(js.at("f").get<std::string>()), c;
+    std::vector<std::vector<double>*> positions;
+    if (js.contains("c")) {
+      c = decode_doubles(js.at("c").get<std::string>());
+      positions.push_back(&c);
+    }
+    sys_.repartition(t, y_, {&f}, positions);
+    js["f"] = encode_doubles(f);
+    if (js.contains("c")) js["c"] = encode_doubles(c);
+    integrator.initialize(sys_, t, y_.data());
+    integrator.restore_state(js);
+  }
   double last_good_time() const override { return health_.last_good_time(); }
   double rhs_seconds() const override { return sys_.stats().rhs_seconds; }
   double search_seconds() const override { return sys_.stats().search_seconds; }
@@ -43,8 +63,10 @@ class MpiRun final : public PartitionedRun<D> {
       if (std::find(local.begin(), local.end(), t) == local.end()) output_only.push_back(t);
     return {{"terms_at_output_times_only", output_only},
             {"ranks", comm_.size()},
-            {"decomposition", "recursive coordinate bisection by pair count (Zoltan), at the start"},
+            {"decomposition", "recursive coordinate bisection by pair count (Zoltan)"},
             {"load_imbalance", s.imbalance},
+            {"load_imbalance_last_plan", s.imbalance_seen},
+            {"repartitions", s.repartitions},
             {"halo_depth_list_radii", s.depth},
             {"halo_plans", s.plans},
             {"owned_particles", owned},
@@ -85,16 +107,17 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
 
 }  // namespace
 
-MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_tolerance)
-    : comm_(comm), tolerance_(imbalance_tolerance) {
+MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_tolerance, double rebalance_threshold)
+    : comm_(comm), tolerance_(imbalance_tolerance), rebalance_threshold_(rebalance_threshold) {
   if (!(imbalance_tolerance > 1.0)) throw std::invalid_argument("the load imbalance tolerance must be > 1");
+  if (!(rebalance_threshold >= 1.0)) throw std::invalid_argument("the rebalance threshold must be >= 1");
 }
 
 template <int D>
 std::unique_ptr<PartitionedRun<D>> MpiRunPartitioner::make(const Config& config, const SphSystem<D>& whole,
                                                            const std::vector<double>& y0) const {
   refuse_unsupported(config, whole);
-  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, tolerance_);
+  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, tolerance_, rebalance_threshold_);
 }
 
 std::unique_ptr<PartitionedRun<1>> MpiRunPartitioner::partition(const Config& c, const SphSystem<1>& w,

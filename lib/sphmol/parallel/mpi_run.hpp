@@ -11,8 +11,10 @@ namespace sphmol::parallel {
 class MpiRunPartitioner final : public RunPartitioner {
  public:
   // imbalance_tolerance (> 1): the partition's aim for the largest rank's pair work over the mean.
+  // rebalance_threshold (>= 1): the imbalance past which the particles are partitioned again
+  // (checked when the halo is planned again).
   static constexpr double default_tolerance = 1.05;
-  MpiRunPartitioner(const Communicator& comm, double imbalance_tolerance);
+  MpiRunPartitioner(const Communicator& comm, double imbalance_tolerance, double rebalance_threshold);
 
   bool root() const override { return comm_.rank() == 0; }
   std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
@@ -27,7 +29,7 @@ class MpiRunPartitioner final : public RunPartitioner {
   std::unique_ptr<PartitionedRun<D>> make(const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0) const;
 
   Communicator comm_;
-  double tolerance_;
+  double tolerance_, rebalance_threshold_;
 };
 
 }  // namespace sphmol::parallel

@@ -12,6 +12,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/time/integrator.hpp"
 #include "sphmol/time/ode_system.hpp"
 
 namespace sphmol {
@@ -28,6 +29,10 @@ class PartitionedRun {
   // Collective, after each accepted step: throws BlowUp on every rank when any rank's part fails a
   // check (the same BlowUp everywhere).
   virtual void check(double t, double h) = 0;
+  // Collective, between steps (t: the time reached): moves particles between ranks when the load
+  // has drifted out of balance, with the integrator's own state, and starts the integrator again
+  // on the new share (state() changes then).
+  virtual void rebalance(Integrator& integrator, double t) = 0;
   virtual double last_good_time() const = 0;
   // Run counters of this rank: seconds in the RHS and in its neighbour search, list rebuilds.
   virtual double rhs_seconds() const = 0;

@@ -195,6 +195,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     const double stop = std::min({times[next_out], next_cp, next_observer_time()});
     while (t < stop && !(signal = pending_signal())) {
       t = integrator->step_toward(stop);
+      if (part) part->rebalance(*integrator, t);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
     }
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
