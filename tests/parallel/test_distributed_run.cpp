@@ -2,11 +2,12 @@
 // bit for bit, on any rank count, for wall-particle scenes with both leapfrogs: the channel flows
 // (summation density: two dependent pair passes, a two-radius halo) and the dam break (continuity
 // density with dynamic wall densities in the state; particles travel far enough to re-plan the
-// halo many times). Each rank runs the serial reference itself. Unsupported settings are refused
+// halo many times). Rank 0 runs the serial reference. Unsupported settings are refused
 // with a ConfigError on every rank.
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -51,18 +52,23 @@ std::size_t differing_bits(const std::vector<double>& a, const std::vector<doubl
 Finished check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
-  const Finished serial = run(c, nullptr);
   const Finished split = run(c, &partitioner);
-  REQUIRE(serial.summary["status"] == "completed");
   CHECK(split.summary["status"] == "completed");
-  CHECK(split.summary["steps"] == serial.summary["steps"]);
-  // One evaluation more per repartition: the integrator starts again on the new share.
-  CHECK(split.summary["rhs_evals"].get<long>() ==
-        serial.summary["rhs_evals"].get<long>() + split.summary["parallel"]["repartitions"].get<long>());
-  INFO(comm.size() << " ranks, rank " << comm.rank() << ": " << split.y.size() << " state values");
-  CHECK(split.y.size() == serial.y.size());
-  CHECK(differing_bits(split.y, serial.y) == 0);
-  if (comm.rank() == 0) {  // the measurements on the gathered state are the serial ones
+  if (comm.rank() == 0) {
+    // The serial reference on rank 0 alone (every rank has the gathered state), once per config.
+    static std::map<std::string, Finished> serial_runs;
+    const std::string key = to_yaml(c);
+    if (!serial_runs.count(key)) serial_runs.emplace(key, run(c, nullptr));
+    const Finished& serial = serial_runs.at(key);
+    REQUIRE(serial.summary["status"] == "completed");
+    CHECK(split.summary["steps"] == serial.summary["steps"]);
+    // One evaluation more per repartition: the integrator starts again on the new share.
+    CHECK(split.summary["rhs_evals"].get<long>() ==
+          serial.summary["rhs_evals"].get<long>() + split.summary["parallel"]["repartitions"].get<long>());
+    INFO(comm.size() << " ranks: " << split.y.size() << " state values");
+    CHECK(split.y.size() == serial.y.size());
+    CHECK(differing_bits(split.y, serial.y) == 0);
+    // The measurements on the gathered state are the serial ones.
     nlohmann::json a = split.summary["final_errors"], b = serial.summary["final_errors"];
     for (const auto& k : output_only) {
       CHECK(a.contains(k));
@@ -79,30 +85,30 @@ Finished check_same_as_serial(const Config& c, const std::vector<std::string>& o
 
 TEST_CASE("distributed run: Poiseuille with the leapfrog equals the serial run bit for bit", "[parallel][run]") {
   check_same_as_serial(load_config(verification("poiseuille.yaml"),
-                                   {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.05",
-                                    "output.times=[0.02,0.05]", "output.plots=false"}));
+                                   {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.03",
+                                    "output.times=[0.01,0.03]", "output.plots=false"}));
 }
 
 TEST_CASE("distributed run: Couette with the kick-drift-kick leapfrog equals the serial run bit for bit", "[parallel][run]") {
   check_same_as_serial(load_config(verification("couette.yaml"),
-                                   {"discretization.particles_across=20", "time.integrator=leapfrog_kdk", "time.t_end=0.05",
-                                    "output.times=[0.05]", "output.plots=false"}));
+                                   {"discretization.particles_across=20", "time.integrator=leapfrog_kdk", "time.t_end=0.03",
+                                    "output.times=[0.03]", "output.plots=false"}));
 }
 
 TEST_CASE("distributed run: the dam break equals the serial run bit for bit, through many halo plans", "[parallel][run]") {
-  const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.2",
-                                                                "output.times=[0.1,0.2]", "output.plots=false"});
+  const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.12",
+                                                                "output.times=[0.06,0.12]", "output.plots=false"});
   const std::vector<std::string> monitored{"min_wall_gap", "wall_penetrations"};
   SECTION("one partition") {
     const Finished split = check_same_as_serial(c, monitored);
     // The particles moved: the halo was planned again (with a new local system) during the run.
-    CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 5);
+    CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 3);
     CHECK(split.summary["parallel"]["halo_depth_list_radii"] == 1);
     CHECK(split.summary["parallel"]["terms_at_output_times_only"] == nlohmann::json::array({"wall_penetration_monitor"}));
   }
   SECTION("partitioned again at every re-plan, the particles migrating with the leapfrog's state") {
     const Finished split = check_same_as_serial(c, monitored, 1.0);
-    if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 5);
+    if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 3);
   }
 }
 
