@@ -66,8 +66,12 @@ int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd, const 
       return code;
     }
     if (s["status"] == "blown_up") {
-      std::cerr << "sph-mol: run " << s["blow_up"]["message"].get<std::string>() << "; last good state (t = "
-                << s["blow_up"]["last_good_t"].get<double>() << " s) in " << dir << "/last_good_state.csv\n";
+      const auto& b = s["blow_up"];
+      std::cerr << "sph-mol: run " << b["message"].get<std::string>() << "; last good state (t = "
+                << b["last_good_t"].get<double>() << " s)";
+      // A run over ranks writes no state file (docs/parallel.md).
+      if (b.contains("state_file")) std::cerr << " in " << dir << "/" << b["state_file"].get<std::string>();
+      std::cerr << '\n';
       return 3;  // distinct from config errors (2) and failures (1)
     }
     std::cout << "case " << s["case"].get<std::string>() << ": " << s["particles"]["fluid"] << " fluid + "
@@ -124,21 +128,32 @@ int main(int argc, char** argv) {
       std::cerr << "sph-mol: warning: --threads " << cmd.threads << " is more than the " << omp_get_num_procs()
                 << " cores of this machine\n";
     if (cmd.threads > 0) omp_set_num_threads(cmd.threads);
-    for (auto& s : sphmol::app::subcommands())
-      if (app.got_subcommand(s.name)) return s.run();
 #ifdef SPHMOL_HAVE_MPI
     // Started by mpirun with several ranks: the run is split over them. One rank runs serially.
     sphmol::parallel::MpiEnvironment mpi(argc, argv);
     const sphmol::parallel::Communicator world;
-    std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
-    if (world.size() > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
+    const int ranks = world.size();
+    const bool root = world.rank() == 0;
+#else
+    const int ranks = 1;
+    const bool root = true;
+#endif
+    for (auto& s : sphmol::app::subcommands())
+      if (app.got_subcommand(s.name)) {
+        if (ranks > 1) {  // each rank would run the whole study, into the same files
+          if (root) std::cerr << "sph-mol: `" << s.name << "` does not run over several MPI ranks; run it without mpirun\n";
+          return 2;
+        }
+        return s.run();
+      }
     std::ostringstream elsewhere;  // every rank reads the config alike: rank 0 tells
-    const auto config = sphmol::app::resolve_run_config(app, cmd, world.rank() == 0 ? static_cast<std::ostream&>(std::cerr) : elsewhere);
+    const auto config = sphmol::app::resolve_run_config(app, cmd, root ? static_cast<std::ostream&>(std::cerr) : elsewhere);
     if (!config) return 2;
+#ifdef SPHMOL_HAVE_MPI
+    std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
+    if (ranks > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
     return run(*config, cmd, partitioner ? &*partitioner : nullptr);
 #else
-    const auto config = sphmol::app::resolve_run_config(app, cmd, std::cerr);
-    if (!config) return 2;
     return run(*config, cmd, nullptr);
 #endif
   } catch (const std::bad_alloc&) {

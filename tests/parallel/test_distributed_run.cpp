@@ -134,3 +134,25 @@ TEST_CASE("distributed run: a 3D tank equals the serial run bit for bit", "[para
                                     "output.plots=false"}),
                        {"max_drift", "drift_creep", "drift_creep_since"});
 }
+
+TEST_CASE("distributed run: a blow-up ends the run on every rank with one message", "[parallel][run]") {
+  // A fixed step far above the acoustic limit: the dam break's particles leave the tank within a
+  // few steps; every rank must stop at the same step with the same cause.
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.5",
+                                                                "time.dt=0.002", "output.times=[0.5]",
+                                                                "output.plots=false"});
+  const Finished split = run(c, &partitioner);
+  REQUIRE(split.summary["status"] == "blown_up");
+  const std::string message = split.summary["blow_up"]["message"].get<std::string>();
+  const std::vector<char> all = comm.all_gather_v(std::vector<char>(message.begin(), message.end()));
+  const std::vector<int> lengths = comm.all_gather(static_cast<int>(message.size()));
+  std::size_t at = 0;
+  for (int r = 0; r < comm.size(); ++r) {
+    CHECK(std::string(all.begin() + static_cast<long>(at), all.begin() + static_cast<long>(at) + lengths[r]) == message);
+    at += static_cast<std::size_t>(lengths[r]);
+  }
+  CHECK(split.summary["steps"].get<long>() > 0);
+  CHECK(!split.summary["blow_up"].contains("state_file"));
+}

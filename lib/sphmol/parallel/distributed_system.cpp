@@ -269,6 +269,8 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   const std::size_t no = owned_.size();
   const StateLayout<D>& L = layout_;
   std::vector<StateRecord<D>> rec(no);
+  // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
+#pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o) {
     for (int d = 0; d < D; ++d) {
       rec[o][d] = y[L.position(d) + o];
@@ -293,7 +295,9 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
       y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
     }
   };
+#pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec[o]);
+#pragma omp parallel for schedule(static)
   for (std::size_t q = 0; q < hrec.size(); ++q) put(halo_at_[q], hrec[q]);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
@@ -302,6 +306,7 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
   const double t_reduce = omp_get_wtime();
   const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);  // position, velocity and density blocks
+#pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];
     for (std::size_t b = 0; b < blocks; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
@@ -314,6 +319,8 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   const std::vector<double>& hs = local_->smoothing_lengths();
   const auto& v = local_->velocities();
   double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = local_->smoothing_length();
+  // Minima and maxima: the same for any thread count.
+#pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];
     double v2 = 0.0, a2 = 0.0;

@@ -1,0 +1,43 @@
+# `sph-mol` itself under mpirun (cmake -P, from tests/CMakeLists.txt): the dam break on 1 rank and
+# on 3 ranks writes the same files byte for byte (VTK particles, the front positions), rank 0 alone
+# prints the summary, a setting a run over ranks does not support ends every rank with exit code 2,
+# and so does a subcommand. Inputs: SPHMOL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR,
+# WORK_DIR.
+string(REPLACE "," ";" FLAGS "${FLAGS}")
+file(REMOVE_RECURSE ${WORK_DIR})
+set(sets --set discretization.spacing=0.04 --set time.t_end=0.06 --set output.times=[0.03,0.06]
+         --set output.plots=false --set output.vtk=true --quiet)
+set(dam ${SOURCE_DIR}/verification/dam_break.yaml)
+foreach(n 1 3)
+  execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} ${n} ${FLAGS} ${SPHMOL} --config ${dam} ${sets} --output ${WORK_DIR}/n${n}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${n} ranks: exit ${rc}\n${out}\n${err}")
+  endif()
+  string(REGEX MATCHALL "case dam_break:" lines "${out}")
+  list(LENGTH lines printed)
+  if(NOT printed EQUAL 1)
+    message(FATAL_ERROR "${n} ranks: the summary was printed ${printed} times\n${out}")
+  endif()
+endforeach()
+foreach(f fluid_0001.vtp fluid_0002.vtp walls_0002.vtp front.csv)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/${f} ${WORK_DIR}/n3/${f} RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "${f} differs between 1 and 3 ranks")
+  endif()
+endforeach()
+
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --config ${SOURCE_DIR}/verification/poiseuille.yaml
+                        --set time.t_end=0.01 --set output.times=[0.01] --output ${WORK_DIR}/refused
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "not available in a run over several MPI ranks yet: time.integrator: 'leapfrog_imex'")
+  message(FATAL_ERROR "leapfrog_imex over 2 ranks: exit ${rc}, expected 2 and a config error\n${err}")
+endif()
+if(EXISTS ${WORK_DIR}/refused)
+  message(FATAL_ERROR "a refused run wrote ${WORK_DIR}/refused")
+endif()
+
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} kernels RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "does not run over several MPI ranks")
+  message(FATAL_ERROR "a subcommand over 2 ranks: exit ${rc}, expected 2\n${err}")
+endif()
