@@ -129,11 +129,14 @@ int main(int argc, char** argv) {
                 << " cores of this machine\n";
     if (cmd.threads > 0) omp_set_num_threads(cmd.threads);
 #ifdef SPHMOL_HAVE_MPI
-    // Started by mpirun with several ranks: the run is split over them. One rank runs serially.
-    sphmol::parallel::MpiEnvironment mpi(argc, argv);
-    const sphmol::parallel::Communicator world;
-    const int ranks = world.size();
-    const bool root = world.rank() == 0;
+    // Started by mpirun with several ranks: the run is split over them. One rank runs serially,
+    // and without mpirun MPI is not started at all.
+    std::optional<sphmol::parallel::MpiEnvironment> mpi;
+    if (sphmol::parallel::MpiEnvironment::launched()) mpi.emplace(argc, argv);
+    std::optional<sphmol::parallel::Communicator> world;
+    if (mpi) world.emplace();
+    const int ranks = world ? world->size() : 1;
+    const bool root = !world || world->rank() == 0;
 #else
     const int ranks = 1;
     const bool root = true;
@@ -151,7 +154,7 @@ int main(int argc, char** argv) {
     if (!config) return 2;
 #ifdef SPHMOL_HAVE_MPI
     std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
-    if (ranks > 1) partitioner.emplace(world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
+    if (ranks > 1) partitioner.emplace(*world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
     return run(*config, cmd, partitioner ? &*partitioner : nullptr);
 #else
     return run(*config, cmd, nullptr);

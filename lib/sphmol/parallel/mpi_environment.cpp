@@ -1,5 +1,6 @@
 #include "sphmol/parallel/mpi_environment.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace sphmol::parallel {
@@ -16,6 +17,12 @@ MpiEnvironment::MpiEnvironment(int& argc, char**& argv) {
     MPI_Finalize();
     throw std::runtime_error("the MPI library does not support MPI_THREAD_FUNNELED");
   }
+}
+
+bool MpiEnvironment::launched() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
 }
 
 MpiEnvironment::~MpiEnvironment() {

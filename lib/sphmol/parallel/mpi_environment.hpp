@@ -9,6 +9,11 @@ namespace sphmol::parallel {
 class MpiEnvironment {
  public:
   MpiEnvironment(int& argc, char**& argv);
+  // True when an MPI launcher started this process (mpirun/mpiexec of Open MPI, MPICH's Hydra, or a
+  // PMIx launcher such as srun): its environment says so. A program that may also run on its own
+  // starts MPI only then, since a stand-alone MPI_Init needs the MPI runtime (Open MPI spawns a
+  // daemon for it) where a serial run needs none.
+  static bool launched();
   ~MpiEnvironment();
   MpiEnvironment(const MpiEnvironment&) = delete;
   MpiEnvironment& operator=(const MpiEnvironment&) = delete;
