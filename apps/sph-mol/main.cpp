@@ -17,6 +17,7 @@
 #include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/openmp_wait_policy.hpp"
 #include "sphmol/run/output_folder.hpp"
+#include "sphmol/run/partitioned_run.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "command_line.hpp"
 #include "subcommand.hpp"
