@@ -65,6 +65,37 @@ void DamBreakStep(benchmark::State& state) {
 }
 BENCHMARK(DamBreakStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 
+// Symmetric pair evaluation against full rows (rhs/fused_pair_pass.hpp) in one run: after 200 steps of
+// collapse, blocks of 20 steps alternate between the two (the states agree bit for bit, so both see
+// the same flow). Argument: threads. Reports µs per particle-step of each and full / symmetric.
+void DamBreakSymmetric(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  omp_set_num_threads(threads);
+  DamBreak run(sphmol::load_config(dam_break_yaml()));
+  const double never = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 200; ++k) run.integrator->step_toward(never);
+  std::array<double, 2> wall{};  // [symmetric]
+  std::array<long, 2> steps{};
+  for (auto _ : state) {
+    for (int k = 0; k < 40; ++k) {
+      const int sym = k % 2;
+      run.sys->set_symmetric_pairs(sym == 1);
+      const double start = omp_get_wtime();
+      for (int s = 0; s < 20; ++s) run.integrator->step_toward(never);
+      wall[static_cast<std::size_t>(sym)] += omp_get_wtime() - start;
+      steps[static_cast<std::size_t>(sym)] += 20;
+    }
+  }
+  run.sys->set_symmetric_pairs(true);
+  const double particles = static_cast<double>(run.sys->particles().size());
+  auto us = [&](int k) { return 1e6 * wall[static_cast<std::size_t>(k)] / (static_cast<double>(steps[static_cast<std::size_t>(k)]) * particles); };
+  state.counters["us_full"] = us(0);
+  state.counters["us_symmetric"] = us(1);
+  state.counters["full_vs_symmetric"] = us(0) / us(1);
+  omp_set_num_threads(1);
+}
+BENCHMARK(DamBreakSymmetric)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
 // The run of dam_break.yaml from t = 0 to t_end_ms / 1000 s (1000: the whole run) once, in blocks
 // of `block` steps that alternate between 1 and 2 threads. Results do not depend on the thread count
 // (tests/integration/test_determinism.cpp), so this is the shipped run; and since both thread counts

@@ -8,12 +8,20 @@
 // stored list bit for bit: the same pairs, in the same order, with the same arithmetic. Where every
 // term of the pass adds nothing for a pair beyond the support, the rows also keep the Verlet list's
 // skin pairs (W = F = 0) and the kernel pass skips compacting them away; the sums are unchanged.
+// Symmetric evaluation: when the fluid rows have one term with a symmetric form
+// (PairTerm::pair_record_size; the weakly compressible row), every fluid pair is evaluated once,
+// kernel included, in the row of its smaller index, into a record that both rows then sum in their
+// own order (neighbors/pair_twins.hpp): half the kernel evaluations and half the pair arithmetic,
+// for one more barrier and the records' memory traffic. The sums are the same numbers added in the
+// same order, so results equal the full rows' bit for bit, for any thread count.
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <omp.h>
 #include <string>
 #include <vector>
 
+#include "sphmol/neighbors/pair_twins.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 #include "sphmol/rhs/row_schedule.hpp"
@@ -33,7 +41,16 @@ class FusedPairPass final : public Term<D> {
       compact_fluid_ = compact_fluid_ || (t->rows() != PairRows::dynamic_walls && !t->zero_beyond_support());
       compact_walls_ = compact_walls_ || (t->rows() != PairRows::fluid && !t->zero_beyond_support());
     }
+    symmetric_form_ = fluid_.size() == 1 && fluid_[0]->rows() == PairRows::fluid && fluid_[0]->pair_record_size() > 0 &&
+                      !compact_fluid_;
   }
+  // Whether the pass may evaluate fluid pairs once (above); on by default where the terms allow it.
+  // Off: every row in full (for comparisons; the results are the same).
+  bool has_symmetric_form() const { return symmetric_form_; }
+  void set_symmetric(bool on) { symmetric_ = on; }
+  // Evaluations that ran symmetrically (each also needs one mass for all particles and a symmetric
+  // Verlet list at that evaluation).
+  long symmetric_evaluations() const { return symmetric_evaluations_; }
   // Whether fluid rows / wall rows are compacted to the active pairs (false: every term of those rows
   // takes the skin pairs, PairTerm::zero_beyond_support).
   bool compacts_fluid_rows() const { return compact_fluid_; }
@@ -62,9 +79,22 @@ class FusedPairPass final : public Term<D> {
       schedule_.reset(threads, 2);
       schedule_.place(0, verlet.offset.data(), 0, nf);
       schedule_.place(1, verlet.offset.data(), nf, wall_hi);
+      if (symmetric_form_ && symmetric_) {
+        ++epoch_;
+        twins_stale_ = twins_list_ != &verlet || twins_rebuilds_ != w.verlet_rebuilds ||
+                       twins_entries_ != verlet.pairs() || twins_.rows() != nf;
+      }
     }  // the barrier of `single`: every thread sees the schedule
     for (const auto& t : terms_)
       if (t->prepares_in_team()) t->prepare(w);  // each ends with a barrier
+    // Every thread takes the same branch: what it reads was written before a barrier.
+    if (symmetric_form_ && symmetric_ && kernel_->uniform_h() && fluid_[0]->pair_records_now()) {
+      if (twins_stale_) make_twins(w);
+      if (twins_.complete) {
+        symmetric_rows(w);
+        return;
+      }
+    }
     {
       const int thread = omp_get_thread_num();
       const double start = omp_get_wtime();
@@ -78,11 +108,7 @@ class FusedPairPass final : public Term<D> {
             for (const auto* t : fluid_) t->row(w, i, row);
           }
         } else {
-          for (std::size_t i = i0; i < i1; ++i) {
-            const PairRow<D> row = buf.row(kernel_->fill_row(verlet, i, buf, compact_walls_));
-            for (const auto* t : walls_)
-              if (i < row_range(t->rows(), w).second) t->row(w, i, row);
-          }
+          wall_rows(w, buf, i0, i1);
         }
       });
       w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
@@ -91,6 +117,115 @@ class FusedPairPass final : public Term<D> {
   }
 
  private:
+  void wall_rows(Workspace<D>& w, RowBuffer<D>& buf, std::size_t i0, std::size_t i1) const {
+    for (std::size_t i = i0; i < i1; ++i) {
+      const PairRow<D> row = buf.row(kernel_->fill_row(*w.verlet, i, buf, compact_walls_));
+      for (const auto* t : walls_)
+        if (i < row_range(t->rows(), w).second) t->row(w, i, row);
+    }
+  }
+
+  // By every thread: the twin tables for this evaluation's Verlet list (it was rebuilt since they
+  // were made) and the records sized for them.
+  void make_twins(const Workspace<D>& w) const {
+    const PairList& verlet = *w.verlet;
+    const std::size_t nf = w.n_fluid;
+#pragma omp single
+    twins_.size(nf, verlet.pairs());
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < nf; ++i) twins_.find_upper(verlet, i);
+#pragma omp single
+    {
+      twins_.place_records(verlet);
+      twin_blocks_ = twins_.size_blocks(RowSchedule::kChunk);
+      twins_complete_.store(true, std::memory_order_relaxed);
+    }
+#pragma omp for schedule(static) nowait
+    for (std::size_t b = 0; b < twin_blocks_; ++b) twins_.find_block_deps(verlet, RowSchedule::kChunk, b);
+    bool found = true;
+#pragma omp for schedule(static) nowait
+    for (std::size_t i = 0; i < nf; ++i) found = twins_.find_twins(verlet, i) && found;
+    if (!found) twins_complete_.store(false, std::memory_order_relaxed);
+#pragma omp barrier
+#pragma omp single
+    {
+      twins_.complete = twins_complete_.load(std::memory_order_relaxed);
+      twins_list_ = &verlet;
+      twins_rebuilds_ = w.verlet_rebuilds;
+      twins_entries_ = verlet.pairs();
+      twins_stale_ = false;
+      records_.resize(twins_.records() * fluid_[0]->pair_record_size());
+      const std::size_t blocks = (nf + RowSchedule::kChunk - 1) / RowSchedule::kChunk;
+      if (ready_blocks_ < blocks) {
+        ready_ = std::make_unique<std::atomic<std::uint64_t>[]>(blocks);  // value-initialised: 0, no epoch
+        ready_blocks_ = blocks;
+      }
+    }
+  }
+
+  // Rows in chunks, each chunk in two sweeps: (A) the upper part of each of its rows into that row's
+  // records, then the chunk marked ready for this evaluation; (B) each of its rows summed from
+  // records: its own upper ones, just written, and for its lower part those of rows of smaller index,
+  // written moments before in the same thread's ascending range (so records are read while still in
+  // cache). A row whose lower part meets a chunk that is not ready yet (another thread's range, not
+  // reached) evaluates its lower pairs directly instead: the same numbers, so results do not depend on
+  // which happened. Readiness is kept per aligned block of RowSchedule::kChunk rows (the schedule
+  // cuts at multiples of it), checked once per block a row's sorted lower part enters. Wall rows read
+  // no record and run as in full rows. Called by every thread.
+  void symmetric_rows(Workspace<D>& w) const {
+    constexpr std::size_t C = RowSchedule::kChunk;
+    const PairList& verlet = *w.verlet;
+    const PairTerm<D>* const term = fluid_[0];
+    const std::size_t R = term->pair_record_size();
+    const std::uint32_t* const off = verlet.offset.data();
+    const std::uint32_t* const vj = verlet.j.data();
+    const std::uint32_t* const up = twins_.upper.data();
+    const std::uint32_t* const rec = twins_.record.data();
+    const std::uint32_t* const twin = twins_.twin.data();
+    const std::uint32_t* const n_deps = twins_.n_deps.data();
+    const std::uint32_t* const deps = twins_.deps.data();
+    double* const records = records_.data();
+    std::atomic<std::uint64_t>* const ready = ready_.get();
+    const std::uint64_t epoch = epoch_;
+    const int thread = omp_get_thread_num();
+    const double start = omp_get_wtime();
+    RowBuffer<D>& buf = buffers_[static_cast<std::size_t>(thread)];
+    if (thread == 0) ++symmetric_evaluations_;
+    schedule_.run(thread, [&, off, vj, up, rec, twin, n_deps, deps, records, ready, epoch, R, term](int set, std::size_t i0, std::size_t i1) {
+      if (set != 0) return wall_rows(w, buf, i0, i1);
+      for (std::size_t i = i0; i < i1; ++i)
+        term->pair_records(w, i, vj + up[i], off[i + 1] - up[i], *kernel_, records + static_cast<std::size_t>(rec[i]) * R);
+      // A chunk is one aligned block (or the set's last, shorter one); any other chunk marks nothing
+      // and checks every row.
+      const bool aligned = i0 % C == 0;
+      bool block_ready = aligned;
+      if (aligned) {
+        const std::size_t b = i0 / C;
+        ready[b].store(epoch, std::memory_order_release);
+        block_ready = n_deps[b] != PairTwins::kNoDeps;
+        for (std::uint32_t k = 0; block_ready && k < n_deps[b]; ++k)
+          block_ready = ready[deps[b * PairTwins::kMaxDeps + k]].load(std::memory_order_relaxed) == epoch;
+      }
+      for (std::size_t i = i0; i < i1; ++i) {
+        bool all = block_ready;
+        if (!all) {
+          all = true;
+          for (std::uint32_t q = off[i], e = up[i]; q < e && all; ++q) {
+            const std::size_t b = vj[q] / C;
+            all = (aligned && b == i0 / C) || ready[b].load(std::memory_order_relaxed) == epoch;
+          }
+        }
+        std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
+        PairRow<D> lower;
+        if (!all) lower = buf.row(kernel_->fill_segment(verlet, i, off[i], up[i], buf));
+        term->sum_pair_records(w, i, all ? nullptr : &lower, twin + off[i], up[i] - off[i],
+                               records + static_cast<std::size_t>(rec[i]) * R, off[i + 1] - up[i], records);
+      }
+    });
+    w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
+#pragma omp barrier
+  }
+
   KernelPass<D>* kernel_;  // owned by the system, which owns this pass too
   std::vector<std::unique_ptr<PairTerm<D>>> terms_;
   std::vector<const PairTerm<D>*> fluid_, walls_;  // the terms with fluid rows, with wall rows
@@ -98,6 +233,19 @@ class FusedPairPass final : public Term<D> {
   bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
   mutable RowSchedule schedule_;
+  bool symmetric_form_ = false, symmetric_ = true;
+  // Per aligned block of RowSchedule::kChunk fluid rows: the epoch its records were last written in.
+  mutable std::unique_ptr<std::atomic<std::uint64_t>[]> ready_;
+  mutable std::size_t ready_blocks_ = 0, twin_blocks_ = 0;
+  mutable std::uint64_t epoch_ = 0;  // evaluations of the pass (0: none; rows start unready)
+  mutable PairTwins twins_;
+  mutable std::atomic<bool> twins_complete_{false};
+  mutable bool twins_stale_ = true;
+  mutable const PairList* twins_list_ = nullptr;  // the list the twins were made for, at its rebuild count
+  mutable long twins_rebuilds_ = -1;
+  mutable std::size_t twins_entries_ = 0;
+  mutable std::vector<double> records_;
+  mutable long symmetric_evaluations_ = 0;
 };
 
 }  // namespace sphmol

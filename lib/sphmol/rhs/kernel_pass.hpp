@@ -14,26 +14,6 @@
 
 namespace sphmol {
 
-template <int D>
-class KernelPass {
- public:
-  virtual ~KernelPass() = default;
-  virtual std::string_view kernel_name() const = 0;
-  virtual double support() const = 0;  // in units of h
-  virtual double value_at_zero(double h) const = 0;
-  // Per-evaluation constants (h, periods, positions); call before fill_row, once per evaluation.
-  virtual void prepare(const Workspace<D>& w) = 0;
-  // The whole active list into w.pairs (and dx, W, F, vfac): prepares itself.
-  virtual void apply(const PairList& verlet, Workspace<D>& w) = 0;
-  // Row i only, into a per-thread buffer; returns the number of pairs in it. Thread-safe after prepare.
-  // With compact = false the row keeps every Verlet pair, skin pairs with W = F = 0 included (for
-  // terms that add nothing for them, PairTerm::zero_beyond_support; every kernel is exactly zero
-  // beyond its support, tested), and the compaction stage is skipped.
-  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact) const = 0;
-  // Number of active pairs in the Verlet list at the workspace's positions (prepares itself).
-  virtual std::size_t count_active(const PairList& verlet, const Workspace<D>& w) = 0;
-};
-
 // Separation x_i - x_j with the minimum image, from the workspace positions.
 template <int D>
 struct PairGeometry {
@@ -62,6 +42,37 @@ struct PairGeometry {
   }
 };
 
+template <int D>
+class KernelPass {
+ public:
+  virtual ~KernelPass() = default;
+  virtual std::string_view kernel_name() const = 0;
+  virtual double support() const = 0;  // in units of h
+  virtual double value_at_zero(double h) const = 0;
+  // Per-evaluation constants (h, periods, positions); call before fill_row, once per evaluation.
+  virtual void prepare(const Workspace<D>& w) = 0;
+  // The whole active list into w.pairs (and dx, W, F, vfac): prepares itself.
+  virtual void apply(const PairList& verlet, Workspace<D>& w) = 0;
+  // Row i only, into a per-thread buffer; returns the number of pairs in it. Thread-safe after prepare.
+  // With compact = false the row keeps every Verlet pair, skin pairs with W = F = 0 included (for
+  // terms that add nothing for them, PairTerm::zero_beyond_support; every kernel is exactly zero
+  // beyond its support, tested), and the compaction stage is skipped.
+  virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact) const = 0;
+  // The Verlet entries [q0, q1) of row i only, every one kept (skin pairs with W = F = 0), into a
+  // per-thread buffer; returns q1 - q0. For symmetric pair passes (rhs/symmetric_pairs.hpp), which
+  // evaluate a pair once, in the row of its lower index. Thread-safe after prepare.
+  virtual std::uint32_t fill_segment(const PairList& verlet, std::size_t i, std::uint32_t q0, std::uint32_t q1,
+                                     RowBuffer<D>& out) const = 0;
+  // F_k = (dW/dr)/r at separations r2[k], k < n, for a constant h (the separations' geometry is
+  // geometry()): the same numbers fill_row gives a pair at that r2. For terms that evaluate their
+  // pairs themselves (PairTerm::pair_records). False from a pass whose F depends on the pair (variable h).
+  virtual bool uniform_h() const { return false; }
+  virtual void gradient_factors(const double* r2, double* F, std::uint32_t n) const {}
+  virtual const PairGeometry<D>& geometry() const = 0;
+  // Number of active pairs in the Verlet list at the workspace's positions (prepares itself).
+  virtual std::size_t count_active(const PairList& verlet, const Workspace<D>& w) = 0;
+};
+
 // Both ways of running a kernel pass over the Verlet list, for a Derived that says which pairs are
 // active and evaluates W and F for one (active(i, j, r2), eval(i, j, r2, W, F), using geometry_):
 // apply() compacts the whole list, fill_row() one row. Rows run in parallel in apply(): a first pass
@@ -73,6 +84,7 @@ class KernelPassRows : public KernelPass<D> {
  public:
   std::string_view kernel_name() const override { return K::name; }
   double support() const override { return K::support; }
+  const PairGeometry<D>& geometry() const final { return geometry_; }
   double value_at_zero(double h) const override { return K::W(0.0, h); }
 
   void apply(const PairList& verlet, Workspace<D>& w) final {
@@ -110,6 +122,14 @@ class KernelPassRows : public KernelPass<D> {
     out.reserve(n);
     return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, compact)
                               : staged<false>(verlet.j.data() + q0, n, i, out, compact);
+  }
+
+  std::uint32_t fill_segment(const PairList& verlet, std::size_t i, std::uint32_t q0, std::uint32_t q1,
+                             RowBuffer<D>& out) const final {
+    const std::uint32_t n = q1 - q0;
+    out.reserve(n);
+    return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, false)
+                              : staged<false>(verlet.j.data() + q0, n, i, out, false);
   }
 
  protected:
@@ -210,6 +230,14 @@ class KernelPassFor final : public KernelPassRows<D, K, KernelPassFor<D, K>> {
     rc2_ = K::support * w.h * K::support * w.h;
     w_scale_ = 1.0 / h_power<D>(w.h);
     f_scale_ = w_scale_ * inv_h_ * inv_h_;  // F = (dW/dr)/r scales as h^-(D+2)
+  }
+  bool uniform_h() const override { return true; }
+  void gradient_factors(const double* __restrict r2, double* __restrict F, std::uint32_t n) const override {
+    for (std::uint32_t k = 0; k < n; ++k) {
+      double wv, f;
+      kernel_unit_over_r<K>(std::sqrt(r2[k]) * inv_h_, wv, f);
+      F[k] = f * f_scale_;
+    }
   }
   bool active(std::size_t, std::uint32_t, double r2) const { return r2 < rc2_; }
   void eval(std::size_t, std::uint32_t, double r2, double& W, double& F) const {

@@ -7,6 +7,7 @@
 #include <omp.h>
 #include <utility>
 
+#include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/pair_row.hpp"
 #include "sphmol/rhs/row_schedule.hpp"
 #include "sphmol/rhs/term.hpp"
@@ -46,6 +47,27 @@ class PairTerm : public Term<D> {
   // Term::runs_in_team), which lets a fused pass run inside the system's region.
   virtual bool prepares_in_team() const { return false; }
   virtual void row(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const = 0;
+
+  // Symmetric form (optional; rhs/fused_pair_pass.hpp, neighbors/pair_twins.hpp): the term's result
+  // for a pair i-j follows from one record of numbers computed once for the pair, so a fused pass may
+  // evaluate each fluid pair once instead of twice. The record must give exactly the numbers row()
+  // adds for either direction, and the sums must run in row() order, so both forms agree bit for bit.
+  // Doubles per record; 0: no symmetric form.
+  virtual std::size_t pair_record_size() const { return 0; }
+  // Whether this evaluation may use the records (read after prepare()'s barrier).
+  virtual bool pair_records_now() const { return false; }
+  // The records of fluid row i's upper part (its n Verlet entries j[k] > i, in order, skin pairs
+  // included, whose F is 0), into rec[k * pair_record_size()]: the term forms the separations with
+  // kernel.geometry() and F with kernel.gradient_factors (a kernel pass with uniform_h()), in blocks,
+  // so that no per-pair buffer is written and read back between the kernel and the term.
+  virtual void pair_records(Workspace<D>&, std::size_t, const std::uint32_t*, std::uint32_t, const KernelPass<D>&,
+                            double*) const {}
+  // Fluid row i from records: its n_lower lower pairs through twin[k] (record indices into `all`), or,
+  // when `lower` is given, evaluated directly from that row of them (their records were not ready),
+  // then its n_upper own records `upper`, in row order.
+  virtual void sum_pair_records(Workspace<D>&, std::size_t, const PairRow<D>* /*lower*/, const std::uint32_t* /*twin*/,
+                                std::uint32_t /*n_lower*/, const double* /*upper*/, std::uint32_t /*n_upper*/,
+                                const double* /*all*/) const {}
 };
 
 template <int D, class Derived>

@@ -54,7 +54,9 @@ class RowSchedule {
           if (cost(mid) < target) a = mid + 1;
           else b = mid;
         }
-        to = a;
+        // Cut at a multiple of kChunk, so that every chunk of a set that starts at row 0 is one
+        // aligned block of rows (symmetric pair passes mark readiness per block).
+        to = std::max(from, a / kChunk * kChunk);
       }
       c[t].next.store(from, std::memory_order_relaxed);
       c[t].end = to;

@@ -143,6 +143,20 @@ std::vector<bool> SphSystem<D>::pair_passes_keep_skin_pairs() const {
 }
 
 template <int D>
+void SphSystem<D>::set_symmetric_pairs(bool on) {
+  for (auto& t : terms_)
+    if (auto* f = dynamic_cast<FusedPairPass<D>*>(t.get())) f->set_symmetric(on);
+}
+
+template <int D>
+long SphSystem<D>::symmetric_evaluations() const {
+  long most = 0;
+  for (const auto& t : terms_)
+    if (const auto* f = dynamic_cast<const FusedPairPass<D>*>(t.get())) most = std::max(most, f->symmetric_evaluations());
+  return most;
+}
+
+template <int D>
 std::vector<std::vector<std::string>> SphSystem<D>::pair_passes() const {
   std::vector<std::vector<std::string>> passes;
   for (const auto& t : terms_)
@@ -269,6 +283,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   pairs_->update(in);
   search_seconds_ += omp_get_wtime() - t_search;
   ws_.verlet = &pairs_->pairs();
+  ws_.verlet_rebuilds = pairs_->rebuilds();
   if (stored_pairs_) kernel_->apply(pairs_->pairs(), ws_);
   // Rows of the implicit operator never hold more entries than the Verlet list's rows.
   if (record_) record_->begin(nf, D, pairs_->pairs().offset.data(), ord);

@@ -109,6 +109,11 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // Per fused pass: true when its rows keep the skin pairs instead of being compacted to the active
   // pairs (every term of the pass adds nothing for W = F = 0, PairTerm::zero_beyond_support).
   std::vector<bool> pair_passes_keep_skin_pairs() const;
+  // Symmetric fused passes (rhs/fused_pair_pass.hpp): each fluid pair evaluated once where the terms
+  // allow it (the default). Off evaluates every row in full, with the same results; for comparisons.
+  void set_symmetric_pairs(bool on);
+  // Evaluations in which some fused pass ran symmetrically.
+  long symmetric_evaluations() const;
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
   bool has_generator() const { return generator_ != nullptr; }
   // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.

@@ -25,6 +25,7 @@ struct Workspace {
   // per-particle data needs it.
   const std::uint32_t* order = nullptr;
   const PairList* verlet = nullptr;  // the Verlet list (with skin) of this evaluation
+  long verlet_rebuilds = 0;           // how often that list has been rebuilt: tables made from it are current while this holds
   // Wall normals at this evaluation's time, per workspace index: set by SphSystem when walls turn
   // (core/wall_motion.hpp); null: the particles' own normals (walls that do not turn).
   std::array<const double*, D> wall_normal{};
