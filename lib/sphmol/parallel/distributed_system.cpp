@@ -357,6 +357,15 @@ typename DistributedSystem<D>::Stats DistributedSystem<D>::stats() const {
 }
 
 template <int D>
+std::pair<std::uint64_t, std::uint64_t> DistributedSystem<D>::pair_work() const {
+  if (!local_) return {0, 0};
+  const PairList& rows = local_->pair_list().pairs();
+  std::uint64_t owned = 0;
+  for (const std::uint32_t k : owned_at_) owned += rows.offset[k + 1] - rows.offset[k];
+  return {owned, rows.pairs() - owned};
+}
+
+template <int D>
 double DistributedSystem<D>::owned_density(std::size_t o) const {
   return local_ ? local_->density()[owned_at_[o]] : owned_.rho[o];
 }

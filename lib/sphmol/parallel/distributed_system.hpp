@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sphmol/config/config.hpp"
@@ -95,6 +96,9 @@ class DistributedSystem final : public OdeSystem {
     long repartitions = 0;          // partitions after the first
   };
   Stats stats() const;
+  // Pairs in the rows of the current local neighbour list: the owned rows' (this rank's share of
+  // the pair work) and the halo rows' (computed only for the values the owned rows read there).
+  std::pair<std::uint64_t, std::uint64_t> pair_work() const;
 
  private:
   // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.

@@ -55,6 +55,9 @@ class MpiRun final : public PartitionedRun<D> {
     const auto halo = comm_.all_gather(static_cast<std::uint64_t>(s.halo_max));
     const auto exchange = comm_.all_gather(s.exchange_seconds);
     const auto rhs = comm_.all_gather(s.rhs_seconds);
+    const auto [own_pairs, halo_pairs] = sys_.pair_work();
+    const auto pairs = comm_.all_gather(own_pairs);
+    const auto redundant = comm_.all_gather(halo_pairs);
     // Terms a case appends to its whole system (monitors such as the dam break's wall penetration
     // count) are not in the local systems: they see only the evaluations at output times, on rank 0.
     const auto local = sys_.active_terms();
@@ -72,6 +75,8 @@ class MpiRun final : public PartitionedRun<D> {
             {"owned_particles", owned},
             {"owned_fluid", fluid},
             {"halo_particles_max", halo},
+            {"verlet_pairs_owned_rows", pairs},
+            {"verlet_pairs_halo_rows", redundant},
             {"exchange_seconds", exchange},
             {"rhs_seconds", rhs},
             {"output", "the whole state gathered on rank 0, which measures and writes every file"}};
