@@ -1,12 +1,13 @@
 # `sph-mol` itself under mpirun (cmake -P, from tests/CMakeLists.txt): the dam break on 1 rank and
-# on 3 ranks writes the same files byte for byte (VTK particles, the front positions), rank 0 alone
-# prints the summary, a setting a run over ranks does not support ends every rank with exit code 2,
-# and so does a subcommand. Inputs: SPHMOL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR,
+# on 3 ranks writes the same files byte for byte (VTK particles, the front positions) and the same
+# checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
+# same state; rank 0 alone prints the summary; a setting a run over ranks does not support ends
+# every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR,
 # WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
 file(REMOVE_RECURSE ${WORK_DIR})
 set(sets --set discretization.spacing=0.04 --set time.t_end=0.06 --set output.times=[0.03,0.06]
-         --set output.plots=false --set output.vtk=true --quiet)
+         --set output.plots=false --set output.vtk=true --set output.checkpoint_every=0.03 --quiet)
 set(dam ${SOURCE_DIR}/verification/dam_break.yaml)
 foreach(n 1 3)
   execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} ${n} ${FLAGS} ${SPHMOL} --config ${dam} ${sets} --output ${WORK_DIR}/n${n}
@@ -26,6 +27,27 @@ foreach(f fluid_0001.vtp fluid_0002.vtp walls_0002.vtp front.csv)
     message(FATAL_ERROR "${f} differs between 1 and 3 ranks")
   endif()
 endforeach()
+foreach(n 1 3)
+  file(READ ${WORK_DIR}/n${n}/checkpoint-0.03/checkpoint.json cp${n})
+  string(JSON state${n} GET "${cp${n}}" state)
+  string(JSON integrator${n} GET "${cp${n}}" integrator_state)
+endforeach()
+if(NOT state1 STREQUAL state3 OR NOT integrator1 STREQUAL integrator3)
+  message(FATAL_ERROR "the checkpoint of 3 ranks holds another state than that of 1 rank")
+endif()
+
+# Written by 3 ranks, continued by 2: the end state of the uninterrupted run.
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --restart ${WORK_DIR}/n3/checkpoint-0.03
+                        --output ${WORK_DIR}/restarted --quiet
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "restart on 2 ranks: exit ${rc}\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/fluid_0002.vtp ${WORK_DIR}/restarted/fluid_0000.vtp
+                RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "3 ranks' checkpoint continued on 2 ranks: the final particles differ from the uninterrupted run")
+endif()
 
 execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --config ${SOURCE_DIR}/verification/poiseuille.yaml
                         --set time.t_end=0.01 --set output.times=[0.01] --output ${WORK_DIR}/refused

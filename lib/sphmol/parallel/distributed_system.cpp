@@ -37,7 +37,8 @@ struct GatherRow {
 
 template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole,
-                                        double imbalance_tolerance, double rebalance_threshold)
+                                        const std::vector<double>& y0, double t0, double imbalance_tolerance,
+                                        double rebalance_threshold)
     : comm_(comm),
       config_(config),
       rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
@@ -66,11 +67,13 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   skin_ = config.discretization.skin * h;
 
   // Work per particle: its row of the neighbour list (support + skin) plus one, from a search over
-  // the whole scene at t = 0, which every rank holds.
+  // the whole scene at (t0, y0), which every rank holds.
+  if (y0.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem: y0 is not a whole state");
   std::array<std::vector<double>, D> xw;
   for (int d = 0; d < D; ++d) {
     xw[d].resize(n);
-    for (std::size_t i = 0; i < n; ++i) xw[d][i] = domain_.wrap(d, i < P.n_fluid ? P.x[d][i] : P.wall_position(d, i, 0.0));
+    for (std::size_t i = 0; i < n; ++i)
+      xw[d][i] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
   }
   SearchInput<D> in;
   for (int d = 0; d < D; ++d) in.x[d] = xw[d].data();

@@ -45,8 +45,9 @@ class DistributedSystem final : public OdeSystem {
   // evaluation; its particle index is the global id. imbalance_tolerance (> 1): the partition's aim
   // for the largest rank's pair work over the mean; rebalance_threshold: the imbalance past which
   // imbalanced() asks for a new partition.
-  DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, double imbalance_tolerance,
-                    double rebalance_threshold);
+  // (t0, y0): the whole state the run starts from, which places the particles for the partition.
+  DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
+                    double t0, double imbalance_tolerance, double rebalance_threshold);
   ~DistributedSystem() override;
 
   std::size_t size() const override { return layout_.size(); }
@@ -60,6 +61,7 @@ class DistributedSystem final : public OdeSystem {
   long rhs_evaluations() const override { return rhs_evals_; }
 
   const StateLayout<D>& layout() const { return layout_; }
+  const StateLayout<D>& whole_layout() const { return whole_layout_; }
   // This rank's part of a whole state (the serial layout), and (collective) the whole state from
   // every rank's part, on every rank.
   std::vector<double> local_part(const std::vector<double>& whole) const;

@@ -16,8 +16,8 @@ template <int D>
 class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-         double tolerance, double rebalance_threshold)
-      : comm_(comm), sys_(comm, config, whole, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
+         double t0, double tolerance, double rebalance_threshold)
+      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
         whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
@@ -42,6 +42,35 @@ class MpiRun final : public PartitionedRun<D> {
     if (js.contains("c")) js["c"] = encode_doubles(c);
     integrator.initialize(sys_, t, y_.data());
     integrator.restore_state(js);
+  }
+  // The leapfrogs' per-particle arrays: f of the state's length and c of the positions' (the
+  // latter carried in the position blocks of a state-length array).
+  nlohmann::json whole_integrator_state(const nlohmann::json& state) override {
+    nlohmann::json js = state;
+    std::vector<double> whole;
+    sys_.gather(decode_doubles(js.at("f").get<std::string>()).data(), whole);
+    js["f"] = encode_doubles(whole);
+    if (js.contains("c")) {
+      std::vector<double> c = decode_doubles(js.at("c").get<std::string>());
+      c.resize(sys_.size(), 0.0);
+      sys_.gather(c.data(), whole);
+      whole.resize(D * sys_.whole_layout().n);
+      js["c"] = encode_doubles(whole);
+    }
+    return js;
+  }
+  nlohmann::json local_integrator_state(const nlohmann::json& whole) override {
+    nlohmann::json js = whole;
+    if (!js.contains("f")) return js;  // restore_state() names what is missing
+    js["f"] = encode_doubles(sys_.local_part(decode_doubles(js.at("f").get<std::string>())));
+    if (js.contains("c")) {
+      std::vector<double> c = decode_doubles(js.at("c").get<std::string>());
+      c.resize(sys_.whole_layout().size(), 0.0);
+      std::vector<double> mine = sys_.local_part(c);
+      mine.resize(D * sys_.layout().n);
+      js["c"] = encode_doubles(mine);
+    }
+    return js;
   }
   double last_good_time() const override { return health_.last_good_time(); }
   double rhs_seconds() const override { return sys_.stats().rhs_seconds; }
@@ -120,22 +149,22 @@ MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_
 
 template <int D>
 std::unique_ptr<PartitionedRun<D>> MpiRunPartitioner::make(const Config& config, const SphSystem<D>& whole,
-                                                           const std::vector<double>& y0) const {
+                                                           const std::vector<double>& y0, double t0) const {
   refuse_unsupported(config, whole);
-  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, tolerance_, rebalance_threshold_);
+  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, t0, tolerance_, rebalance_threshold_);
 }
 
 std::unique_ptr<PartitionedRun<1>> MpiRunPartitioner::partition(const Config& c, const SphSystem<1>& w,
-                                                                 const std::vector<double>& y0) const {
-  return make<1>(c, w, y0);
+                                                                 const std::vector<double>& y0, double t0) const {
+  return make<1>(c, w, y0, t0);
 }
 std::unique_ptr<PartitionedRun<2>> MpiRunPartitioner::partition(const Config& c, const SphSystem<2>& w,
-                                                                 const std::vector<double>& y0) const {
-  return make<2>(c, w, y0);
+                                                                 const std::vector<double>& y0, double t0) const {
+  return make<2>(c, w, y0, t0);
 }
 std::unique_ptr<PartitionedRun<3>> MpiRunPartitioner::partition(const Config& c, const SphSystem<3>& w,
-                                                                 const std::vector<double>& y0) const {
-  return make<3>(c, w, y0);
+                                                                 const std::vector<double>& y0, double t0) const {
+  return make<3>(c, w, y0, t0);
 }
 
 }  // namespace sphmol::parallel

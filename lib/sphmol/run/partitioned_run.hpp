@@ -33,6 +33,11 @@ class PartitionedRun {
   // has drifted out of balance, with the integrator's own state, and starts the integrator again
   // on the new share (state() changes then).
   virtual void rebalance(Integrator& integrator, double t) = 0;
+  // Checkpoints: the integrator's state (save_state()) with its per-particle arrays in the serial
+  // layout of the whole state (collective, on every rank), and this rank's part of such a state
+  // (for restore_state()), so that a checkpoint is the same whatever rank count writes or reads it.
+  virtual nlohmann::json whole_integrator_state(const nlohmann::json& state) = 0;
+  virtual nlohmann::json local_integrator_state(const nlohmann::json& whole) = 0;
   virtual double last_good_time() const = 0;
   // Run counters of this rank: seconds in the RHS and in its neighbour search, list rebuilds.
   virtual double rhs_seconds() const = 0;
@@ -48,14 +53,14 @@ class RunPartitioner {
   virtual ~RunPartitioner() = default;
   // The rank that writes files and the summary.
   virtual bool root() const = 0;
-  // Collective. `whole`: the scene as built on every rank; y0 its initial state. Throws ConfigError
-  // on every rank for a configuration the partitioned run does not support.
+  // Collective. `whole`: the scene as built on every rank; (t0, y0) the whole state the run starts
+  // from. Throws ConfigError on every rank for a configuration the partitioned run does not support.
   virtual std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
-                                                       const std::vector<double>& y0) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
   virtual std::unique_ptr<PartitionedRun<2>> partition(const Config& config, const SphSystem<2>& whole,
-                                                       const std::vector<double>& y0) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
   virtual std::unique_ptr<PartitionedRun<3>> partition(const Config& config, const SphSystem<3>& whole,
-                                                       const std::vector<double>& y0) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
 };
 
 }  // namespace sphmol

@@ -50,15 +50,6 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // state, and `y` holds the whole state only after a gather (output times, the end); the root rank
   // measures and writes, with the whole system `sys`.
   std::unique_ptr<PartitionedRun<D>> part;
-  if (opt.partitioner) {
-    if (!opt.restart_from.empty()) throw ConfigError("--restart: not available in a run over several MPI ranks");
-    if (config.output.checkpoint_every > 0.0)
-      throw ConfigError("output.checkpoint_every: checkpoints are not written by a run over several MPI ranks");
-    part = opt.partitioner->partition(config, *sys, y);
-  }
-  const bool root = !part || opt.partitioner->root();
-  OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
-  double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
 
   // Restart: the checkpoint's state, time, integrator state and measurements so far.
   double t = 0.0;
@@ -83,6 +74,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     rhs_before_s = restart->rhs_seconds;
     search_before_s = restart->search_seconds;
   }
+  // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
+  // rank count wrote it).
+  if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
+  const bool root = !part || opt.partitioner->root();
+  OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
+  double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
   integrator->initialize(ode, t, y_step);
   // Blow-up detection after every accepted step (run/health_check.hpp; over ranks, the partition's
   // own checks), and conservation diagnostics.
@@ -98,7 +95,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (restart) {
     // A malformed integrator or observer state is bad input (exit 2), like any other checkpoint field.
     try {
-      integrator->restore_state(restart->integrator_state);
+      integrator->restore_state(part ? part->local_integrator_state(restart->integrator_state) : restart->integrator_state);
       for (std::size_t k = 0; k < observers.size() && k < restart->observers.size(); ++k)
         observers[k]->restore_state(restart->observers[k], out);
     } catch (const std::exception& e) {
@@ -121,6 +118,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   };
   std::vector<std::string> written = restart ? restart->written : std::vector<std::string>{};  // pruning: run/checkpoint.hpp
   const auto checkpoint = [&] {
+    // Over ranks every rank takes part in gathering the whole state and the integrator's state in
+    // the serial layout; rank 0 writes them.
+    nlohmann::json integrator_state;
+    if (part) {
+      part->gather(y);
+      integrator_state = part->whole_integrator_state(integrator->save_state());
+    }
     if (!out.enabled) return;
     Checkpoint cp;
     cp.case_name = config.case_name;
@@ -128,13 +132,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     cp.t = t;
     cp.y = y;
     cp.integrator = integrator->name();
-    cp.integrator_state = integrator->save_state();
+    cp.integrator_state = part ? integrator_state : integrator->save_state();
     cp.errors = errors;
     for (const auto& o : observers) cp.observers.push_back(o->save_state());
-    cp.rhs_evals = rhs_before + sys->rhs_evaluations();
+    cp.rhs_evals = rhs_before + ode.rhs_evaluations();
     cp.wall_seconds = wall_now();
-    cp.rhs_seconds = rhs_before_s + sys->rhs_seconds();
-    cp.search_seconds = search_before_s + sys->search_seconds();
+    cp.rhs_seconds = rhs_before_s + (part ? part->rhs_seconds() : sys->rhs_seconds());
+    cp.search_seconds = search_before_s + (part ? part->search_seconds() : sys->search_seconds());
     out.record(checkpoint_name(t));
     cp.files = out.written();
     write_checkpoint(out.directory, cp, to_yaml(config), written);
