@@ -112,3 +112,18 @@ TEST_CASE("symmetric pairs: the 3D dam break's state equals the full rows' bit f
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/examples/dam_break_3d.yaml", {});
   check_same<3>(c, 40, 1);
 }
+
+TEST_CASE("symmetric pairs are the default for the 2D dam break, not for the 3D one", "[integration][fused]") {
+  omp_set_num_threads(1);
+  const Config c2 = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                                {"discretization.spacing=0.04"});
+  auto s2 = make_case<2>(c2)->build(c2);
+  std::vector<double> y2 = s2->initial_state(), f2(y2.size());
+  s2->rhs(0.0, y2.data(), f2.data());
+  CHECK(s2->symmetric_evaluations() == 1);
+  const Config c3 = load_config(std::string(SPHMOL_SOURCE_DIR) + "/examples/dam_break_3d.yaml", {});
+  auto s3 = make_case<3>(c3)->build(c3);
+  std::vector<double> y3 = s3->initial_state(), f3(y3.size());
+  s3->rhs(0.0, y3.data(), f3.data());
+  CHECK(s3->symmetric_evaluations() == 0);
+}

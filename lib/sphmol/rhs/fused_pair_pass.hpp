@@ -44,8 +44,10 @@ class FusedPairPass final : public Term<D> {
     symmetric_form_ = fluid_.size() == 1 && fluid_[0]->rows() == PairRows::fluid && fluid_[0]->pair_record_size() > 0 &&
                       !compact_fluid_;
   }
-  // Whether the pass may evaluate fluid pairs once (above); on by default where the terms allow it.
-  // Off: every row in full (for comparisons; the results are the same).
+  // Whether the pass may evaluate fluid pairs once (above). On by default in 1D and 2D, off in 3D:
+  // there a row's lower neighbours lie up to a plane of particles back, their records (about 2 KiB
+  // per row) have left the L2 cache when the row reads them, and the 3D dam break example ran 1.2x
+  // slower symmetric (docs/performance.md). Off: every row in full; the results are the same.
   bool has_symmetric_form() const { return symmetric_form_; }
   void set_symmetric(bool on) { symmetric_ = on; }
   // Evaluations that ran symmetrically (each also needs one mass for all particles and a symmetric
@@ -216,6 +218,11 @@ class FusedPairPass final : public Term<D> {
           }
         }
         std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
+        // The next row's twin records lie anywhere in the records written so far (in 3D a plane of
+        // particles back): ask for them while this row sums.
+        if (i + 1 < i1)
+          for (std::uint32_t q = off[i + 1], e = up[i + 1]; q < e; ++q)
+            __builtin_prefetch(records + static_cast<std::size_t>(twin[q]) * R, 0, 3);
         PairRow<D> lower;
         if (!all) lower = buf.row(kernel_->fill_segment(verlet, i, off[i], up[i], buf));
         term->sum_pair_records(w, i, all ? nullptr : &lower, twin + off[i], up[i] - off[i],
@@ -233,7 +240,7 @@ class FusedPairPass final : public Term<D> {
   bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
   mutable RowSchedule schedule_;
-  bool symmetric_form_ = false, symmetric_ = true;
+  bool symmetric_form_ = false, symmetric_ = D <= 2;
   // Per aligned block of RowSchedule::kChunk fluid rows: the epoch its records were last written in.
   mutable std::unique_ptr<std::atomic<std::uint64_t>[]> ready_;
   mutable std::size_t ready_blocks_ = 0, twin_blocks_ = 0;
