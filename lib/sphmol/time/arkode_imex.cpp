@@ -180,7 +180,11 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
     check(ARKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
   }
   ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_);
-  ls_->set_arkode_memory(mem_);
+  ls_->set_gamma([this] {
+    double gamma = 0.0;
+    check(ARKStepGetCurrentGamma(mem_, &gamma), "GetCurrentGamma");
+    return gamma;
+  });
   check(ARKStepSetLinearSolver(mem_, ls_->get(), nullptr), "SetLinearSolver");
   check(ARKStepSetLinear(mem_, 1), "SetLinear");  // L_n changes from step to step
   check(ARKStepSetPostprocessStepFn(mem_, &ArkodeImex::step_done_callback), "SetPostprocessStepFn");

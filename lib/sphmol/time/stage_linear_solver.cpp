@@ -1,7 +1,5 @@
 #include "sphmol/time/stage_linear_solver.hpp"
 
-#include <arkode/arkode_arkstep.h>
-
 #include <stdexcept>
 
 namespace sphmol {
@@ -41,16 +39,21 @@ StageLinearSolver::~StageLinearSolver() {
 
 int StageLinearSolver::solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, double delta) {
   StageLinearSolver* me = self(S);
-  double gamma = 0.0;
-  if (ARKStepGetCurrentGamma(me->mem_, &gamma) != ARK_SUCCESS) return me->last_flag_ = SUNLS_MEM_NULL;
-  const double* bb = N_VGetArrayPointer(b);
-  double* xx = N_VGetArrayPointer(x);
-  const std::size_t n = static_cast<std::size_t>(N_VGetLength(b)), vb = me->vb_, ve = vb + me->op_->size();
-  // Off the velocity block the system is the identity.
-  for (std::size_t k = 0; k < vb; ++k) xx[k] = bb[k];
-  for (std::size_t k = ve; k < n; ++k) xx[k] = bb[k];
-  const double* w = me->weights_ ? N_VGetArrayPointer(me->weights_) + vb : nullptr;
-  me->last_flag_ = me->solve_.solve_weighted(*me->op_, gamma, bb + vb, xx + vb, w, delta, me->zero_guess_);
+  if (!me->gamma_) return me->last_flag_ = SUNLS_MEM_NULL;
+  // No exception may cross SUNDIALS' C frames: a failure becomes an unrecoverable flag.
+  try {
+    const double gamma = me->gamma_();
+    const double* bb = N_VGetArrayPointer(b);
+    double* xx = N_VGetArrayPointer(x);
+    const std::size_t n = static_cast<std::size_t>(N_VGetLength(b)), vb = me->vb_, ve = vb + me->op_->size();
+    // Off the velocity block the system is the identity.
+    for (std::size_t k = 0; k < vb; ++k) xx[k] = bb[k];
+    for (std::size_t k = ve; k < n; ++k) xx[k] = bb[k];
+    const double* w = me->weights_ ? N_VGetArrayPointer(me->weights_) + vb : nullptr;
+    me->last_flag_ = me->solve_.solve_weighted(*me->op_, gamma, bb + vb, xx + vb, w, delta, me->zero_guess_);
+  } catch (...) {
+    me->last_flag_ = SUNLS_ATIMES_FAIL_UNREC;
+  }
   return me->last_flag_;
 }
 

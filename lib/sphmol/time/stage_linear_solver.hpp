@@ -7,11 +7,13 @@
 // products and preconditioner then span the velocity block (2/5 of a 2D SPH state) instead of the
 // whole state, where ARKStep's own matrix-free Krylov solver iterated on positions and densities too.
 // ARKStep's residual test is on ||w r||_2 over the whole state, which the block solve meets exactly
-// because the residual off the block is zero. gamma is ARKStep's current one (ARKStepGetCurrentGamma).
+// because the residual off the block is zero. gamma comes from the caller (arkode_imex: ARKStep's
+// current one, ARKStepGetCurrentGamma).
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 
 #include <cstddef>
+#include <functional>
 
 #include "sphmol/time/viscous_solve.hpp"
 
@@ -25,8 +27,8 @@ class StageLinearSolver {
   ~StageLinearSolver();
   StageLinearSolver(const StageLinearSolver&) = delete;
   StageLinearSolver& operator=(const StageLinearSolver&) = delete;
-  // After ARKStepCreate: where gamma comes from.
-  void set_arkode_memory(void* mem) { mem_ = mem; }
+  // Where gamma comes from; set before the first solve.
+  void set_gamma(std::function<double()> gamma) { gamma_ = std::move(gamma); }
   SUNLinearSolver get() const { return ls_; }
 
  private:
@@ -37,7 +39,7 @@ class StageLinearSolver {
   ViscousSolve solve_;
   const ViscousOperator* op_;
   std::size_t vb_;
-  void* mem_ = nullptr;
+  std::function<double()> gamma_;
   N_Vector weights_ = nullptr;  // ARKStep's, set through the scaling-vector operation
   bool zero_guess_ = false;
   int last_flag_ = 0;
