@@ -8,8 +8,10 @@
 // (time/viscous_operator.hpp), and the explicit part takes the rest, f_E = f - L_n v - b_n, so that
 // f_E + f_I = f at every stage. f_I is then exactly linear in y (ARKStepSetLinear: one Newton
 // iteration solves each stage) and its Jacobian is known, J v = L_n v on the velocity block: the
-// stage systems (I - gamma J) z = r are solved matrix-free by SUNDIALS' own Krylov solver (PCG or
-// GMRES) with a Jacobi preconditioner 1 - gamma diag(L_n), warm started by ARKStep's predictor. The
+// stage systems (I - gamma J) z = r are the identity off that block, and on it are solved matrix-free
+// by SUNDIALS' own Krylov solver (PCG or GMRES) with a Jacobi preconditioner 1 - gamma diag(L_n)
+// (time/stage_linear_solver.hpp), starting from ARKStep's predictor. The error test and the stage
+// solves' tolerance use weights with the state blocks' own scales (time/block_error_weights.hpp). The
 // remainder (L(x) - L_n) v left in f_E changes over a step by O(dt v / h) relative to L: far from
 // stiff at the acoustic step. The operator is rebuilt after every accepted step (the
 // postprocess-step callback) from that evaluation, which the next step's first stage reuses.
