@@ -8,12 +8,12 @@
 #include <fstream>
 #include <omp.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/time/integrator.hpp"
+#include "support/files.hpp"
 
 using namespace sphmol;
 
@@ -71,8 +71,7 @@ TEST_CASE("symmetric pairs: the dam break's state equals the full rows' bit for 
 TEST_CASE("symmetric pairs: the same across a periodic face, with density diffusion off", "[integration][fused]") {
   // A layer over a floor, periodic in x, with a travelling wave in its initial velocity: pairs across
   // the periodic face use the minimum image, and the x-momentum keeps the particles crossing it.
-  const auto dir = std::filesystem::temp_directory_path() / ("sphmol_symmetric_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test_support::fresh_dir("symmetric_pairs");
   const auto file = dir / "layer.yaml";
   std::ofstream(file) << R"yaml(case: scene
 dimension: 2
