@@ -8,12 +8,12 @@
 #include <fstream>
 #include <omp.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/time/integrator.hpp"
+#include "support/files.hpp"
 
 using namespace sphmol;
 
@@ -71,8 +71,7 @@ TEST_CASE("symmetric pairs: the dam break's state equals the full rows' bit for 
 TEST_CASE("symmetric pairs: the same across a periodic face, with density diffusion off", "[integration][fused]") {
   // A layer over a floor, periodic in x, with a travelling wave in its initial velocity: pairs across
   // the periodic face use the minimum image, and the x-momentum keeps the particles crossing it.
-  const auto dir = std::filesystem::temp_directory_path() / ("sphmol_symmetric_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test_support::fresh_dir("symmetric_pairs");
   const auto file = dir / "layer.yaml";
   std::ofstream(file) << R"yaml(case: scene
 dimension: 2
@@ -111,4 +110,19 @@ output:
 TEST_CASE("symmetric pairs: the 3D dam break's state equals the full rows' bit for bit", "[integration][fused][3d]") {
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/examples/dam_break_3d.yaml", {});
   check_same<3>(c, 40, 1);
+}
+
+TEST_CASE("symmetric pairs are the default for the 2D dam break, not for the 3D one", "[integration][fused]") {
+  omp_set_num_threads(1);
+  const Config c2 = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                                {"discretization.spacing=0.04"});
+  auto s2 = make_case<2>(c2)->build(c2);
+  std::vector<double> y2 = s2->initial_state(), f2(y2.size());
+  s2->rhs(0.0, y2.data(), f2.data());
+  CHECK(s2->symmetric_evaluations() == 1);
+  const Config c3 = load_config(std::string(SPHMOL_SOURCE_DIR) + "/examples/dam_break_3d.yaml", {});
+  auto s3 = make_case<3>(c3)->build(c3);
+  std::vector<double> y3 = s3->initial_state(), f3(y3.size());
+  s3->rhs(0.0, y3.data(), f3.data());
+  CHECK(s3->symmetric_evaluations() == 0);
 }

@@ -8,7 +8,13 @@
 #include <cmath>
 #include <vector>
 
+#include <nvector/nvector_serial.h>
+
+#include <algorithm>
+
 #include "sphmol/time/arkode_imex.hpp"
+#include "sphmol/time/block_error_weights.hpp"
+#include "sphmol/time/stage_linear_solver.hpp"
 #include "sphmol/time/imex_system.hpp"
 #include "sphmol/time/leapfrog_imex.hpp"
 
@@ -62,6 +68,7 @@ struct Chain final : OdeSystem, ImexSystem {
   double stable_step() const override { return 0.05; }  // the springs' limit, not the viscous one
   std::size_t velocities_begin() const override { return n; }
   std::size_t velocities_end() const override { return 2 * n; }
+  std::size_t block_length() const override { return n; }
   long rhs_evaluations() const override { return evals; }
   double viscous_limit() const { return 0.125 * dx * dx / nu; }
 };
@@ -137,4 +144,91 @@ TEST_CASE("arkode_imex: stable far above the viscous limit, ARK324L2SA order 3",
   const double d1 = distance(ref, run_leapfrog(dt / 16, t_end)), d2 = distance(ref, run_leapfrog(dt / 32, t_end));
   INFO("leapfrog_imex against arkode_imex " << d1 << " " << d2);
   CHECK(std::log2(d1 / d2) == Approx(2.0).margin(0.15));
+}
+
+TEST_CASE("block error weights: positions against the extent, velocities against the largest speed", "[imex][time]") {
+  // Two components of three particles: x, y | u, v | densities; v is zero (a channel's cross-stream
+  // velocity), one particle sits at the origin.
+  const StateBlocks blocks{15, 6, 12, 3};
+  const std::vector<double> y{0.0, 0.5e-3, 1.0e-3, 0.1e-3, 0.2e-3, 0.3e-3,  // x, y
+                              1.0e-5, 2.5e-5, 1.0e-5, 0.0, 1e-15, -1e-15,   // u, v
+                              1000.0, 1001.0, 999.0};
+  const double rtol = 1e-4, atol = 1e-12;
+  std::vector<double> w(y.size());
+  block_error_weights(blocks, rtol, atol, y.data(), w.data());
+  const double extent = 1.0e-3, speed = 2.5e-5;
+  CHECK(w[0] == Approx(1.0 / (rtol * extent + atol)));
+  CHECK(w[4] == Approx(1.0 / (rtol * (0.2e-3 + extent) + atol)));
+  CHECK(w[7] == Approx(1.0 / (rtol * 2.0 * speed + atol)));
+  // The zero cross-stream velocity is measured against the flow's speed, not against atol alone.
+  CHECK(w[9] == Approx(1.0 / (rtol * speed + atol)));
+  CHECK(w[10] == Approx(1.0 / (rtol * (1e-15 + speed) + atol)));
+  CHECK(w[13] == Approx(1.0 / (rtol * 1001.0 + atol)));
+  // A state at rest: the velocities fall back to atol.
+  std::vector<double> rest = y;
+  std::fill(rest.begin() + 6, rest.begin() + 12, 0.0);
+  block_error_weights(blocks, rtol, atol, rest.data(), w.data());
+  CHECK(w[6] == Approx(1.0 / atol));
+}
+
+TEST_CASE("stage linear solver: identity off the velocity block, (I - gamma L) x = b on it", "[imex][time]") {
+  Chain s;
+  ViscousOperator op;
+  s.operator_into(op);
+  SUNContext ctx = nullptr;
+  REQUIRE(SUNContext_Create(nullptr, &ctx) == 0);
+  {
+    const double gamma = 0.01;
+    StageLinearSolver stage(ctx, KrylovOptions{"pcg", 0.0, 200}, &op, s.n);
+    stage.set_gamma([gamma] { return gamma; });
+    SUNLinearSolver ls = stage.get();
+    REQUIRE(SUNLinSolGetType(ls) == SUNLINEARSOLVER_ITERATIVE);
+    N_Vector x = N_VNew_Serial(static_cast<sunindextype>(s.size()), ctx), b = N_VClone(x), w = N_VClone(x);
+    const auto y = start(s);
+    std::copy(y.begin(), y.end(), N_VGetArrayPointer(b));
+    N_VConst(0.0, x);
+    N_VConst(1e4, w);
+    REQUIRE(SUNLinSolSetScalingVectors(ls, w, w) == SUNLS_SUCCESS);
+    REQUIRE(SUNLinSolSetZeroGuess(ls, SUNTRUE) == SUNLS_SUCCESS);
+    const double delta = 1e-6;
+    REQUIRE(SUNLinSolSolve(ls, nullptr, x, b, delta) == SUNLS_SUCCESS);
+    const double* xx = N_VGetArrayPointer(x);
+    for (std::size_t k = 0; k < s.n; ++k) CHECK(xx[k] == y[k]);
+    std::vector<double> lx(s.n);
+    op.apply(xx + s.n, lx.data());
+    double r2 = 0.0;
+    for (std::size_t k = 0; k < s.n; ++k) {
+      const double r = 1e4 * (y[s.n + k] - (xx[s.n + k] - gamma * lx[k]));
+      r2 += r * r;
+    }
+    CHECK(std::sqrt(r2) <= delta);
+    CHECK(SUNLinSolNumIters(ls) > 0);
+    CHECK(SUNLinSolResNorm(ls) <= delta);
+    N_VDestroy(x);
+    N_VDestroy(b);
+    N_VDestroy(w);
+  }
+  SUNContext_Free(&ctx);
+}
+
+TEST_CASE("arkode_imex: error weights on the blocks' scales, accurate to rtol of the scale", "[imex][time]") {
+  // Adaptive, rtol 1e-4: the error test measures each velocity against the largest speed and each
+  // position against the extent (measured 52 steps; with the scalar atol 1e-12 alone, 85).
+  Chain s;
+  auto y = start(s);
+  ArkodeImex::Options o;
+  o.rtol = 1e-4;
+  o.atol = 1e-12;
+  ArkodeImex ark(o);
+  ark.initialize(s, 0.0, y.data());
+  ark.advance(1.0);
+  const auto ref = run_ark(0.04 / 32, 1.0);
+  double speed = 0.0, err = 0.0;
+  for (std::size_t k = s.n; k < s.size(); ++k) {
+    speed = std::max(speed, std::abs(ref[k]));
+    err = std::max(err, std::abs(y[k] - ref[k]));
+  }
+  INFO("steps " << ark.stats().steps << ", max velocity error " << err << " of the speed " << speed);
+  CHECK(ark.stats().steps < 65);
+  CHECK(err < 10.0 * o.rtol * speed);
 }

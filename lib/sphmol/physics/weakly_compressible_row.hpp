@@ -114,6 +114,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
 
  private:
   static constexpr std::size_t kRecord = WithDiffusion ? 3 + D : 1 + D;
+  static constexpr std::size_t kPrefetchAhead = 2048;  // bytes of records ahead of the row being written
 
   unsigned uniform() const {
     unsigned u = kMassUniform | kSmoothingUniform;
@@ -202,10 +203,11 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   void records(const Workspace<D>& w, std::size_t i, const std::uint32_t* j, std::uint32_t n, const KernelPass<D>& kernel,
                double* rec) const {
     const PairGeometry<D>& g = kernel.geometry();
-    // The records were last touched an evaluation ago and have left the cache: ask for their lines
-    // (for writing) now, so that the stores at the end do not wait for them.
-    const auto* bytes = reinterpret_cast<const char*>(rec);
-    for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(bytes + b, 1, 3);
+    // The records were last touched an evaluation ago and have left the cache, and the stores at the
+    // end waited for their lines. Rows' records follow each other in memory, so ask for the lines of
+    // the rows a few ahead now (a row writes about 10 lines): they arrive while this row computes.
+    const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
+    for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
     for (std::uint32_t k0 = 0; k0 < n; k0 += kBlock) {
       const std::uint32_t nb = std::min(kBlock, n - k0);
       alignas(32) double dx[D][kBlock], r2[kBlock], F[kBlock];

@@ -44,8 +44,10 @@ class FusedPairPass final : public Term<D> {
     symmetric_form_ = fluid_.size() == 1 && fluid_[0]->rows() == PairRows::fluid && fluid_[0]->pair_record_size() > 0 &&
                       !compact_fluid_;
   }
-  // Whether the pass may evaluate fluid pairs once (above); on by default where the terms allow it.
-  // Off: every row in full (for comparisons; the results are the same).
+  // Whether the pass may evaluate fluid pairs once (above). On by default in 1D and 2D, off in 3D:
+  // there a row's lower neighbours lie up to a plane of particles back, their records (about 2 KiB
+  // per row) have left the L2 cache when the row reads them, and the 3D dam break example ran 1.2x
+  // slower symmetric (docs/performance.md). Off: every row in full; the results are the same.
   bool has_symmetric_form() const { return symmetric_form_; }
   void set_symmetric(bool on) { symmetric_ = on; }
   // Evaluations that ran symmetrically (each also needs one mass for all particles and a symmetric
@@ -74,6 +76,7 @@ class FusedPairPass final : public Term<D> {
       const int threads = omp_get_num_threads();
       const auto T = static_cast<std::size_t>(threads);
       buffers_.resize(T);
+      deferred_.resize(T);
       if (w.pair_thread_seconds.size() < T) w.pair_thread_seconds.resize(T, 0.0);
       // Rows shared by cost in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
       schedule_.reset(threads, 2);
@@ -191,12 +194,27 @@ class FusedPairPass final : public Term<D> {
     const double start = omp_get_wtime();
     RowBuffer<D>& buf = buffers_[static_cast<std::size_t>(thread)];
     if (thread == 0) ++symmetric_evaluations_;
+    // Whether every block row i's lower part reaches is ready (its own chunk's block is).
+    auto lower_ready = [=](std::size_t i) {
+      bool all = true;
+      for (std::uint32_t q = off[i], e = up[i]; q < e && all; ++q) all = ready[vj[q] / C].load(std::memory_order_relaxed) == epoch;
+      std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release below
+      return all;
+    };
+    auto sum_row = [&, off, up, rec, twin, records, R, term](std::size_t i, bool all) {
+      PairRow<D> lower;
+      if (!all) lower = buf.row(kernel_->fill_segment(verlet, i, off[i], up[i], buf));
+      term->sum_pair_records(w, i, all ? nullptr : &lower, twin + off[i], up[i] - off[i],
+                             records + static_cast<std::size_t>(rec[i]) * R, off[i + 1] - up[i], records);
+    };
+    std::vector<std::uint32_t>& later = deferred_[static_cast<std::size_t>(thread)];
+    later.clear();
     schedule_.run(thread, [&, off, vj, up, rec, twin, n_deps, deps, records, ready, epoch, R, term](int set, std::size_t i0, std::size_t i1) {
       if (set != 0) return wall_rows(w, buf, i0, i1);
       for (std::size_t i = i0; i < i1; ++i)
         term->pair_records(w, i, vj + up[i], off[i + 1] - up[i], *kernel_, records + static_cast<std::size_t>(rec[i]) * R);
       // A chunk is one aligned block (or the set's last, shorter one); any other chunk marks nothing
-      // and checks every row.
+      // and its rows are summed after the schedule.
       const bool aligned = i0 % C == 0;
       bool block_ready = aligned;
       if (aligned) {
@@ -205,23 +223,26 @@ class FusedPairPass final : public Term<D> {
         block_ready = n_deps[b] != PairTwins::kNoDeps;
         for (std::uint32_t k = 0; block_ready && k < n_deps[b]; ++k)
           block_ready = ready[deps[b * PairTwins::kMaxDeps + k]].load(std::memory_order_relaxed) == epoch;
+        std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
       }
       for (std::size_t i = i0; i < i1; ++i) {
-        bool all = block_ready;
-        if (!all) {
-          all = true;
-          for (std::uint32_t q = off[i], e = up[i]; q < e && all; ++q) {
-            const std::size_t b = vj[q] / C;
-            all = (aligned && b == i0 / C) || ready[b].load(std::memory_order_relaxed) == epoch;
-          }
+        // A row that waits for records of a block not reached yet (the other thread's range) is
+        // summed after the schedule, when that block is most likely ready.
+        if (!block_ready && !(aligned && lower_ready(i))) {
+          later.push_back(static_cast<std::uint32_t>(i));
+          continue;
         }
-        std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
-        PairRow<D> lower;
-        if (!all) lower = buf.row(kernel_->fill_segment(verlet, i, off[i], up[i], buf));
-        term->sum_pair_records(w, i, all ? nullptr : &lower, twin + off[i], up[i] - off[i],
-                               records + static_cast<std::size_t>(rec[i]) * R, off[i + 1] - up[i], records);
+        // The next row's twin records lie anywhere in the records written so far (in 3D a plane of
+        // particles back): ask for them while this row sums.
+        if (i + 1 < i1)
+          for (std::uint32_t q = off[i + 1], e = up[i + 1]; q < e; ++q)
+            __builtin_prefetch(records + static_cast<std::size_t>(twin[q]) * R, 0, 3);
+        sum_row(i, true);
       }
     });
+    // The deferred rows: from records where their blocks are ready now, else evaluated directly (the
+    // same numbers either way).
+    for (const std::uint32_t i : later) sum_row(i, lower_ready(i));
     w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
 #pragma omp barrier
   }
@@ -232,8 +253,9 @@ class FusedPairPass final : public Term<D> {
   std::string name_;
   bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
+  mutable std::vector<std::vector<std::uint32_t>> deferred_;  // per thread: rows summed after the schedule (symmetric)
   mutable RowSchedule schedule_;
-  bool symmetric_form_ = false, symmetric_ = true;
+  bool symmetric_form_ = false, symmetric_ = D <= 2;
   // Per aligned block of RowSchedule::kChunk fluid rows: the epoch its records were last written in.
   mutable std::unique_ptr<std::atomic<std::uint64_t>[]> ready_;
   mutable std::size_t ready_blocks_ = 0, twin_blocks_ = 0;

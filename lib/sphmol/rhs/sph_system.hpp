@@ -110,7 +110,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // pairs (every term of the pass adds nothing for W = F = 0, PairTerm::zero_beyond_support).
   std::vector<bool> pair_passes_keep_skin_pairs() const;
   // Symmetric fused passes (rhs/fused_pair_pass.hpp): each fluid pair evaluated once where the terms
-  // allow it (the default). Off evaluates every row in full, with the same results; for comparisons.
+  // allow it (the default in 1D and 2D). Off evaluates every row in full, with the same results.
   void set_symmetric_pairs(bool on);
   // Evaluations in which some fused pass ran symmetrically.
   long symmetric_evaluations() const;

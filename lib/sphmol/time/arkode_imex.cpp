@@ -5,8 +5,6 @@
 #include <nvector/nvector_openmp.h>
 #include <nvector/nvector_serial.h>
 #include <omp.h>
-#include <sunlinsol/sunlinsol_pcg.h>
-#include <sunlinsol/sunlinsol_spgmr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include <stdexcept>
 
 #include "sphmol/io/double_codec.hpp"
+#include "sphmol/time/block_error_weights.hpp"
 #include "sphmol/time/blow_up.hpp"
 
 namespace sphmol {
@@ -30,7 +29,7 @@ ArkodeImex::ArkodeImex(Options o) : opt_(std::move(o)) {}
 
 ArkodeImex::~ArkodeImex() {
   if (mem_) ARKStepFree(&mem_);
-  if (ls_) SUNLinSolFree(ls_);
+  ls_.reset();
   if (y_) N_VDestroy(y_);
   if (ctx_) SUNContext_Free(&ctx_);
 }
@@ -69,6 +68,7 @@ void ArkodeImex::evaluate(double t, const double* y) {
   cache_y_.assign(y, y + n);
   cache_t_ = t;
   cached_ = false;
+  cache_frozen_ = false;
   imex_->rhs_explicit(t, y, cache_fe_.data(), scratch_);
   scratch_.apply_affine(y + vb_, cache_w_.data());
   cached_ = true;
@@ -81,6 +81,8 @@ int ArkodeImex::fe_callback(double t, N_Vector y, N_Vector ydot, void* self) {
   me->evaluate(t, yy);
   const std::size_t n = me->sys_->size(), vb = me->vb_, nv = me->nv_;
   std::copy(me->cache_fe_.begin(), me->cache_fe_.begin() + static_cast<std::ptrdiff_t>(n), f);
+  // At a step's start L_n is the cached evaluation's own operator: the difference below is exactly 0.
+  if (me->cache_frozen_) return 0;
   // f_E = f - (L_n v + b_n) = f_E,unfrozen + (L(x) v + b(x)) - (L_n v + b_n)
   me->frozen_.apply_affine(yy + vb, me->wn_.data());
   const double* w = me->cache_w_.data();
@@ -98,24 +100,10 @@ int ArkodeImex::fi_callback(double, N_Vector y, N_Vector ydot, void* self) {
   return 0;
 }
 
-int ArkodeImex::jtimes_callback(N_Vector v, N_Vector Jv, double, N_Vector, N_Vector, void* self, N_Vector) {
+int ArkodeImex::weights_callback(N_Vector y, N_Vector w, void* self) {
   auto* me = static_cast<ArkodeImex*>(self);
-  double* out = N_VGetArrayPointer(Jv);
-  std::fill(out, out + me->sys_->size(), 0.0);
-  me->frozen_.apply(N_VGetArrayPointer(v) + me->vb_, out + me->vb_);
-  return 0;
-}
-
-int ArkodeImex::psolve_callback(double, N_Vector, N_Vector, N_Vector r, N_Vector z, double gamma, double, int,
-                                void* self) {
-  // Jacobi: the diagonal of I - gamma J is 1 off the velocity block, 1 - gamma L_ii on it.
-  auto* me = static_cast<ArkodeImex*>(self);
-  const double* rr = N_VGetArrayPointer(r);
-  double* zz = N_VGetArrayPointer(z);
-  const std::size_t n = me->sys_->size(), vb = me->vb_, nv = me->nv_, rows = me->frozen_.rows();
-  std::copy(rr, rr + n, zz);
-  const auto& diag = me->frozen_.diagonal();
-  for (std::size_t k = 0; k < nv; ++k) zz[vb + k] = rr[vb + k] / (1.0 - gamma * diag[k % rows]);
+  const StateBlocks blocks{me->sys_->size(), me->vb_, me->vb_ + me->nv_, me->sys_->block_length()};
+  block_error_weights(blocks, me->opt_.rtol, me->opt_.atol, N_VGetArrayPointer(y), N_VGetArrayPointer(w));
   return 0;
 }
 
@@ -135,6 +123,7 @@ int ArkodeImex::step_done_callback(double t, N_Vector y, void* self) {
   }
   std::swap(me->frozen_, me->scratch_);
   // The cache's W was computed with the operator now frozen: still valid for this state.
+  me->cache_frozen_ = true;
   return 0;
 }
 
@@ -155,6 +144,7 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   wn_.assign(nv_, 0.0);
   evaluate(t0, y);  // primes the CFL limit and the operator of the first step
   std::swap(frozen_, scratch_);
+  cache_frozen_ = true;
   if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
 
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
@@ -179,8 +169,9 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   // a previous step's last stage (whose split, L_n, is not the next step's).
   check(ARKStepSetInterpolantType(mem_, ARK_INTERP_LAGRANGE), "SetInterpolantType");
   check(ARKStepSetMaxNumSteps(mem_, opt_.max_steps), "SetMaxNumSteps");
-  // Stage solves: ARKStep's nonlinear tolerance needs rtol/atol in fixed-step runs too.
-  check(ARKStepSStolerances(mem_, opt_.rtol, opt_.atol), "SStolerances");
+  // Error weights with the blocks' own scales (time/block_error_weights.hpp); the stage solves' tolerance
+  // derives from them in fixed-step runs too.
+  check(ARKStepWFtolerances(mem_, &ArkodeImex::weights_callback), "WFtolerances");
   if (opt_.fixed_step) {
     check(ARKStepSetFixedStep(mem_, *opt_.fixed_step), "SetFixedStep");
   } else {
@@ -188,12 +179,13 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
     check(ARKStepSetCFLFraction(mem_, kCflFraction), "SetCFLFraction");
     check(ARKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
   }
-  ls_ = opt_.krylov.solver == "pcg" ? SUNLinSol_PCG(y_, SUN_PREC_LEFT, opt_.krylov.max_iterations, ctx_)
-                                    : SUNLinSol_SPGMR(y_, SUN_PREC_LEFT, opt_.krylov.max_iterations, ctx_);
-  if (!ls_) throw std::runtime_error("SUNDIALS: creating the Krylov solver failed");
-  check(ARKStepSetLinearSolver(mem_, ls_, nullptr), "SetLinearSolver");
-  check(ARKStepSetJacTimes(mem_, nullptr, &ArkodeImex::jtimes_callback), "SetJacTimes");
-  check(ARKStepSetPreconditioner(mem_, nullptr, &ArkodeImex::psolve_callback), "SetPreconditioner");
+  ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_);
+  ls_->set_gamma([this] {
+    double gamma = 0.0;
+    check(ARKStepGetCurrentGamma(mem_, &gamma), "GetCurrentGamma");
+    return gamma;
+  });
+  check(ARKStepSetLinearSolver(mem_, ls_->get(), nullptr), "SetLinearSolver");
   check(ARKStepSetLinear(mem_, 1), "SetLinear");  // L_n changes from step to step
   check(ARKStepSetPostprocessStepFn(mem_, &ArkodeImex::step_done_callback), "SetPostprocessStepFn");
   // Stage solves: the maximum-order predictor (method 1) starts Newton near the stage value, a linear

@@ -8,21 +8,24 @@
 // (time/viscous_operator.hpp), and the explicit part takes the rest, f_E = f - L_n v - b_n, so that
 // f_E + f_I = f at every stage. f_I is then exactly linear in y (ARKStepSetLinear: one Newton
 // iteration solves each stage) and its Jacobian is known, J v = L_n v on the velocity block: the
-// stage systems (I - gamma J) z = r are solved matrix-free by SUNDIALS' own Krylov solver (PCG or
-// GMRES) with a Jacobi preconditioner 1 - gamma diag(L_n), warm started by ARKStep's predictor. The
+// stage systems (I - gamma J) z = r are the identity off that block, and on it are solved matrix-free
+// by SUNDIALS' own Krylov solver (PCG or GMRES) with a Jacobi preconditioner 1 - gamma diag(L_n)
+// (time/stage_linear_solver.hpp), starting from ARKStep's predictor. The error test and the stage
+// solves' tolerance use weights with the state blocks' own scales (time/block_error_weights.hpp). The
 // remainder (L(x) - L_n) v left in f_E changes over a step by O(dt v / h) relative to L: far from
 // stiff at the acoustic step. The operator is rebuilt after every accepted step (the
 // postprocess-step callback) from that evaluation, which the next step's first stage reuses.
 #include <arkode/arkode_arkstep.h>
 #include <sundials/sundials_context.h>
-#include <sundials/sundials_linearsolver.h>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "sphmol/config/ark_pairs.hpp"
 #include "sphmol/time/imex_system.hpp"
 #include "sphmol/time/integrator.hpp"
+#include "sphmol/time/stage_linear_solver.hpp"
 #include "sphmol/time/viscous_solve.hpp"
 
 namespace sphmol {
@@ -56,9 +59,7 @@ class ArkodeImex final : public Integrator {
  private:
   static int fe_callback(double t, N_Vector y, N_Vector ydot, void* self);
   static int fi_callback(double t, N_Vector y, N_Vector ydot, void* self);
-  static int jtimes_callback(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector fy, void* self, N_Vector tmp);
-  static int psolve_callback(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z, double gamma, double delta,
-                             int lr, void* self);
+  static int weights_callback(N_Vector y, N_Vector w, void* self);
   static int stability_callback(N_Vector y, double t, double* hstab, void* self);
   static int step_done_callback(double t, N_Vector y, void* self);
   // f_E(t, y) unfrozen and W = L(x) v + b(x) of the state, from the cache when (t, y) is the last
@@ -70,7 +71,7 @@ class ArkodeImex final : public Integrator {
   ImexSystem* imex_ = nullptr;
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
-  SUNLinearSolver ls_ = nullptr;
+  std::unique_ptr<StageLinearSolver> ls_;
   void* mem_ = nullptr;
   double t_ = 0.0;
   std::size_t vb_ = 0, nv_ = 0;
@@ -78,6 +79,7 @@ class ArkodeImex final : public Integrator {
   std::vector<double> cache_y_, cache_fe_, cache_w_, wn_;
   double cache_t_ = 0.0;
   bool cached_ = false;
+  bool cache_frozen_ = false;  // the cached evaluation's operator is the frozen one (a step's start)
   long steps_before_ = 0, rejected_before_ = 0;
 };
 

@@ -20,6 +20,7 @@ ViscousSolve::~ViscousSolve() {
   if (ls_) SUNLinSolFree(ls_);
   if (x_) N_VDestroy(x_);
   if (b_) N_VDestroy(b_);
+  if (w_) N_VDestroy(w_);
   if (ctx_) SUNContext_Free(&ctx_);
 }
 
@@ -28,9 +29,11 @@ void ViscousSolve::resize(std::size_t n) {
   if (ls_) SUNLinSolFree(ls_);
   if (x_) N_VDestroy(x_);
   if (b_) N_VDestroy(b_);
+  if (w_) N_VDestroy(w_);
   n_ = n;
   x_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
   b_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+  w_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
   // Right preconditioning for GMRES, so that its test is on the true residual; PCG is symmetric.
   ls_ = opt_.solver == "pcg" ? SUNLinSol_PCG(x_, SUN_PREC_LEFT, opt_.max_iterations, ctx_)
                              : SUNLinSol_SPGMR(x_, SUN_PREC_RIGHT, opt_.max_iterations, ctx_);
@@ -64,12 +67,25 @@ int ViscousSolve::psolve(void* self, N_Vector r, N_Vector z, double, int) {
   return 0;
 }
 
+int ViscousSolve::run(const ViscousOperator& op, double gamma, const double* w, double delta, bool zero_guess) {
+  op_ = &op;
+  gamma_ = gamma;
+  if (w) std::copy(w, w + n_, N_VGetArrayPointer(w_));
+  // PCG scales the residual by its first vector, GMRES by both (P^-1 b and x).
+  SUNLinSolSetScalingVectors(ls_, w ? w_ : nullptr, w && opt_.solver != "pcg" ? w_ : nullptr);
+  SUNLinSolSetZeroGuess(ls_, zero_guess ? SUNTRUE : SUNFALSE);
+  SUNLinSolSetup(ls_, nullptr);
+  const int flag = SUNLinSolSolve(ls_, nullptr, x_, b_, delta);
+  last_its_ = SUNLinSolNumIters(ls_);
+  last_res_ = SUNLinSolResNorm(ls_);
+  iterations_ += last_its_;
+  return flag;
+}
+
 int ViscousSolve::solve(const ViscousOperator& op, double gamma, const double* r, double* x) {
   const std::size_t n = op.size();
   if (n == 0) return 0;
   resize(n);
-  op_ = &op;
-  gamma_ = gamma;
   double* xx = N_VGetArrayPointer(x_);
   double* bb = N_VGetArrayPointer(b_);
   std::copy(r, r + n, bb);
@@ -79,17 +95,29 @@ int ViscousSolve::solve(const ViscousOperator& op, double gamma, const double* r
     std::fill(x, x + n, 0.0);
     return 0;
   }
-  SUNLinSolSetZeroGuess(ls_, SUNFALSE);  // warm start: x holds the caller's guess
-  SUNLinSolSetup(ls_, nullptr);
-  const int flag = SUNLinSolSolve(ls_, nullptr, x_, b_, opt_.tolerance * norm);
-  const int its = SUNLinSolNumIters(ls_);
-  iterations_ += its;
+  // Warm start: x holds the caller's guess.
+  const int flag = run(op, gamma, nullptr, opt_.tolerance * norm, false);
   if (flag != SUNLS_SUCCESS)
     throw std::runtime_error("time.krylov: " + opt_.solver + " did not reach the tolerance " + std::to_string(opt_.tolerance) +
-                             " in " + std::to_string(its) + " iterations (time.krylov.max_iterations = " +
+                             " in " + std::to_string(last_its_) + " iterations (time.krylov.max_iterations = " +
                              std::to_string(opt_.max_iterations) + "; flag " + std::to_string(flag) + ")");
   std::copy(xx, xx + n, x);
-  return its;
+  return last_its_;
+}
+
+int ViscousSolve::solve_weighted(const ViscousOperator& op, double gamma, const double* r, double* x, const double* w,
+                                  double delta, bool zero_guess) {
+  const std::size_t n = op.size();
+  last_its_ = 0;
+  last_res_ = 0.0;
+  if (n == 0) return SUNLS_SUCCESS;
+  resize(n);
+  std::copy(r, r + n, N_VGetArrayPointer(b_));
+  std::copy(x, x + n, N_VGetArrayPointer(x_));
+  const int flag = run(op, gamma, w, delta, zero_guess);
+  const double* xx = N_VGetArrayPointer(x_);
+  std::copy(xx, xx + n, x);
+  return flag;
 }
 
 }  // namespace sphmol

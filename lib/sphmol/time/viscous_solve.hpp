@@ -29,21 +29,32 @@ class ViscousSolve {
   // x (in: initial guess, out: solution) and r: velocity blocks of op.size() values. Returns the
   // Krylov iterations taken; throws std::runtime_error when the solver does not converge.
   int solve(const ViscousOperator& op, double gamma, const double* r, double* x);
+  // As solve, but stops at ||w (r - (I - gamma L) x)||_2 <= delta for the weights w (op.size()
+  // values; null: unweighted), and returns the SUNDIALS flag (SUNLS_SUCCESS, or why not) instead of
+  // throwing. zero_guess: x holds zeros (saves the first product).
+  int solve_weighted(const ViscousOperator& op, double gamma, const double* r, double* x, const double* w, double delta,
+                      bool zero_guess);
+  int last_iterations() const { return last_its_; }
+  double last_residual() const { return last_res_; }
   long total_iterations() const { return iterations_; }
 
  private:
   static int atimes(void* self, N_Vector v, N_Vector z);
   static int psolve(void* self, N_Vector r, N_Vector z, double tol, int lr);
   void resize(std::size_t n);
+  // The Krylov solve of (I - gamma L) x = r into x_ from b_ (and the guess in x_); the SUNDIALS flag.
+  int run(const ViscousOperator& op, double gamma, const double* w, double delta, bool zero_guess);
 
   KrylovOptions opt_;
   SUNContext ctx_ = nullptr;
   SUNLinearSolver ls_ = nullptr;
-  N_Vector x_ = nullptr, b_ = nullptr;
+  N_Vector x_ = nullptr, b_ = nullptr, w_ = nullptr;
   std::size_t n_ = 0;
   const ViscousOperator* op_ = nullptr;
   double gamma_ = 0.0;
   long iterations_ = 0;
+  int last_its_ = 0;
+  double last_res_ = 0.0;
 };
 
 }  // namespace sphmol
