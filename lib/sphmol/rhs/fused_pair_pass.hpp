@@ -77,6 +77,11 @@ class FusedPairPass final : public Term<D> {
       const auto T = static_cast<std::size_t>(threads);
       buffers_.resize(T);
       deferred_.resize(T);
+      if (deferred_next_size_ < T) {
+        deferred_next_ = std::make_unique<PaddedCursor[]>(T);
+        deferred_next_size_ = T;
+      }
+      for (std::size_t t = 0; t < T; ++t) deferred_next_[t].value.store(0, std::memory_order_relaxed);
       if (w.pair_thread_seconds.size() < T) w.pair_thread_seconds.resize(T, 0.0);
       // Rows shared by cost in contiguous ranges, with helping at the end (rhs/row_schedule.hpp).
       schedule_.reset(threads, 2);
@@ -171,10 +176,11 @@ class FusedPairPass final : public Term<D> {
   // records: its own upper ones, just written, and for its lower part those of rows of smaller index,
   // written moments before in the same thread's ascending range (so records are read while still in
   // cache). A row whose lower part meets a chunk that is not ready yet (another thread's range, not
-  // reached) evaluates its lower pairs directly instead: the same numbers, so results do not depend on
-  // which happened. Readiness is kept per aligned block of RowSchedule::kChunk rows (the schedule
-  // cuts at multiples of it), checked once per block a row's sorted lower part enters. Wall rows read
-  // no record and run as in full rows. Called by every thread.
+  // reached) is deferred: after a barrier the deferred rows of all threads are shared out and summed
+  // from records (or, for a block that was never marked, from its lower pairs evaluated directly: the
+  // same numbers, so results do not depend on which happened). Readiness is kept per aligned block of
+  // RowSchedule::kChunk rows (the schedule cuts at multiples of it), checked once per block a chunk's
+  // rows reach. Wall rows read no record and run as in full rows. Called by every thread.
   void symmetric_rows(Workspace<D>& w) const {
     constexpr std::size_t C = RowSchedule::kChunk;
     const PairList& verlet = *w.verlet;
@@ -227,7 +233,7 @@ class FusedPairPass final : public Term<D> {
       }
       for (std::size_t i = i0; i < i1; ++i) {
         // A row that waits for records of a block not reached yet (the other thread's range) is
-        // summed after the schedule, when that block is most likely ready.
+        // summed after the schedule, when every thread has written its records.
         if (!block_ready && !(aligned && lower_ready(i))) {
           later.push_back(static_cast<std::uint32_t>(i));
           continue;
@@ -240,9 +246,21 @@ class FusedPairPass final : public Term<D> {
         sum_row(i, true);
       }
     });
-    // The deferred rows: from records where their blocks are ready now, else evaluated directly (the
-    // same numbers either way).
-    for (const std::uint32_t i : later) sum_row(i, lower_ready(i));
+    // The deferred rows, once every thread has written its records: shared out among the threads in
+    // chunks (after mixing, many of one thread's rows wait for the other's records, and a thread left
+    // alone with its own would keep the other waiting), each from records where its blocks are ready
+    // (every aligned one is now), else evaluated directly (the same numbers either way).
+#pragma omp barrier
+    const int threads = omp_get_num_threads();
+    for (int k = 0; k < threads; ++k) {
+      const auto owner = static_cast<std::size_t>((thread + k) % threads);
+      const std::vector<std::uint32_t>& rows = deferred_[owner];
+      for (;;) {
+        const std::size_t r0 = deferred_next_[owner].value.fetch_add(kDeferredChunk, std::memory_order_relaxed);
+        if (r0 >= rows.size()) break;
+        for (std::size_t r = r0; r < std::min(rows.size(), r0 + kDeferredChunk); ++r) sum_row(rows[r], lower_ready(rows[r]));
+      }
+    }
     w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;
 #pragma omp barrier
   }
@@ -254,6 +272,12 @@ class FusedPairPass final : public Term<D> {
   bool compact_fluid_ = false, compact_walls_ = false;
   mutable std::vector<RowBuffer<D>> buffers_;  // one per thread, kept between evaluations
   mutable std::vector<std::vector<std::uint32_t>> deferred_;  // per thread: rows summed after the schedule (symmetric)
+  struct alignas(64) PaddedCursor {
+    std::atomic<std::size_t> value{0};
+  };
+  mutable std::unique_ptr<PaddedCursor[]> deferred_next_;  // per thread's list: the next row to hand out
+  mutable std::size_t deferred_next_size_ = 0;
+  static constexpr std::size_t kDeferredChunk = 16;
   mutable RowSchedule schedule_;
   bool symmetric_form_ = false, symmetric_ = D <= 2;
   // Per aligned block of RowSchedule::kChunk fluid rows: the epoch its records were last written in.
