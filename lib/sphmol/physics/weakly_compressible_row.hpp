@@ -88,20 +88,15 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     if (g.periodic) same_h ? records<true, true>(w, i, j, n, kernel, rec) : records<false, true>(w, i, j, n, kernel, rec);
     else same_h ? records<true, false>(w, i, j, n, kernel, rec) : records<false, false>(w, i, j, n, kernel, rec);
   }
-  void sum_pair_records(Workspace<D>& w, std::size_t i, const PairRow<D>* lower, const std::uint32_t* twin,
-                        std::uint32_t n_lower, const double* upper, std::uint32_t n_upper, const double* all) const override {
+  void sum_pair_records(Workspace<D>& w, std::size_t i, const std::uint32_t* twin, std::uint32_t n_lower,
+                        const double* upper, std::uint32_t n_upper, const double* all) const override {
     double cont = 0.0, diff = 0.0, a[D] = {};
-    if (lower) {
-      if (uniform() & kSmoothingUniform) add_row<true, true>(w, i, *lower, cont, diff, a);
-      else add_row<true, false>(w, i, *lower, cont, diff, a);
-    } else {
-      // Lower pairs, recorded by the other particle: x_ji = -x_ij, so a - (-m(..)F x_ij) = a + record.
-      for (std::uint32_t k = 0; k < n_lower; ++k) {
-        const double* rk = all + static_cast<std::size_t>(twin[k]) * kRecord;
-        cont += rk[0];
-        for (int d = 0; d < D; ++d) a[d] += rk[1 + d];
-        if constexpr (WithDiffusion) diff += rk[2 + D];
-      }
+    // Lower pairs, recorded by the other particle: x_ji = -x_ij, so a - (-m(..)F x_ij) = a + record.
+    for (std::uint32_t k = 0; k < n_lower; ++k) {
+      const double* rk = all + static_cast<std::size_t>(twin[k]) * kRecord;
+      cont += rk[0];
+      for (int d = 0; d < D; ++d) a[d] += rk[1 + d];
+      if constexpr (WithDiffusion) diff += rk[2 + D];
     }
     for (std::uint32_t k = 0; k < n_upper; ++k) {
       const double* rk = upper + static_cast<std::size_t>(k) * kRecord;

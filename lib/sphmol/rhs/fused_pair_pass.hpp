@@ -15,6 +15,7 @@
 // for one more barrier and the records' memory traffic. The sums are the same numbers added in the
 // same order, so results equal the full rows' bit for bit, for any thread count.
 #include <algorithm>
+#include <cassert>
 #include <atomic>
 #include <memory>
 #include <omp.h>
@@ -176,11 +177,11 @@ class FusedPairPass final : public Term<D> {
   // records: its own upper ones, just written, and for its lower part those of rows of smaller index,
   // written moments before in the same thread's ascending range (so records are read while still in
   // cache). A row whose lower part meets a chunk that is not ready yet (another thread's range, not
-  // reached) is deferred: after a barrier the deferred rows of all threads are shared out and summed
-  // from records (or, for a block that was never marked, from its lower pairs evaluated directly: the
-  // same numbers, so results do not depend on which happened). Readiness is kept per aligned block of
-  // RowSchedule::kChunk rows (the schedule cuts at multiples of it), checked once per block a chunk's
-  // rows reach. Wall rows read no record and run as in full rows. Called by every thread.
+  // reached) is deferred: after a barrier, when every block is ready, the deferred rows of all threads
+  // are shared out and summed from records. Readiness is kept per aligned block of RowSchedule::kChunk
+  // rows: the fluid set starts at row 0 and the schedule cuts at multiples of kChunk, so every chunk
+  // is one block (or the set's last, shorter one). It is checked once per block a chunk's rows reach.
+  // Wall rows read no record and run as in full rows. Called by every thread.
   void symmetric_rows(Workspace<D>& w) const {
     constexpr std::size_t C = RowSchedule::kChunk;
     const PairList& verlet = *w.verlet;
@@ -207,11 +208,9 @@ class FusedPairPass final : public Term<D> {
       std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release below
       return all;
     };
-    auto sum_row = [&, off, up, rec, twin, records, R, term](std::size_t i, bool all) {
-      PairRow<D> lower;
-      if (!all) lower = buf.row(kernel_->fill_segment(verlet, i, off[i], up[i], buf));
-      term->sum_pair_records(w, i, all ? nullptr : &lower, twin + off[i], up[i] - off[i],
-                             records + static_cast<std::size_t>(rec[i]) * R, off[i + 1] - up[i], records);
+    auto sum_row = [&, off, up, rec, twin, records, R, term](std::size_t i) {
+      term->sum_pair_records(w, i, twin + off[i], up[i] - off[i], records + static_cast<std::size_t>(rec[i]) * R,
+                             off[i + 1] - up[i], records);
     };
     std::vector<std::uint32_t>& later = deferred_[static_cast<std::size_t>(thread)];
     later.clear();
@@ -219,22 +218,17 @@ class FusedPairPass final : public Term<D> {
       if (set != 0) return wall_rows(w, buf, i0, i1);
       for (std::size_t i = i0; i < i1; ++i)
         term->pair_records(w, i, vj + up[i], off[i + 1] - up[i], *kernel_, records + static_cast<std::size_t>(rec[i]) * R);
-      // A chunk is one aligned block (or the set's last, shorter one); any other chunk marks nothing
-      // and its rows are summed after the schedule.
-      const bool aligned = i0 % C == 0;
-      bool block_ready = aligned;
-      if (aligned) {
-        const std::size_t b = i0 / C;
-        ready[b].store(epoch, std::memory_order_release);
-        block_ready = n_deps[b] != PairTwins::kNoDeps;
-        for (std::uint32_t k = 0; block_ready && k < n_deps[b]; ++k)
-          block_ready = ready[deps[b * PairTwins::kMaxDeps + k]].load(std::memory_order_relaxed) == epoch;
-        std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
-      }
+      assert(i0 % C == 0 && "a fluid chunk is one aligned block (RowSchedule::place)");
+      const std::size_t b = i0 / C;
+      ready[b].store(epoch, std::memory_order_release);
+      bool block_ready = n_deps[b] != PairTwins::kNoDeps;
+      for (std::uint32_t k = 0; block_ready && k < n_deps[b]; ++k)
+        block_ready = ready[deps[b * PairTwins::kMaxDeps + k]].load(std::memory_order_relaxed) == epoch;
+      std::atomic_thread_fence(std::memory_order_acquire);  // pairs with the release above
       for (std::size_t i = i0; i < i1; ++i) {
         // A row that waits for records of a block not reached yet (the other thread's range) is
         // summed after the schedule, when every thread has written its records.
-        if (!block_ready && !(aligned && lower_ready(i))) {
+        if (!block_ready && !lower_ready(i)) {
           later.push_back(static_cast<std::uint32_t>(i));
           continue;
         }
@@ -243,13 +237,12 @@ class FusedPairPass final : public Term<D> {
         if (i + 1 < i1)
           for (std::uint32_t q = off[i + 1], e = up[i + 1]; q < e; ++q)
             __builtin_prefetch(records + static_cast<std::size_t>(twin[q]) * R, 0, 3);
-        sum_row(i, true);
+        sum_row(i);
       }
     });
     // The deferred rows, once every thread has written its records: shared out among the threads in
     // chunks (after mixing, many of one thread's rows wait for the other's records, and a thread left
-    // alone with its own would keep the other waiting), each from records where its blocks are ready
-    // (every aligned one is now), else evaluated directly (the same numbers either way).
+    // alone with its own would keep the other waiting), from records: every block is ready now.
 #pragma omp barrier
     const int threads = omp_get_num_threads();
     for (int k = 0; k < threads; ++k) {
@@ -258,7 +251,7 @@ class FusedPairPass final : public Term<D> {
       for (;;) {
         const std::size_t r0 = deferred_next_[owner].value.fetch_add(kDeferredChunk, std::memory_order_relaxed);
         if (r0 >= rows.size()) break;
-        for (std::size_t r = r0; r < std::min(rows.size(), r0 + kDeferredChunk); ++r) sum_row(rows[r], lower_ready(rows[r]));
+        for (std::size_t r = r0; r < std::min(rows.size(), r0 + kDeferredChunk); ++r) sum_row(rows[r]);
       }
     }
     w.pair_thread_seconds[static_cast<std::size_t>(thread)] += omp_get_wtime() - start;

@@ -58,11 +58,6 @@ class KernelPass {
   // terms that add nothing for them, PairTerm::zero_beyond_support; every kernel is exactly zero
   // beyond its support, tested), and the compaction stage is skipped.
   virtual std::uint32_t fill_row(const PairList& verlet, std::size_t i, RowBuffer<D>& out, bool compact) const = 0;
-  // The Verlet entries [q0, q1) of row i only, every one kept (skin pairs with W = F = 0), into a
-  // per-thread buffer; returns q1 - q0. For symmetric pair passes (rhs/symmetric_pairs.hpp), which
-  // evaluate a pair once, in the row of its lower index. Thread-safe after prepare.
-  virtual std::uint32_t fill_segment(const PairList& verlet, std::size_t i, std::uint32_t q0, std::uint32_t q1,
-                                     RowBuffer<D>& out) const = 0;
   // F_k = (dW/dr)/r at separations r2[k], k < n, for a constant h (the separations' geometry is
   // geometry()): the same numbers fill_row gives a pair at that r2. For terms that evaluate their
   // pairs themselves (PairTerm::pair_records). False from a pass whose F depends on the pair (variable h).
@@ -122,14 +117,6 @@ class KernelPassRows : public KernelPass<D> {
     out.reserve(n);
     return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, compact)
                               : staged<false>(verlet.j.data() + q0, n, i, out, compact);
-  }
-
-  std::uint32_t fill_segment(const PairList& verlet, std::size_t i, std::uint32_t q0, std::uint32_t q1,
-                             RowBuffer<D>& out) const final {
-    const std::uint32_t n = q1 - q0;
-    out.reserve(n);
-    return geometry_.periodic ? staged<true>(verlet.j.data() + q0, n, i, out, false)
-                              : staged<false>(verlet.j.data() + q0, n, i, out, false);
   }
 
  protected:

@@ -62,12 +62,10 @@ class PairTerm : public Term<D> {
   // so that no per-pair buffer is written and read back between the kernel and the term.
   virtual void pair_records(Workspace<D>&, std::size_t, const std::uint32_t*, std::uint32_t, const KernelPass<D>&,
                             double*) const {}
-  // Fluid row i from records: its n_lower lower pairs through twin[k] (record indices into `all`), or,
-  // when `lower` is given, evaluated directly from that row of them (their records were not ready),
+  // Fluid row i from records: its n_lower lower pairs through twin[k] (record indices into `all`),
   // then its n_upper own records `upper`, in row order.
-  virtual void sum_pair_records(Workspace<D>&, std::size_t, const PairRow<D>* /*lower*/, const std::uint32_t* /*twin*/,
-                                std::uint32_t /*n_lower*/, const double* /*upper*/, std::uint32_t /*n_upper*/,
-                                const double* /*all*/) const {}
+  virtual void sum_pair_records(Workspace<D>&, std::size_t, const std::uint32_t* /*twin*/, std::uint32_t /*n_lower*/,
+                                const double* /*upper*/, std::uint32_t /*n_upper*/, const double* /*all*/) const {}
 };
 
 template <int D, class Derived>
