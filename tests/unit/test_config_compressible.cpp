@@ -82,11 +82,12 @@ TEST_CASE("shock_tube config: setup, smoothing, viscosity form and conductivity 
   const Config c = load_config(sod);
   const auto& st = c.settings<ShockTubeSettings>();
   CHECK(st.setup == "equal_mass");
-  CHECK(st.smoothing == 1.0);
+  CHECK(st.smoothing == 0.25);
   CHECK(c.discretization.artificial_viscosity.form == "monaghan_1997");
   CHECK(c.discretization.artificial_viscosity.beta == 2.0);
   CHECK_FALSE(c.discretization.artificial_conductivity.enabled);
-  // Defaults: equal masses across a jump smooth it over one spacing; equal spacing keeps it sharp;
+  // Defaults: equal masses across a jump smooth it over a quarter spacing in 1D and one spacing in 2D
+  // (sod.yaml); equal spacing keeps it sharp;
   // the signal-velocity form defaults to beta = 2 (Price 2008).
   const Config d = load_config_string(
       "case: shock_tube\ndimension: 1\nfluid: {kinematic_viscosity: 0, eos: {type: ideal_gas, gamma: 1.4}}\n"
@@ -95,14 +96,21 @@ TEST_CASE("shock_tube config: setup, smoothing, viscosity form and conductivity 
       "smoothing_length: ode, neighbor_search: kdtree, artificial_viscosity: {form: monaghan_1997}, "
       "artificial_conductivity: {}}\ntime: {t_end: 0.2}\n");
   CHECK(d.settings<ShockTubeSettings>().setup == "equal_mass");
-  CHECK(d.settings<ShockTubeSettings>().smoothing == 1.0);
+  CHECK(d.settings<ShockTubeSettings>().smoothing == 0.25);
   CHECK(d.discretization.artificial_viscosity.beta == 2.0);
   CHECK(d.discretization.artificial_conductivity.enabled);
   CHECK(d.discretization.artificial_conductivity.alpha == 1.0);
   CHECK(load_config(shock).settings<ShockTubeSettings>().smoothing == 0.0);  // equal_spacing
+  const Config d2 = load_config_string(
+      "case: shock_tube\ndimension: 2\nfluid: {kinematic_viscosity: 0, eos: {type: ideal_gas, gamma: 1.4}}\n"
+      "geometry: {tube_length: 1.0, tube_width: 0.05}\nshock_tube: {left: {density: 1, pressure: 1}, right: {density: 0.125, pressure: 0.1}}\n"
+      "discretization: {spacing: 0.01, kernel: truncated_exponential, density: continuity, energy: true, "
+      "smoothing_length: ode, neighbor_search: kdtree, artificial_viscosity: {form: monaghan_1997}, boundary: ghost}\n"
+      "time: {t_end: 0.2}\n");
+  CHECK(d2.settings<ShockTubeSettings>().smoothing == 1.0);  // 2D: a sharper jump ejects a light particle
   // Round trip of the new keys.
   const Config r = load_config_string(to_yaml(d));
-  CHECK(r.settings<ShockTubeSettings>().smoothing == 1.0);
+  CHECK(r.settings<ShockTubeSettings>().smoothing == 0.25);
   CHECK(r.discretization.artificial_viscosity.form == "monaghan_1997");
   CHECK(r.discretization.artificial_conductivity.enabled);
   // Errors.
