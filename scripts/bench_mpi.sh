@@ -5,11 +5,13 @@
 # extrapolated to more ranks from the measured halo volumes (the model is printed with the table).
 #
 #   scripts/bench_mpi.sh [--binary build/mpi/sph-mol] [--config verification/dam_break.yaml]
-#                        [--ranks "1 2"] [--spacing 0.01] [--t-end 0.005] [--weak]
+#                        [--ranks "1 2"] [--spacing 0.01] [--t-end 0.005] [--weak [--unit 1]]
 #                        [--model-ranks "4 16 64"] [--model-from R] [--output out/bench_mpi] [--set key=value ...]
 #
 # Strong scaling (default): the same scene on every rank count. --weak: the spacing shrinks as
-# ranks^(-1/D), so that the particles per rank stay about the same. One OpenMP thread per rank.
+# ranks^(-1/D), so that the particles per rank stay about the same, rounded so that --unit (a length
+# the scene needs to be a whole number of spacings, e.g. 1 m for the dam break's column) stays
+# whole. One OpenMP thread per rank.
 # Writes bench_mpi.csv (one row per rank count) and model.csv (the extrapolation) in the output
 # folder and prints both. The model is fitted to the run on --model-from ranks (default: the most
 # ranks measured that do not exceed the machine's cores; oversubscribed ranks mostly wait). Needs
@@ -22,6 +24,7 @@ ranks="1 2"
 spacing=0.01
 t_end=0.005
 weak=0
+unit=""
 model_ranks="4 16 64"
 model_from=""
 output=out/bench_mpi
@@ -34,11 +37,12 @@ while [[ $# -gt 0 ]]; do
     --spacing) spacing="$2"; shift 2 ;;
     --t-end) t_end="$2"; shift 2 ;;
     --weak) weak=1; shift ;;
+    --unit) unit="$2"; shift 2 ;;
     --model-ranks) model_ranks="$2"; shift 2 ;;
     --model-from) model_from="$2"; shift 2 ;;
     --output) output="$2"; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "bench_mpi.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -62,7 +66,17 @@ mpi_args=(--oversubscribe)
 [[ $EUID -eq 0 ]] && mpi_args+=(--allow-run-as-root)  # Open MPI refuses root unless told (containers, CI)
 for r in $ranks; do
   dx=$spacing
-  if [[ $weak -eq 1 ]]; then dx=$(python3 -c "print(repr($spacing * $r ** (-1.0 / $dimension)))"); fi
+  if [[ $weak -eq 1 ]]; then
+    dx=$(python3 - "$spacing" "$r" "$dimension" "$unit" <<'EOF'
+import sys
+dx, r, dim, unit = float(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+dx *= r ** (-1.0 / dim)
+if unit:
+    dx = float(unit) / round(float(unit) / dx)
+print(repr(dx))
+EOF
+)
+  fi
   run_dir="$output/ranks_$r"
   echo "== $r rank(s), spacing $dx" >&2
   # Arguments go to mpirun and sph-mol as an array: no shell parses them.
