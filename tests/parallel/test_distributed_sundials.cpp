@@ -124,8 +124,8 @@ Config channel(const std::string& file, const std::string& integrator, const std
 const std::vector<std::string> monitored{"min_wall_gap", "wall_penetrations"};
 
 Config dam_break(const std::string& integrator, const std::vector<std::string>& more = {}) {
-  std::vector<std::string> o{"discretization.spacing=0.04", "time.integrator=" + integrator, "time.t_end=0.06",
-                             "output.times=[0.03,0.06]", "output.plots=false"};
+  std::vector<std::string> o{"discretization.spacing=0.04", "time.integrator=" + integrator, "time.t_end=0.04",
+                             "output.times=[0.02,0.04]", "output.plots=false"};
   o.insert(o.end(), more.begin(), more.end());
   return load_config(verification("dam_break.yaml"), o);
 }
@@ -168,14 +168,14 @@ TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues ov
   // One folder for all ranks (rank 0 writes, every rank reads the checkpoint), one per rank count.
   const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
   const fs::path dir = fs::temp_directory_path() / ("sphmol-sundials-restart-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
-  const Config c = dam_break("arkode_erk", {"output.checkpoint_every=0.03"});
+  const Config c = dam_break("arkode_erk", {"output.checkpoint_every=0.02"});
   run(c, &partitioner, "", (dir / "split").string());
   comm.barrier();  // the checkpoint is on disk
-  const Finished split = run(c, &partitioner, (dir / "split" / "checkpoint-0.03").string());
+  const Finished split = run(c, &partitioner, (dir / "split" / "checkpoint-0.02").string());
   CHECK(split.summary["status"] == "completed");
   if (comm.rank() == 0) {
     run(c, nullptr, "", (dir / "serial").string());
-    const Finished serial = run(c, nullptr, (dir / "serial" / "checkpoint-0.03").string());
+    const Finished serial = run(c, nullptr, (dir / "serial" / "checkpoint-0.02").string());
     CHECK(serial.summary["status"] == "completed");
     CHECK(split.summary["steps"] == serial.summary["steps"]);
     CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
