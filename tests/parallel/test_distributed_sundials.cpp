@@ -100,7 +100,7 @@ Finished check_same_as_serial(const Config& c, const std::vector<std::string>& o
     CHECK(split.summary["rejected_steps"] == serial.summary["rejected_steps"]);
     CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
     INFO(comm.size() << " ranks, " << split.summary["steps"] << " steps");
-    CHECK(relative_difference(split.y, serial.y, serial.summary) == 0.0);  // how far, when it fails
+    INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
     CHECK(same_bits(split.y, serial.y));
     nlohmann::json a = split.summary["final_errors"], b = serial.summary["final_errors"];
     for (const auto& k : output_only) {
@@ -180,7 +180,7 @@ TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues ov
     CHECK(split.summary["steps"] == serial.summary["steps"]);
     CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
     INFO(comm.size() << " ranks");
-    CHECK(relative_difference(split.y, serial.y, serial.summary) == 0.0);
+    INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
     CHECK(same_bits(split.y, serial.y));
   }
   comm.barrier();
