@@ -1,7 +1,8 @@
 # `sph-mol` itself under mpirun (cmake -P, from tests/CMakeLists.txt): the dam break on 1 rank and
 # on 3 ranks writes the same files byte for byte (VTK particles, the front positions) and the same
 # checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
-# same state; rank 0 alone prints the summary; a setting a run over ranks does not support ends
+# same state; ARKODE and CVODE on 2 ranks end in the particles of 1 rank; rank 0 alone prints the
+# summary; a setting a run over ranks does not support ends
 # every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR,
 # WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
@@ -48,6 +49,25 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/fluid_0
 if(NOT same EQUAL 0)
   message(FATAL_ERROR "3 ranks' checkpoint continued on 2 ranks: the final particles differ from the uninterrupted run")
 endif()
+
+# ARKODE and CVODE: on 2 ranks the same particles as on 1 (which runs serially), byte for byte.
+foreach(integrator arkode_erk cvode_adams)
+  set(short --set discretization.spacing=0.04 --set time.integrator=${integrator} --set time.t_end=0.02
+            --set output.times=[0.02] --set output.plots=false --set output.vtk=true --quiet)
+  foreach(n 1 2)
+    execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} ${n} ${FLAGS} ${SPHMOL} --config ${dam} ${short}
+                            --output ${WORK_DIR}/${integrator}-n${n}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "${integrator} on ${n} ranks: exit ${rc}\n${out}\n${err}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/${integrator}-n1/fluid_0001.vtp
+                          ${WORK_DIR}/${integrator}-n2/fluid_0001.vtp RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "${integrator}: the final particles differ between 1 and 2 ranks")
+  endif()
+endforeach()
 
 execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --config ${SOURCE_DIR}/verification/poiseuille.yaml
                         --set time.t_end=0.01 --set output.times=[0.01] --output ${WORK_DIR}/refused

@@ -22,6 +22,12 @@
 // rank's pair work has drifted past `rebalance_threshold` times the mean, the particles are
 // partitioned again by their current pair counts and migrate with their state (repartition(),
 // between steps, with whatever per-particle arrays the integrator carries).
+//
+// SUNDIALS integrators wrap the rank's state in an MPI vector (wrap_state: N_VMake_Parallel over
+// the owned rows, no copy) whose weighted RMS norm is summed in the serial order
+// (serial_order_norm.hpp): every rank sees the serial run's error norms and takes its steps. An
+// evaluation at a stage state refreshes the halo from that state like any other, since the state
+// alone is exchanged per evaluation.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -33,13 +39,15 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/halo.hpp"
 #include "sphmol/parallel/rcb_partition.hpp"
+#include "sphmol/parallel/serial_order_norm.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/time/ode_system.hpp"
+#include "sphmol/time/state_vector.hpp"
 
 namespace sphmol::parallel {
 
 template <int D>
-class DistributedSystem final : public OdeSystem {
+class DistributedSystem final : public OdeSystem, public StateVectorMaker {
  public:
   // Collective. `whole`: the whole scene (every rank builds it, from `config`), before any
   // evaluation; its particle index is the global id. imbalance_tolerance (> 1): the partition's aim
@@ -51,8 +59,12 @@ class DistributedSystem final : public OdeSystem {
   ~DistributedSystem() override;
 
   std::size_t size() const override { return layout_.size(); }
-  // Collective (every rank evaluates at the same t, as the leapfrogs do).
+  // Collective: every rank evaluates at the same t (the integrators' step decisions rest on
+  // reductions, the same on every rank).
   void rhs(double t, const double* y, double* ydot) override;
+  // Collective: an MPI vector over this rank's part of the state (N_VMake_Parallel, no copy), its
+  // norm summed in the serial order.
+  N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const override;
   double stable_step() const override { return stable_step_; }
   double first_stable_step() const { return first_stable_step_; }  // of the first evaluation
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
@@ -117,6 +129,7 @@ class DistributedSystem final : public OdeSystem {
   Communicator comm_;
   Config config_;
   std::unique_ptr<RcbPartitioner<D>> rcb_;
+  std::unique_ptr<SerialOrderNorm> norm_;  // the state vector's norm for SUNDIALS (wrap_state)
   double rebalance_threshold_ = 0.0;
   bool replanned_ = false;        // a plan since the last imbalanced()
   bool plan_due_ = false;         // the owned particles changed: plan at the next evaluation

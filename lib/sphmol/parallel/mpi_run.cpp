@@ -31,6 +31,13 @@ class MpiRun final : public PartitionedRun<D> {
     // which is restored after the integrator is started on the new share (its first evaluation
     // there is replaced by the restored f: the steps go on bit for bit).
     nlohmann::json js = integrator.save_state();
+    // ARKODE and CVODE keep their step history (error controller, Adams history) inside SUNDIALS;
+    // starting them again on a new share would change the steps from the serial run's, so their
+    // particles stay where they are (counted in the summary).
+    if (!js.contains("f")) {
+      ++declined_;
+      return;
+    }
     std::vector<double> f = decode_doubles(js.at("f").get<std::string>()), c;
     std::vector<std::vector<double>*> positions;
     if (js.contains("c")) {
@@ -47,6 +54,7 @@ class MpiRun final : public PartitionedRun<D> {
   // latter carried in the position blocks of a state-length array).
   nlohmann::json whole_integrator_state(const nlohmann::json& state) override {
     nlohmann::json js = state;
+    if (!js.contains("f")) return js;  // ARKODE, CVODE: no per-particle arrays (a step size, counters)
     std::vector<double> whole;
     sys_.gather(decode_doubles(js.at("f").get<std::string>()).data(), whole);
     js["f"] = encode_doubles(whole);
@@ -99,6 +107,7 @@ class MpiRun final : public PartitionedRun<D> {
             {"load_imbalance", s.imbalance},
             {"load_imbalance_last_plan", s.imbalance_seen},
             {"repartitions", s.repartitions},
+            {"repartitions_declined", declined_},
             {"halo_depth_list_radii", s.depth},
             {"halo_plans", s.plans},
             {"owned_particles", owned},
@@ -117,6 +126,7 @@ class MpiRun final : public PartitionedRun<D> {
   std::vector<double> y_;
   DistributedHealthCheck<D> health_;
   std::vector<std::string> whole_terms_;
+  long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
 };
 
 // What the distributed system does not support yet: a ConfigError naming the keys, on every rank.
@@ -124,8 +134,9 @@ template <int D>
 void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
   const auto& disc = config.discretization;
   std::vector<std::string> why;
-  if (config.time.integrator != "leapfrog" && config.time.integrator != "leapfrog_kdk")
-    why.push_back("time.integrator: '" + config.time.integrator + "' (only leapfrog and leapfrog_kdk run over ranks)");
+  const std::string& integrator = config.time.integrator;
+  if (integrator != "leapfrog" && integrator != "leapfrog_kdk" && integrator != "arkode_erk" && integrator != "cvode_adams")
+    why.push_back("time.integrator: '" + integrator + "' (leapfrog, leapfrog_kdk, arkode_erk and cvode_adams run over ranks)");
   if (disc.boundary != "wall_particles") why.push_back("discretization.boundary: '" + disc.boundary + "' (only wall_particles)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
   if (disc.particle_shifting.enabled) why.push_back("discretization.particle_shifting");

@@ -12,6 +12,7 @@
 
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/erk_table.hpp"
+#include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
 
@@ -59,11 +60,15 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   sys_ = &sys;
   t_ = t0;
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
-  // The N_Vector wraps the caller's storage (no copy); with several threads the OpenMP vector
+  // The N_Vector wraps the caller's storage (no copy): the system's own vector when its state is
+  // split over processes (time/state_vector.hpp); else, with several threads, the OpenMP vector
   // runs the integrator's vector operations in parallel as well.
   const int threads = omp_get_max_threads();
-  y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(sys.size()), y, threads, ctx_)
-                   : N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+  if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
+    y_ = split->wrap_state(y, sys.size(), ctx_);
+  else
+    y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(sys.size()), y, threads, ctx_)
+                     : N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

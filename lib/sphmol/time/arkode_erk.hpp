@@ -1,7 +1,8 @@
 #pragma once
 // SUNDIALS ARKODE ERKStep: any explicit Butcher table by name, adaptive (rtol/atol) with the CFL
-// limit supplied through the stability callback, or fixed step. The serial N_Vector wraps the
-// caller's state storage (N_VMake_Serial: no copy).
+// limit supplied through the stability callback, or fixed step. The N_Vector wraps the caller's
+// state storage (no copy): serial or OpenMP, or the system's own when its state is split over
+// processes (time/state_vector.hpp).
 #include <arkode/arkode_erkstep.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
 
@@ -42,7 +43,11 @@ void CvodeAdams::initialize(OdeSystem& sys, double t0, double* y) {
   sys_ = &sys;
   t_ = t0;
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
-  y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+  // The N_Vector wraps the caller's storage (no copy); over processes, the system's own vector.
+  if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
+    y_ = split->wrap_state(y, sys.size(), ctx_);
+  else
+    y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

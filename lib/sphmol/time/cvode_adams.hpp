@@ -3,7 +3,8 @@
 // the fixed-point (functional) nonlinear iteration of SUNNonlinSol_FixedPoint: no Jacobian.
 // Tolerances rtol/atol. CVODE has no stability callback, so the CFL limit is imposed through
 // CVodeSetMaxStep, updated after every step from the stable step of the latest RHS evaluation.
-// The serial N_Vector wraps the caller's state storage (N_VMake_Serial: no copy).
+// The N_Vector wraps the caller's state storage (no copy): serial, or the system's own when its
+// state is split over processes (time/state_vector.hpp).
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>

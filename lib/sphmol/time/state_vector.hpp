@@ -1,0 +1,23 @@
+#pragma once
+// How a SUNDIALS integrator wraps the state it advances in an N_Vector, without copying it. An
+// OdeSystem whose state is one process's whole state says nothing, and the integrator makes its own
+// serial (or OpenMP) vector. An OdeSystem whose state is split over processes
+// (parallel/distributed_system.hpp) also derives from StateVectorMaker, as a system with a stiff
+// part derives from ImexSystem, and supplies a vector whose reductions (error norms, dot products,
+// minima) span every process: all of them see the same norms and so take the same steps.
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_nvector.h>
+
+#include <cstddef>
+
+namespace sphmol {
+
+class StateVectorMaker {
+ public:
+  virtual ~StateVectorMaker() = default;
+  // An N_Vector over `length` doubles at `data` (this process's part of the state), owned by the
+  // caller (N_VDestroy). Collective when the state is split over processes.
+  virtual N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const = 0;
+};
+
+}  // namespace sphmol

@@ -1,0 +1,188 @@
+// ARKODE (ERKStep) and CVODE (Adams) over ranks (parallel/mpi_run.hpp through run_case): the state
+// is an MPI vector over the ranks' owned rows whose weighted RMS norm is summed in the serial order
+// (parallel/serial_order_norm.hpp), so the steps, the RHS evaluations and the final state are the
+// serial run's to the bit on any rank count. The dam break tells: its adaptive steps amplify a norm
+// rounded otherwise (the MPI vector's own per-rank partial sums) into another step sequence within
+// 0.01 s, and the states then differ at the tolerance's level (about 1e-5 relative). Rank 0 runs
+// the serial reference.
+#include <catch2/catch.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#include "sphmol/run/run_case.hpp"
+
+using namespace sphmol;
+using namespace sphmol::parallel;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
+
+struct Finished {
+  nlohmann::json summary;
+  std::vector<double> y;
+};
+
+Finished run(const Config& c, const RunPartitioner* partitioner, const std::string& restart_from = "",
+             const std::string& output_dir = "") {
+  Finished f;
+  RunOptions opt;
+  opt.write_files = !output_dir.empty();
+  opt.output_dir = output_dir;
+  opt.restart_from = restart_from;
+  opt.final_state = &f.y;
+  opt.partitioner = partitioner;
+  f.summary = run_case(c, opt);
+  return f;
+}
+
+// The largest difference between two whole states relative to each quantity's own scale: positions
+// against the largest |x| over all position blocks, velocities against the largest |v|, then the
+// fluid densities and the wall densities each against their largest value. (A velocity component
+// that is zero but for round-off, such as a channel's cross-stream one, is measured against the
+// flow's speed, not against itself.)
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b, const nlohmann::json& summary) {
+  if (a.size() != b.size()) return INFINITY;
+  const auto D = summary["dimension"].get<std::size_t>();
+  const auto n = summary["particles"]["fluid"].get<std::size_t>();
+  const std::size_t fluid_blocks = a.size() / n;  // positions, velocities, density
+  std::vector<std::pair<std::size_t, std::size_t>> groups{{0, D * n}, {D * n, 2 * D * n}};
+  if (fluid_blocks > 2 * D) groups.emplace_back(2 * D * n, fluid_blocks * n);
+  if (fluid_blocks * n < a.size()) groups.emplace_back(fluid_blocks * n, a.size());
+  double worst = 0.0;
+  for (const auto& [lo, hi] : groups) {
+    double scale = 0.0, diff = 0.0;
+    for (std::size_t k = lo; k < hi; ++k) {
+      scale = std::max(scale, std::abs(b[k]));
+      diff = std::max(diff, std::abs(a[k] - b[k]));
+    }
+    worst = std::max(worst, scale > 0.0 ? diff / scale : diff);
+  }
+  return worst;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// The serial reference of a config, once per config, on rank 0.
+const Finished& serial_run(const Config& c) {
+  static std::map<std::string, Finished> runs;
+  const std::string key = to_yaml(c);
+  if (!runs.count(key)) runs.emplace(key, run(c, nullptr));
+  return runs.at(key);
+}
+
+// The split run against the serial one: the same steps, evaluations and rejections, the same final
+// state to the bit and the same measurements.
+// `output_only`: final_errors keys of a case's own per-evaluation monitor, which a run over ranks
+// runs at output times only (they may differ).
+Finished check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
+  const Finished split = run(c, &partitioner);
+  CHECK(split.summary["status"] == "completed");
+  if (comm.rank() == 0) {
+    const Finished& serial = serial_run(c);
+    REQUIRE(serial.summary["status"] == "completed");
+    CHECK(split.summary["steps"] == serial.summary["steps"]);
+    CHECK(split.summary["rejected_steps"] == serial.summary["rejected_steps"]);
+    CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
+    INFO(comm.size() << " ranks, " << split.summary["steps"] << " steps");
+    INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
+    CHECK(same_bits(split.y, serial.y));
+    nlohmann::json a = split.summary["final_errors"], b = serial.summary["final_errors"];
+    for (const auto& k : output_only) {
+      CHECK(a.contains(k));
+      a.erase(k);
+      b.erase(k);
+    }
+    CHECK(a == b);
+    CHECK(split.summary["parallel"]["ranks"] == comm.size());
+  }
+  return split;
+}
+
+Config channel(const std::string& file, const std::string& integrator, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> o{"discretization.particles_across=20", "time.integrator=" + integrator, "time.t_end=0.03",
+                             "output.times=[0.01,0.03]", "output.plots=false"};
+  o.insert(o.end(), more.begin(), more.end());
+  return load_config(verification(file), o);
+}
+
+const std::vector<std::string> monitored{"min_wall_gap", "wall_penetrations"};
+
+Config dam_break(const std::string& integrator, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> o{"discretization.spacing=0.04", "time.integrator=" + integrator, "time.t_end=0.04",
+                             "output.times=[0.02,0.04]", "output.plots=false"};
+  o.insert(o.end(), more.begin(), more.end());
+  return load_config(verification("dam_break.yaml"), o);
+}
+
+}  // namespace
+
+TEST_CASE("distributed run: Poiseuille with ARKODE equals the serial run bit for bit", "[parallel][run][sundials]") {
+  SECTION("the default table (Dormand-Prince)") { check_same_as_serial(channel("poiseuille.yaml", "arkode_erk")); }
+  SECTION("a named table") {
+    check_same_as_serial(channel("poiseuille.yaml", "arkode_erk", {"time.table=ARKODE_BOGACKI_SHAMPINE_4_2_3"}));
+  }
+}
+
+TEST_CASE("distributed run: Couette with CVODE Adams equals the serial run bit for bit", "[parallel][run][sundials]") {
+  check_same_as_serial(channel("couette.yaml", "cvode_adams"));
+}
+
+TEST_CASE("distributed run: the dam break with ARKODE and CVODE equals the serial run bit for bit",
+          "[parallel][run][sundials]") {
+  SECTION("arkode_erk") {
+    const Finished split = check_same_as_serial(dam_break("arkode_erk"), monitored);
+    // Stage states at which the halo had to be planned again: the particles moved.
+    CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
+  }
+  SECTION("cvode_adams") { check_same_as_serial(dam_break("cvode_adams"), monitored); }
+}
+
+TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which would restart it", "[parallel][run][sundials]") {
+  // A threshold of 1 asks for a new partition at every re-plan; the leapfrogs would migrate, ARKODE
+  // stays on its partition (starting it again would change its steps) and still takes the serial steps.
+  const Finished split = check_same_as_serial(dam_break("arkode_erk"), monitored, 1.0);
+  CHECK(split.summary["parallel"]["repartitions"] == 0);
+  if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions_declined"].get<long>() > 0);
+}
+
+TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues over ranks as the serial one does serially",
+          "[parallel][run][sundials][restart]") {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  // One folder for all ranks (rank 0 writes, every rank reads the checkpoint), one per rank count.
+  const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-sundials-restart-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
+  const Config c = dam_break("arkode_erk", {"output.checkpoint_every=0.02"});
+  run(c, &partitioner, "", (dir / "split").string());
+  comm.barrier();  // the checkpoint is on disk
+  const Finished split = run(c, &partitioner, (dir / "split" / "checkpoint-0.02").string());
+  CHECK(split.summary["status"] == "completed");
+  if (comm.rank() == 0) {
+    run(c, nullptr, "", (dir / "serial").string());
+    const Finished serial = run(c, nullptr, (dir / "serial" / "checkpoint-0.02").string());
+    CHECK(serial.summary["status"] == "completed");
+    CHECK(split.summary["steps"] == serial.summary["steps"]);
+    CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
+    INFO(comm.size() << " ranks");
+    INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
+    CHECK(same_bits(split.y, serial.y));
+  }
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(dir);
+}
