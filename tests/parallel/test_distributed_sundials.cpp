@@ -1,6 +1,6 @@
 // ARKODE (ERKStep) and CVODE (Adams) over ranks (parallel/mpi_run.hpp through run_case): the state
-// is an MPI vector over the ranks' owned rows whose weighted RMS norm is summed in the serial order
-// (parallel/serial_order_norm.hpp), so the steps, the RHS evaluations and the final state are the
+// is an MPI vector over the ranks' owned rows whose weighted RMS norm is a fixed-point sum that does
+// not depend on the order of additions (parallel/fixed_point_norm_mpi.hpp), so the steps, the RHS evaluations and the final state are the
 // serial run's to the bit on any rank count. The dam break tells: its adaptive steps amplify a norm
 // rounded otherwise (the MPI vector's own per-rank partial sums) into another step sequence within
 // 0.01 s, and the states then differ at the tolerance's level (about 1e-5 relative). Rank 0 runs

@@ -42,7 +42,6 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     : comm_(comm),
       config_(config),
       rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
-      norm_(std::make_unique<SerialOrderNorm>(comm.handle())),
       rebalance_threshold_(rebalance_threshold),
       domain_(whole.domain()),
       whole_layout_(whole.layout()) {
@@ -353,16 +352,9 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
 template <int D>
 N_Vector DistributedSystem<D>::wrap_state(double* data, std::size_t length, SUNContext ctx) const {
   if (length != layout_.size()) throw std::invalid_argument("DistributedSystem::wrap_state: not this rank's state length");
-  // Each entry's index in the whole (serial) state, as local_part() reads it.
-  const StateLayout<D>& W = whole_layout_;
-  const std::size_t blocks = 2 * D + (layout_.has_density ? 1 : 0);
-  std::vector<std::uint64_t> index(length);
-  for (std::size_t b = 0; b < blocks; ++b)
-    for (std::size_t o = 0; o < nfo_; ++o) index[b * nfo_ + o] = b * W.n + gid_[o];
-  if (layout_.n_wall_density > 0)
-    for (std::size_t o = nfo_; o < owned_.size(); ++o) index[layout_.wall_density() + (o - nfo_)] = W.wall_density() + (gid_[o] - W.n);
-  norm_->set_order(index);
-  return norm_->wrap(data, length, ctx);
+  std::uint64_t mine = length, whole = 0;
+  MPI_Allreduce(&mine, &whole, 1, MPI_UINT64_T, MPI_SUM, comm_.handle());
+  return make_fixed_point_norm_vector(comm_.handle(), data, length, static_cast<std::size_t>(whole), ctx);
 }
 
 template <int D>

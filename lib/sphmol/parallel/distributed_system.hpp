@@ -24,8 +24,8 @@
 // between steps, with whatever per-particle arrays the integrator carries).
 //
 // SUNDIALS integrators wrap the rank's state in an MPI vector (wrap_state: N_VMake_Parallel over
-// the owned rows, no copy) whose weighted RMS norm is summed in the serial order
-// (serial_order_norm.hpp): every rank sees the serial run's error norms and takes its steps. An
+// the owned rows, no copy) whose weighted RMS norm is a fixed-point sum reduced over the ranks
+// (fixed_point_norm_mpi.hpp): every rank sees the serial run's error norms and takes its steps. An
 // evaluation at a stage state refreshes the halo from that state like any other, since the state
 // alone is exchanged per evaluation.
 #include <array>
@@ -39,7 +39,7 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/halo.hpp"
 #include "sphmol/parallel/rcb_partition.hpp"
-#include "sphmol/parallel/serial_order_norm.hpp"
+#include "sphmol/parallel/fixed_point_norm_mpi.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/time/ode_system.hpp"
 #include "sphmol/time/state_vector.hpp"
@@ -63,7 +63,7 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   // reductions, the same on every rank).
   void rhs(double t, const double* y, double* ydot) override;
   // Collective: an MPI vector over this rank's part of the state (N_VMake_Parallel, no copy), its
-  // norm summed in the serial order.
+  // norm the fixed-point one of the serial run (fixed_point_norm_mpi.hpp).
   N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const override;
   double stable_step() const override { return stable_step_; }
   double first_stable_step() const { return first_stable_step_; }  // of the first evaluation
@@ -129,7 +129,6 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   Communicator comm_;
   Config config_;
   std::unique_ptr<RcbPartitioner<D>> rcb_;
-  std::unique_ptr<SerialOrderNorm> norm_;  // the state vector's norm for SUNDIALS (wrap_state)
   double rebalance_threshold_ = 0.0;
   bool replanned_ = false;        // a plan since the last imbalanced()
   bool plan_due_ = false;         // the owned particles changed: plan at the next evaluation

@@ -12,6 +12,7 @@
 
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/erk_table.hpp"
+#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
@@ -66,9 +67,12 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   const int threads = omp_get_max_threads();
   if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
     y_ = split->wrap_state(y, sys.size(), ctx_);
-  else
+  else {
     y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(sys.size()), y, threads, ctx_)
                      : N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+    // Error norms independent of the order of additions: the same steps on any thread or rank count.
+    use_fixed_point_norm(y_);
+  }
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

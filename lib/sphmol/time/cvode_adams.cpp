@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
@@ -46,8 +47,10 @@ void CvodeAdams::initialize(OdeSystem& sys, double t0, double* y) {
   // The N_Vector wraps the caller's storage (no copy); over processes, the system's own vector.
   if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
     y_ = split->wrap_state(y, sys.size(), ctx_);
-  else
+  else {
     y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
+    use_fixed_point_norm(y_);  // error norms independent of the order of additions (as over ranks)
+  }
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

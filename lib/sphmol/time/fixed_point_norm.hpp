@@ -1,0 +1,43 @@
+#pragma once
+// Weighted RMS norms whose value does not depend on how the additions are ordered or split: the
+// norm ARKODE and CVODE take of their error estimates and corrections.
+//
+// Why: a floating-point sum rounds differently in another order, and adaptive step-size and order
+// control amplifies last-bit differences of its error norms into another step sequence (on the dam
+// break, changing rtol by one part in 1e15 changes ARKODE's steps within 0.01 s of simulated time).
+// A run split over threads or MPI ranks adds its partial sums in another order than the serial run,
+// so with ordinary sums it would take other steps and agree only to the tolerance.
+//
+// How: the terms (x_i w_i)^2 (x_i w_i rounded first, as SUNDIALS' serial vector does) are scaled
+// by a power of two that puts the largest below 2^96 and truncated to integers; integers add
+// exactly, in any order. The largest term is a max (exact in any order) taken first. Terms below
+// 2^-96 of the largest are dropped, a relative error of at most N 2^-96 in the sum. The sum of a
+// part is kept as three 48-bit chunks, so that parts can be added with ordinary 64-bit integer
+// sums (an MPI_SUM over up to 2^16 ranks), and the whole length must stay below 2^31 entries.
+// A NaN or infinite term makes the norm infinite, which fails the integrator's error test.
+#include <sundials/sundials_nvector.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace sphmol {
+
+using FixedPointChunks = std::array<std::uint64_t, 3>;
+
+// max_i (x_i w_i)^2 over n entries; +infinity if any term is NaN or infinite.
+double largest_weighted_square(const double* x, const double* w, std::size_t n);
+// The power of two the terms are scaled by, for the largest term of the whole vector (> 0, finite).
+int fixed_point_shift(double largest);
+// The terms' sum on the grid of `shift`, in chunks.
+FixedPointChunks fixed_point_squares(const double* x, const double* w, std::size_t n, int shift);
+// sqrt(sum / length) from the chunks summed over every part.
+double fixed_point_wrms(const FixedPointChunks& chunks, int shift, double length);
+// The whole norm of one part (a serial or OpenMP vector).
+double fixed_point_wrms(const double* x, const double* w, std::size_t n);
+
+// Replaces the weighted RMS norm of a serial or OpenMP vector (and of every vector cloned from it)
+// with fixed_point_wrms.
+void use_fixed_point_norm(N_Vector v);
+
+}  // namespace sphmol
