@@ -7,7 +7,7 @@ Every program is started with an argument vector (no shell); the gnuplot script 
 and fixed file names, written by this script.
 
     scripts/cavity_re_sweep.py --binary build/release/sph-mol --output out/cavity_re_sweep \
-        [--across 40] [--t-end 30] [--threads 1] [--set key=value ...] [--reuse]
+        [--across 40] [--t-end 30] [--threads 1] [--dt DT] [--set key=value ...] [--reuse]
 """
 import argparse
 import json
@@ -28,6 +28,8 @@ def main() -> int:
     ap.add_argument("--across", type=int, default=40, help="particles across the cavity")
     ap.add_argument("--t-end", type=float, default=30.0, help="simulated time [s] (L/U = 1 s)")
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--dt", type=float, default=None,
+                    help="leapfrog step [s]; default 1e-3 * 40 / across, the shipped 0.22 h / (c + U) at every spacing")
     ap.add_argument("--set", action="append", default=[], help="further sph-mol overrides key=value")
     ap.add_argument("--reuse", action="store_true",
                     help="take OUTPUT/Re<N>/summary.json of an earlier run (completed, or interrupted: its last "
@@ -35,6 +37,9 @@ def main() -> int:
     a = ap.parse_args()
     if a.across <= 0 or a.t_end <= 0 or a.threads <= 0:
         ap.error("--across, --t-end and --threads must be positive")
+    dt = a.dt if a.dt is not None else 1e-3 * 40 / a.across
+    if dt <= 0:
+        ap.error("--dt must be positive")
     os.makedirs(a.output, exist_ok=True)
     # Outputs every 2 s from 10 s on: the steadiness criterion compares the last two.
     times = [t for t in range(10, int(a.t_end) + 1, 2)]
@@ -47,6 +52,7 @@ def main() -> int:
                 "--set", f"discretization.particles_across={a.across}",
                 "--set", f"fluid.kinematic_viscosity={1.0 / re!r}",
                 "--set", f"time.t_end={a.t_end!r}",
+                "--set", f"time.dt={dt!r}",
                 "--set", "output.times=[" + ", ".join(repr(float(t)) for t in times) + "]"]
         for s in a.set:
             args += ["--set", s]
