@@ -102,8 +102,8 @@ TEST_CASE("hydrostatic: three tank shapes at the shipped spacing hold pressure, 
 TEST_CASE("cavity: steady centre lines near Ghia et al. (40 x 40, Re 100, t = 12 s)", "[integration][cavity]") {
   // Measured with the shipped settings (centre lines by linear moving least squares): u_rms 0.0028 /
   // 0.0046 and v_rms 0.0029 / 0.0049 at t = 10 / 12 s, ke_rate 7.3e-4 and centreline_rate 2.1e-3 per L/U
-  // at 12 s; 12000 leapfrog steps, ~35 s on one thread. Since the leapfrog steps on the grid k dt
-  // (2026-12-03): u_rms 0.0058 / 0.0058, v_rms 0.0037 / 0.0022 at 10 / 12 s (the noise floor moved). With the Shepard average the same run read
+  // at 12 s; 12000 leapfrog steps, ~35 s on one thread. On the solver code of 2026-12-03 (commit
+  // 797435a): u_rms 0.0058 / 0.0058, v_rms 0.0037 / 0.0022 at 10 / 12 s (within the noise floor). With the Shepard average the same run read
   // u_rms 0.018 (the lid's boundary layer cut by the support). At 20 x 20 (h = 0.1) u_rms is 0.016.
   // Checked by hand at 20 x 20: wrong sign on the pressure term and the transport velocity off both blow up.
   const auto s = run("cavity.yaml", {"time.t_end=12", "output.times=[8, 10, 12]"});
