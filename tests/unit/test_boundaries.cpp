@@ -122,9 +122,11 @@ TEST_CASE("ghost generator: mirror positions, no-slip velocities, corner images,
       ++corner;
       CHECK(s.w.x[0][k] == Approx(-0.05));
       CHECK(s.w.x[1][k] == Approx(-0.03));
-      // -v + v_left + v_bottom
-      CHECK(s.w.v[0][k] == Approx(-0.2 + 0.0 + 1.0));
-      CHECK(s.w.v[1][k] == Approx(0.4 + 0.3 + 0.0));
+      // Each component is normal to one of the walls and mirrored about that wall's normal velocity
+      // (0): the bottom's belt speed runs into the left wall and the left's into the bottom, so
+      // neither enters (with -v + v_left + v_bottom the pair moved through the walls on average).
+      CHECK(s.w.v[0][k] == Approx(-0.2));
+      CHECK(s.w.v[1][k] == Approx(0.4));
     }
     if (i == 1) {  // bottom image: 2 v_w - v
       CHECK(s.w.x[0][k] == Approx(0.5));
@@ -267,13 +269,13 @@ TEST_CASE("ghost generator: oblique mirror planes, their corners and the box fac
       CHECK(q[1] == Approx(0.02));
       CHECK(vx == Approx(-0.4));
       CHECK(vy == Approx(-0.1));
-    } else {  // the corner: through both; -v + v_floor + v_side
+    } else {  // the corner: through both; the floor's belt runs along the side wall's normal: -v
       ++corners;
       CHECK(gen.masks()[g] == 0b011);
       CHECK(q[0] == Approx(0.24));
       CHECK(q[1] == Approx(-0.02));
-      CHECK(vx == Approx(-0.4 + 0.3 * c));
-      CHECK(vy == Approx(-0.1 + 0.3 * s));
+      CHECK(vx == Approx(-0.4));
+      CHECK(vy == Approx(-0.1));
     }
   }
   CHECK(floor_images == 2);
@@ -334,5 +336,51 @@ TEST_CASE("ghost generator in 3D: an oblique plane and a box face at right angle
     CHECK(up == Approx(m & 0b10u ? -0.04 : 0.04));       // bit 1: the floor (after the box face)
     CHECK(w.x[1][k] == Approx(m & 0b01u ? -0.03 : 0.03));  // bit 0: the y face
     for (int d = 0; d < 3; ++d) CHECK(w.v[d][k] == Approx(-pt.v[d][0]));  // no slip at rest: -v
+  }
+}
+
+TEST_CASE("ghost generator: no-slip corner images keep every wall impermeable, the edge takes the walls' mean", "[ghost][3d]") {
+  // A 3D lid z = 1 moving along x at U and the side wall y = 0 at rest: the edge between them runs
+  // along x, the lid's motion is tangent to both, so the edge image's x velocity is 2 (U + 0)/2 - u;
+  // y and z, each one wall's normal, are mirrored: the source-image pair crosses neither wall.
+  const double U = 1.5;
+  BoxWalls<3> box{};
+  box[1][0] = {true, 0.0, true, {0.0, 0.0, 0.0}};
+  box[2][1] = {true, 1.0, true, {U, 0.0, 0.0}};
+  GhostGenerator<3> gen(box, 0.1);
+  Particles<3> pt;
+  pt.add(Kind::Fluid, {0.5, 0.03, 0.98}, {0.7, 0.2, -0.1}, 1.0, 1000.0);
+  Workspace<3> w = workspace_of(pt);
+  gen.generate(1, pt, w);
+  REQUIRE(gen.count() == 3);
+  for (std::size_t g = 0; g < 3; ++g) {
+    const std::size_t k = 1 + g;
+    if (gen.masks()[g] != 0b11u) continue;
+    CHECK(w.x[1][k] == Approx(-0.03));
+    CHECK(w.x[2][k] == Approx(1.02));
+    CHECK(w.v[0][k] == Approx(U - 0.7));
+    CHECK(w.v[1][k] == Approx(-0.2));
+    CHECK(w.v[2][k] == Approx(0.1));
+  }
+  // In 2D the lid's corner with a side wall has no common tangent: the image is -v, and the mean of
+  // source and image is at rest in both directions (the lid speed is the side wall's normal).
+  BoxWalls<2> cav{};
+  cav[0][1] = {true, 1.0, true, {0.0, 0.0}};
+  cav[1][1] = {true, 1.0, true, {U, 0.0}};
+  GhostGenerator<2> g2(cav, 0.1);
+  Particles<2> p2;
+  p2.add(Kind::Fluid, {0.97, 0.98}, {0.6, -0.3}, 1.0, 1000.0);
+  Workspace<2> w2 = workspace_of(p2);
+  g2.generate(1, p2, w2);
+  REQUIRE(g2.count() == 3);
+  for (std::size_t g = 0; g < 3; ++g) {
+    const std::size_t k = 1 + g;
+    if (g2.masks()[g] == 0b11u) {
+      CHECK(w2.v[0][k] == Approx(-0.6));
+      CHECK(w2.v[1][k] == Approx(0.3));
+    } else if (g2.masks()[g] == 0b10u) {  // the lid alone: 2 U - u along it, -v across
+      CHECK(w2.v[0][k] == Approx(2.0 * U - 0.6));
+      CHECK(w2.v[1][k] == Approx(0.3));
+    }
   }
 }
