@@ -3,7 +3,6 @@
 #include <nvector/nvector_parallel.h>
 
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "sphmol/time/fixed_point_norm.hpp"

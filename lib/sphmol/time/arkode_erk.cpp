@@ -1,6 +1,5 @@
 #include "sphmol/time/arkode_erk.hpp"
 
-#include <nvector/nvector_openmp.h>
 #include <omp.h>
 #include "sphmol/io/double_codec.hpp"
 
@@ -12,7 +11,6 @@
 
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/erk_table.hpp"
-#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
@@ -64,15 +62,7 @@ void ArkodeErk::initialize(OdeSystem& sys, double t0, double* y) {
   // The N_Vector wraps the caller's storage (no copy): the system's own vector when its state is
   // split over processes (time/state_vector.hpp); else, with several threads, the OpenMP vector
   // runs the integrator's vector operations in parallel as well.
-  const int threads = omp_get_max_threads();
-  if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
-    y_ = split->wrap_state(y, sys.size(), ctx_);
-  else {
-    y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(sys.size()), y, threads, ctx_)
-                     : N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
-    // Error norms independent of the order of additions: the same steps on any thread or rank count.
-    use_fixed_point_norm(y_);
-  }
+  y_ = make_state_vector(sys, y, omp_get_max_threads(), ctx_);
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

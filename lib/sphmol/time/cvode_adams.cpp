@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "sphmol/time/blow_up.hpp"
-#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
@@ -44,13 +43,8 @@ void CvodeAdams::initialize(OdeSystem& sys, double t0, double* y) {
   sys_ = &sys;
   t_ = t0;
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
-  // The N_Vector wraps the caller's storage (no copy); over processes, the system's own vector.
-  if (const auto* split = dynamic_cast<const StateVectorMaker*>(&sys))
-    y_ = split->wrap_state(y, sys.size(), ctx_);
-  else {
-    y_ = N_VMake_Serial(static_cast<sunindextype>(sys.size()), y, ctx_);
-    use_fixed_point_norm(y_);  // error norms independent of the order of additions (as over ranks)
-  }
+  // The N_Vector wraps the caller's storage (no copy): serial, or over processes the system's own.
+  y_ = make_state_vector(sys, y, 1, ctx_);
   // One evaluation at t0 primes the CFL limit used for the first step.
   std::vector<double> f(sys.size());
   sys.rhs(t0, y, f.data());

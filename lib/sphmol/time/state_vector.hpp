@@ -5,6 +5,7 @@
 // (parallel/distributed_system.hpp) also derives from StateVectorMaker, as a system with a stiff
 // part derives from ImexSystem, and supplies a vector whose reductions (error norms, dot products,
 // minima) span every process: all of them see the same norms and so take the same steps.
+// make_state_vector is where an integrator gets its vector either way.
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_nvector.h>
 
@@ -19,5 +20,13 @@ class StateVectorMaker {
   // caller (N_VDestroy). Collective when the state is split over processes.
   virtual N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const = 0;
 };
+
+class OdeSystem;
+
+// The integrator's N_Vector over the state at `y` (sys.size() doubles, no copy), owned by the caller:
+// the system's own when it is a StateVectorMaker; else an OpenMP vector on `threads` > 1 threads or a
+// serial one, either with the order-independent norm of time/fixed_point_norm.hpp, so that the error
+// norms, and with them the steps, are the same on any thread or rank count.
+N_Vector make_state_vector(const OdeSystem& sys, double* y, int threads, SUNContext ctx);
 
 }  // namespace sphmol
