@@ -80,11 +80,15 @@ EOF
   fi
   run_dir="$output/ranks_$r"
   echo "== $r rank(s), spacing $dx" >&2
-  # Arguments go to mpirun and sph-mol as an array: no shell parses them.
+  # Arguments go to mpirun and sph-mol as an array: no shell parses them. The log is created anew
+  # (noclobber: O_EXCL), never written through a symlink left in its place.
+  rm -f "$output/ranks_$r.log"
+  set -o noclobber
   OMP_NUM_THREADS=1 mpirun "${mpi_args[@]}" -n "$r" "$binary" --threads 1 --config "$config" --output "$run_dir" --overwrite \
     --set "discretization.spacing=$dx" --set "time.t_end=$t_end" --set "output.times=[$t_end]" \
     --set output.plots=false "${sets[@]}" >"$output/ranks_$r.log" 2>&1 ||
     { echo "bench_mpi.sh: the run on $r rank(s) failed; see $output/ranks_$r.log" >&2; exit 1; }
+  set +o noclobber
 done
 
 if [[ -z "$model_from" ]]; then
@@ -92,7 +96,24 @@ if [[ -z "$model_from" ]]; then
   for r in $ranks; do if [[ $r -gt 1 && $r -le $(nproc) ]]; then model_from=$r; fi; done
 fi
 python3 - "$output" "$dimension" "$model_ranks" "$model_from" $ranks <<'EOF'
-import csv, json, math, os, sys
+import csv, json, math, os, sys, tempfile
+
+
+def write_csv(path, rows):
+    """The table into a new temporary file beside `path`, then renamed over it: an existing file or
+    symlink at `path` is replaced, never written through."""
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(path), prefix=".bench_mpi.", suffix=".csv")
+    try:
+        with os.fdopen(fd, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+
 
 out, dim, model_ranks, model_from = sys.argv[1], int(sys.argv[2]), [int(x) for x in sys.argv[3].split()], int(sys.argv[4])
 ranks = [int(x) for x in sys.argv[5:]]
@@ -135,10 +156,7 @@ for row in rows:  # particle-steps per second against the first rank count's
     row["speedup_vs_first"] = base["us_per_particle_step"] / row["us_per_particle_step"]
     row["rhs_speedup_vs_first"] = (base["rhs_search_s"] / (base["particles"] * base["steps"])) / (
         row["rhs_search_s"] / (row["particles"] * row["steps"]))
-with open(os.path.join(out, "bench_mpi.csv"), "w", newline="") as f:
-    w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-    w.writeheader()
-    w.writerows(rows)
+write_csv(os.path.join(out, "bench_mpi.csv"), rows)
 
 # Model. Recursive bisection cuts a D-dimensional domain into boxes of N/P particles; a box's halo
 # is a shell one halo depth thick on its cut faces, so a rank's halo scales as (N/P)^((D-1)/D)
@@ -168,10 +186,7 @@ if multi:
             comp = t_c * pairs_per_particle * local
             model.append({"ranks": q, "particles": int(n_total), "scaling": "strong" if n_total == N else "weak",
                           "halo_per_rank": h, "halo_share": h / local, "comm_share": comm / (comm + comp)})
-    with open(os.path.join(out, "model.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(model[0].keys()))
-        w.writeheader()
-        w.writerows(model)
+    write_csv(os.path.join(out, "model.csv"), model)
 
 def table(rs, keys):
     print(" | ".join(keys))
