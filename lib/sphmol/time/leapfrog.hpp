@@ -3,8 +3,9 @@
 //   x_{n+1/2} = x_n + dt/2 v_n,   v_{n+1} = v_n + dt a_{n+1/2},   x_{n+1} = x_{n+1/2} + dt/2 v_{n+1}
 // One RHS evaluation per step, at the half step. Viscous forces depend on velocity, so a_{n+1/2}
 // is evaluated with the predicted v_n + dt/2 a_{n-1/2} (O(dt^2) accurate, which keeps the scheme
-// second order). The XSPH correction c = dx/dt - v from that evaluation is used in both drifts;
-// any further first-order fields are advanced by the midpoint rule. Fixed dt, or the CFL step.
+// second order). The position correction c = dx/dt - v (XSPH, transport velocity) enters the position
+// update at its midpoint value (leapfrog.cpp); any further first-order fields are advanced by the
+// midpoint rule. Fixed dt, or the CFL step.
 // Stepping, checkpoint state and the step hook: leapfrog_base.hpp.
 #include <vector>
 
@@ -21,12 +22,7 @@ class Leapfrog final : public LeapfrogBase {
   const char* scheme() const override { return "drift-kick-drift (Vukčević et al. 2012, eq 22)"; }
   void step(double dt) override;
   void initialized() override;
-  // The XSPH correction is checkpointed too: it was evaluated relative to the predicted velocity.
-  void save_extra(nlohmann::json& j) const override;
-  void restore_extra(const nlohmann::json& j) override;
-
   std::vector<double> ymid_, fmid_;
-  std::vector<double> c_;  // XSPH correction dx/dt - v of the latest evaluation, per position component
 };
 
 }  // namespace sphmol

@@ -22,8 +22,11 @@ void LeapfrogBase::initialize(OdeSystem& sys, double t0, double* y) {
   y_ = y;
   t_ = t0;
   f_.assign(sys.size(), 0.0);
-  sys.rhs(t0, y, f_.data());  // a_0 (and the XSPH correction c_0) start the first step
+  sys.rhs(t0, y, f_.data());  // a_0 (and the position correction c_0) start the first step
   evaluated();
+  const std::size_t vb = sys.velocities_begin(), nv = sys.velocities_end() - vb;  // positions: [0, nv)
+  c_.resize(nv);
+  for (std::size_t k = 0; k < nv; ++k) c_[k] = f_[k] - y[vb + k];
   initialized();
 }
 
@@ -78,7 +81,8 @@ nlohmann::json LeapfrogBase::save_state() const {
   // Hex of the raw doubles: exact, and NaN/inf survive (JSON numbers would not).
   nlohmann::json j{{"f", encode_doubles(f_)}, {"cfl_step", encode_doubles({cfl_step_})}, {"steps", stats_.steps},
                    {"last_step", encode_doubles({stats_.last_step})},
-                   {"t", encode_doubles({t_})}};  // the grid time, which may differ from the run's t in the last bit
+                   {"t", encode_doubles({t_})},  // the grid time, which may differ from the run's t in the last bit
+                   {"c", encode_doubles(c_)}};
   save_extra(j);
   return j;
 }
@@ -102,6 +106,16 @@ void LeapfrogBase::restore_state(const nlohmann::json& s) {
     if (!std::isfinite(tg) || std::abs(tg - t_) > 1e-9 * std::max(1.0, std::abs(t_)))
       throw std::runtime_error(name() + ": checkpoint step time " + std::to_string(tg) + " does not match its time " + std::to_string(t_));
     t_ = tg;
+  }
+  if (s.contains("c")) {
+    const auto c = decode_doubles(s.at("c").get<std::string>());
+    if (c.size() != c_.size()) throw std::runtime_error(name() + ": checkpoint state does not match this system (sizes differ)");
+    c_ = c;
+  } else {
+    // Written before leapfrog_kdk and leapfrog_imex kept c: they took f's position block minus the
+    // current velocity, which is what this sets (an O(dt^2) difference from c, for one step).
+    const std::size_t vb = sys_->velocities_begin();
+    for (std::size_t k = 0; k < c_.size(); ++k) c_[k] = f_[k] - y_[vb + k];
   }
   restore_extra(s);
 }

@@ -3,7 +3,13 @@
 // share: one RHS evaluation per step whose result f (and CFL step) starts the next step, a fixed or
 // CFL step that lands exactly on output times, one step at a time through step_toward() (so the run
 // loop sees signals and progress every step), the step hook, and checkpoint state (the last RHS
-// f, the cached CFL step and the counters) that makes an interrupted + restarted run bit-identical.
+// f, the position correction c, the cached CFL step and the counters) that makes an interrupted +
+// restarted run bit-identical.
+//
+// The position correction c = dx/dt - v (XSPH, the transport velocity) is kept per position
+// component, relative to the velocity the evaluation was made with (the schemes evaluate at predicted
+// velocities, so f's position block minus the current v is not c). Each scheme integrates it at
+// second order: its lag behind the step is taken back once the step's evaluation has given the new c.
 #include <optional>
 #include <vector>
 
@@ -45,6 +51,7 @@ class LeapfrogBase : public Integrator {
   double* y_ = nullptr;
   double t_ = 0.0;
   std::vector<double> f_;  // RHS of the latest own evaluation
+  std::vector<double> c_;  // position correction of the latest own evaluation, per position component
 
  private:
   IntegratorStats stats_;

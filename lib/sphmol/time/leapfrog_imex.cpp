@@ -39,6 +39,7 @@ void LeapfrogImex::step(double dt) {
   const std::size_t nv = ve - vb;
   double* const y = y_;
   double *const yp = ypred_.data(), *const fn = fnew_.data(), *const w = w_.data(), *const vp = vprev_.data();
+  double* const c = c_.data();
   const double* const f = f_.data();
   const std::size_t L = sys_->block_length();
   op_.apply_affine(y + vb, w);  // f_I,n = L_n v_n + b_n
@@ -49,9 +50,8 @@ void LeapfrogImex::step(double dt) {
     for_each_by_particle(0, nv, L, [&](std::size_t k) {
       const double v = y[vb + k];
       const double a = f[vb + k] + w[k];
-      const double c = f[k] - v;  // XSPH correction of the latest evaluation
       const double vhalf = v + 0.5 * dt * a;
-      y[k] += dt * (vhalf + c);
+      y[k] += dt * (vhalf + c[k]);  // position correction c_n of the latest evaluation
       yp[k] = y[k];
       yp[vb + k] = extrapolate ? v + ratio * (v - vp[k]) : vhalf + 0.5 * dt * a;
       vp[k] = v;
@@ -71,7 +71,13 @@ void LeapfrogImex::step(double dt) {
   solve_.solve(op_, 0.5 * dt, r, x);
 #pragma omp parallel
   {
-    for_each_by_particle(0, nv, L, [&](std::size_t k) { y[vb + k] = x[k]; });
+    // The trapezoidal rule for the position correction, as in leapfrog_kdk.cpp.
+    for_each_by_particle(0, nv, L, [&](std::size_t k) {
+      y[vb + k] = x[k];
+      const double cn = fn[k] - yp[vb + k];
+      y[k] += 0.5 * dt * (cn - c[k]);
+      c[k] = cn;
+    });
     for_each_by_particle(ve, n, L, [&](std::size_t k) { y[k] += 0.5 * dt * (f[k] + fn[k]); });
   }
   f_.swap(fnew_);
