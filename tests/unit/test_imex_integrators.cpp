@@ -17,6 +17,7 @@
 #include "sphmol/time/stage_linear_solver.hpp"
 #include "sphmol/time/imex_system.hpp"
 #include "sphmol/time/leapfrog_imex.hpp"
+#include "unit/state_distance.hpp"
 
 using namespace sphmol;
 
@@ -106,12 +107,6 @@ std::vector<double> run_ark(double dt, double t_end) {
   return y;
 }
 
-double distance(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
-  return std::sqrt(s / static_cast<double>(a.size()));
-}
-
 }  // namespace
 
 TEST_CASE("leapfrog_imex: stable far above the viscous limit, order 2", "[imex][time]") {
@@ -122,7 +117,7 @@ TEST_CASE("leapfrog_imex: stable far above the viscous limit, order 2", "[imex][
   const auto ref = run_leapfrog(dt / 64, t_end);
   const auto a = run_leapfrog(dt, t_end, &its), b = run_leapfrog(dt / 2, t_end), c = run_leapfrog(dt / 4, t_end);
   for (double x : a) REQUIRE(std::isfinite(x));
-  const double e1 = distance(a, ref), e2 = distance(b, ref), e3 = distance(c, ref);
+  const double e1 = rms_distance(a, ref), e2 = rms_distance(b, ref), e3 = rms_distance(c, ref);
   INFO("errors " << e1 << " " << e2 << " " << e3);
   CHECK(std::log2(e2 / e3) == Approx(2.0).margin(0.15));
   CHECK(std::log2(e1 / e2) == Approx(2.0).margin(0.3));
@@ -134,14 +129,14 @@ TEST_CASE("arkode_imex: stable far above the viscous limit, ARK324L2SA order 3",
   const auto ref = run_ark(dt / 32, t_end);
   const auto a = run_ark(dt, t_end), b = run_ark(dt / 2, t_end), c = run_ark(dt / 4, t_end);
   for (double x : a) REQUIRE(std::isfinite(x));
-  const double e1 = distance(a, ref), e2 = distance(b, ref), e3 = distance(c, ref);
+  const double e1 = rms_distance(a, ref), e2 = rms_distance(b, ref), e3 = rms_distance(c, ref);
   INFO("errors " << e1 << " " << e2 << " " << e3);
   // Order 3 in the non-stiff limit; with this stiff chain (dt = 460 x the viscous limit) the stage
   // order 2 of the ESDIRK shows (measured 2.66 and 2.62).
   CHECK(std::log2(e1 / e2) > 2.4);
   CHECK(std::log2(e2 / e3) > 2.4);
   // The two integrators solve the same ODE: leapfrog_imex converges at order 2 to arkode_imex's solution.
-  const double d1 = distance(ref, run_leapfrog(dt / 16, t_end)), d2 = distance(ref, run_leapfrog(dt / 32, t_end));
+  const double d1 = rms_distance(ref, run_leapfrog(dt / 16, t_end)), d2 = rms_distance(ref, run_leapfrog(dt / 32, t_end));
   INFO("leapfrog_imex against arkode_imex " << d1 << " " << d2);
   CHECK(std::log2(d1 / d2) == Approx(2.0).margin(0.15));
 }

@@ -15,6 +15,7 @@
 #include "sphmol/time/leapfrog.hpp"
 #include "sphmol/time/leapfrog_imex.hpp"
 #include "sphmol/time/leapfrog_kdk.hpp"
+#include "unit/state_distance.hpp"
 
 using namespace sphmol;
 
@@ -80,20 +81,14 @@ std::vector<double> run(const std::string& scheme, double dt, double t_end) {
   return y;
 }
 
-double distance(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
-  return std::sqrt(s / static_cast<double>(a.size()));
-}
-
 }  // namespace
 
 TEST_CASE("leapfrogs are second order with a position correction", "[time]") {
   for (const std::string scheme : {"leapfrog", "leapfrog_kdk", "leapfrog_imex"}) {
     const double dt = 0.04, t_end = 2.0;
     const auto ref = run(scheme, dt / 256, t_end);
-    const double e1 = distance(run(scheme, dt, t_end), ref), e2 = distance(run(scheme, dt / 2, t_end), ref),
-                 e3 = distance(run(scheme, dt / 4, t_end), ref);
+    const double e1 = rms_distance(run(scheme, dt, t_end), ref), e2 = rms_distance(run(scheme, dt / 2, t_end), ref),
+                 e3 = rms_distance(run(scheme, dt / 4, t_end), ref);
     INFO(scheme << ": errors " << e1 << " " << e2 << " " << e3);
     CHECK(std::log2(e1 / e2) > 1.9);
     CHECK(std::log2(e2 / e3) > 1.9);
