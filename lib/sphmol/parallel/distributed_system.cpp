@@ -51,13 +51,11 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
-  // assemble_system sets h = smoothing_ratio * spacing: a spacing that gives the whole system's h to
-  // the bit (round-off may make it differ from the scene's in the last place) gives the same h.
+  // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
+  // the terms' length scales (particle shifting's W(dx)) are then the whole system's to the bit.
   const double h = whole.smoothing_length(), ratio = config.discretization.smoothing_ratio;
-  spacing_ = h / ratio;
-  for (int k = 0; k < 16 && ratio * spacing_ != h; ++k)
-    spacing_ = std::nextafter(spacing_, ratio * spacing_ < h ? std::numeric_limits<double>::infinity() : 0.0);
-  if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: no spacing reproduces the smoothing length");
+  spacing_ = whole.spacing();
+  if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: the whole system's spacing does not give its smoothing length");
   // Halo depth: one list radius per dependent pair pass (the top of the header); a term that sums
   // over the stored pair list without a row form counts as a pass of its own.
   const std::size_t passes = (whole.pair_passes().empty() ? whole.fused_pass_count() : whole.pair_passes().size()) +
