@@ -1,9 +1,9 @@
 // A run over ranks (parallel/mpi_run.hpp through run_case): the final state is the serial run's,
 // bit for bit, on any rank count, for wall-particle scenes with both leapfrogs: the channel flows
-// (summation density: two dependent pair passes, a two-radius halo) and the dam break (continuity
-// density with dynamic wall densities in the state; particles travel far enough to re-plan the
-// halo many times). Rank 0 runs the serial reference. Unsupported settings are refused
-// with a ConfigError on every rank.
+// (summation density: two dependent pair passes, a two-radius halo), the dam break (continuity density with dynamic wall densities in the state; particles travel
+// far enough to re-plan the halo many times) and the shock tube in 1D and 2D (the energy equation:
+// e in the state, the walls' fixed e in each local system). Rank 0 runs the serial reference.
+// Unsupported settings are refused with a ConfigError on every rank.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -107,6 +107,35 @@ TEST_CASE("distributed run: the dam break equals the serial run bit for bit, thr
   }
 }
 
+// The shock tube with the energy equation and constant h (the shipped tubes vary h): x ends closed by
+// wall particles that keep their side's e, which enters their pressure (ideal gas).
+Config shock_tube(const std::string& file, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> o{"discretization.smoothing_length=constant", "time.t_end=0.02", "output.times=[0.01,0.02]",
+                             "output.plots=false"};
+  o.insert(o.end(), more.begin(), more.end());
+  return load_config(verification(file), o);
+}
+
+TEST_CASE("distributed run: the 1D shock tube with the energy equation equals the serial run bit for bit", "[parallel][run][energy]") {
+  const Config c = shock_tube("shock_tube_1d.yaml");
+  REQUIRE(c.discretization.energy);
+  SECTION("one partition") {
+    const Finished split = check_same_as_serial(c);
+    CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
+  }
+  SECTION("partitioned again at every re-plan, e migrating with the leapfrog's state") {
+    const Finished split = check_same_as_serial(c, {}, 1.0);
+    if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
+  }
+}
+
+TEST_CASE("distributed run: the 2D shock tube with the energy equation equals the serial run bit for bit", "[parallel][run][energy]") {
+  // y periodic (wall particles at the x ends only), h0 = 1.0 dx to fit twice the pair radius across.
+  check_same_as_serial(shock_tube("shock_tube.yaml", {"discretization.boundary=wall_particles",
+                                                      "discretization.smoothing_ratio=1.0",
+                                                      "time.integrator=leapfrog_kdk"}));
+}
+
 TEST_CASE("distributed run: settings it does not support are refused on every rank", "[parallel][run]") {
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
@@ -120,6 +149,9 @@ TEST_CASE("distributed run: settings it does not support are refused on every ra
   CHECK_THROWS_AS(run(with("time.integrator=arkode_imex"), &partitioner), ConfigError);
   CHECK_THROWS_AS(run(with("time.integrator=leapfrog_imex"), &partitioner), ConfigError);
   CHECK_THROWS_WITH(run(with("time.integrator=arkode_imex"), &partitioner), Catch::Contains("time.integrator"));
+  // The shipped shock tubes: h follows the density (a state block of its own).
+  CHECK_THROWS_WITH(run(load_config(verification("shock_tube_1d.yaml"), {"output.plots=false"}), &partitioner),
+                    Catch::Contains("discretization.smoothing_length"));
 }
 
 TEST_CASE("distributed run: a 3D tank equals the serial run bit for bit", "[parallel][run]") {

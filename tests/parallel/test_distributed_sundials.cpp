@@ -148,6 +148,14 @@ TEST_CASE("distributed run: the dam break with ARKODE and CVODE equals the seria
   SECTION("cvode_adams") { check_same_as_serial(dam_break("cvode_adams"), monitored); }
 }
 
+TEST_CASE("distributed run: the 1D shock tube with the energy equation and ARKODE equals the serial run bit for bit",
+          "[parallel][run][sundials][energy]") {
+  // e in the state and in the error norm; constant h (the shipped tube varies it).
+  check_same_as_serial(load_config(verification("shock_tube_1d.yaml"),
+                                   {"discretization.smoothing_length=constant", "time.integrator=arkode_erk",
+                                    "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"}));
+}
+
 TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which would restart it", "[parallel][run][sundials]") {
   // A threshold of 1 asks for a new partition at every re-plan; the leapfrogs would migrate, ARKODE
   // stays on its partition (starting it again would change its steps) and still takes the serial steps.

@@ -22,15 +22,16 @@ namespace sphmol::parallel {
 
 namespace {
 
-// One particle's state as it travels: fluid x, v and the density of the state (when it has one);
-// a wall's integrated density in the first entry.
+// One particle's state as it is gathered: a fluid particle's value in each block of the state (x,
+// v, then density, energy and smoothing length when the scene has them), a wall's integrated
+// density in the first entry.
 template <int D>
-using StateRecord = std::array<double, 2 * D + 1>;
+inline constexpr std::size_t most_blocks = 2 * D + 3;
 
 template <int D>
 struct GatherRow {
   std::uint64_t gid;
-  StateRecord<D> value;
+  std::array<double, most_blocks<D>> value;
 };
 
 }  // namespace
@@ -46,11 +47,17 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       domain_(whole.domain()),
       whole_layout_(whole.layout()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
-  if (whole.has_generator() || whole.reorder() || whole.layout().has_energy || whole.layout().has_smoothing_length)
-    throw std::invalid_argument("DistributedSystem: generated particles, reordering, energy and variable h are not supported");
+  if (whole.has_generator() || whole.reorder() || whole.layout().has_smoothing_length)
+    throw std::invalid_argument("DistributedSystem: generated particles, reordering and variable h are not supported");
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
+  // Walls keep the energy the scene gave them (the state holds the fluid's only): every rank keeps
+  // the walls' values, by global id, for the walls of its local systems.
+  if (whole_layout_.has_energy) {
+    const std::vector<double>& e = whole.energy();
+    wall_energy_.assign(e.begin() + static_cast<long>(P.n_fluid), e.begin() + static_cast<long>(n));
+  }
   // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
   // the terms' length scales (particle shifting's W(dx)) are then the whole system's to the bit.
   const double h = whole.smoothing_length(), ratio = config.discretization.smoothing_ratio;
@@ -108,6 +115,7 @@ void DistributedSystem<D>::set_layout() {
   nfo_ = owned_.n_fluid;
   layout_.n = nfo_;
   layout_.has_density = whole_layout_.has_density;
+  layout_.has_energy = whole_layout_.has_energy;
   layout_.n_wall_density = whole_layout_.n_wall_density > 0 ? owned_.n_wall() : 0;
   for (int d = 0; d < D; ++d) x_now_[d].resize(owned_.size());
 }
@@ -163,7 +171,7 @@ void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const s
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
   // Every array as per-particle columns, which migrate() moves with the particles.
-  const std::size_t state_blocks = 2 * D + (layout_.has_density ? 1 : 0);
+  const std::size_t state_blocks = this->state_blocks();
   std::vector<std::vector<double>> columns;
   std::vector<const std::vector<double>*> arrays{&y};
   for (const auto* a : state) arrays.push_back(a);
@@ -247,7 +255,13 @@ void DistributedSystem<D>::plan() {
     stats_.search_seconds += local_->search_seconds();
     stats_.rebuilds += local_->pair_list().rebuilds();
   }
-  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_);
+  std::vector<double> energy;
+  if (whole_layout_.has_energy) {
+    // The fluid's e comes from the state at every evaluation; the walls keep theirs.
+    energy.assign(order.size(), 0.0);
+    for (std::size_t k = nf_local_; k < order.size(); ++k) energy[k] = wall_energy_[gid_of(order[k]) - n_fluid_global_];
+  }
+  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_, nullptr, std::move(energy));
   y_local_.assign(local_->size(), 0.0);
   f_local_.assign(local_->size(), 0.0);
   x_plan_ = x_now_;
@@ -267,50 +281,40 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   const double t_planned = omp_get_wtime();
 
   // The owned state to the ranks whose halo holds it, and both into the local system's state.
-  const std::size_t no = owned_.size();
+  const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
-  std::vector<StateRecord<D>> rec(no);
+  // One row per particle: a fluid particle's value in each block of the state (the local system's
+  // blocks are the same, from the same config), a wall's integrated density in the first entry.
+  std::vector<double> rec(no * width, 0.0), hrec(halo_.size() * width);
   // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
 #pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < nfo_; ++o) {
-    for (int d = 0; d < D; ++d) {
-      rec[o][d] = y[L.position(d) + o];
-      rec[o][D + d] = y[L.velocity(d) + o];
-    }
-    rec[o][2 * D] = L.has_density ? y[L.density() + o] : 0.0;
-  }
-  for (std::size_t o = nfo_; o < no; ++o) {
-    rec[o].fill(0.0);
-    if (L.n_wall_density > 0) rec[o][0] = y[L.wall_density() + (o - nfo_)];
-  }
-  const std::vector<StateRecord<D>> hrec = halo_.exchange(comm_, rec);
+  for (std::size_t o = 0; o < nfo_; ++o)
+    for (std::size_t b = 0; b < width; ++b) rec[o * width + b] = y[b * nfo_ + o];
+  if (L.n_wall_density > 0)
+    for (std::size_t o = nfo_; o < no; ++o) rec[o * width] = y[L.wall_density() + (o - nfo_)];
+  halo_.exchange_rows(comm_, rec.data(), width, hrec.data());
   const StateLayout<D>& LL = local_->layout();
-  const auto put = [&](std::size_t k, const StateRecord<D>& r) {
+  const auto put = [&](std::size_t k, const double* r) {
     if (k < nf_local_) {
-      for (int d = 0; d < D; ++d) {
-        y_local_[LL.position(d) + k] = r[d];
-        y_local_[LL.velocity(d) + k] = r[D + d];
-      }
-      if (LL.has_density) y_local_[LL.density() + k] = r[2 * D];
+      for (std::size_t b = 0; b < width; ++b) y_local_[b * nf_local_ + k] = r[b];
     } else if (LL.n_wall_density > 0) {
       y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
     }
   };
 #pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec[o]);
+  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec.data() + o * width);
 #pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < hrec.size(); ++q) put(halo_at_[q], hrec[q]);
+  for (std::size_t q = 0; q < halo_.size(); ++q) put(halo_at_[q], hrec.data() + q * width);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
   local_->rhs(t, y_local_.data(), f_local_.data());
 
   // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
   const double t_reduce = omp_get_wtime();
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);  // position, velocity and density blocks
 #pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];
-    for (std::size_t b = 0; b < blocks; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
+    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
   }
   if (L.n_wall_density > 0)
     for (std::size_t o = nfo_; o < no; ++o)
@@ -384,7 +388,7 @@ std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& 
   if (whole.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem::local_part: not a whole state");
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& W = whole_layout_;
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  const std::size_t blocks = state_blocks();
   std::vector<double> y(L.size());
   for (std::size_t o = 0; o < nfo_; ++o)
     for (std::size_t b = 0; b < blocks; ++b) y[b * nfo_ + o] = whole[b * W.n + gid_[o]];
@@ -397,8 +401,9 @@ template <int D>
 void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) const {
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& W = whole_layout_;
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  const std::size_t blocks = state_blocks();
   std::vector<GatherRow<D>> mine(owned_.size());
+  if (blocks > most_blocks<D>) throw std::logic_error("DistributedSystem::gather: more state blocks than a row holds");
   for (std::size_t o = 0; o < owned_.size(); ++o) {
     mine[o].gid = gid_[o];
     mine[o].value.fill(0.0);

@@ -125,6 +125,8 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   void to_columns(const std::vector<double>& array, std::size_t blocks, std::vector<std::vector<double>>& columns) const;
   void from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks, std::vector<double>& array) const;
   void set_layout();
+  // Blocks of n values in the state: positions, velocities and the optional per-particle fields.
+  std::size_t state_blocks() const { return 2 * D + layout_.extra_blocks(); }
 
   Communicator comm_;
   Config config_;
@@ -136,6 +138,7 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   Domain<D> domain_;
   double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
   std::size_t n_fluid_global_ = 0;
+  std::vector<double> wall_energy_;  // the scene's fixed e of each wall, by global id - n_fluid_global_
   Particles<D> owned_;
   std::vector<std::uint64_t> gid_;
   std::size_t nfo_ = 0;  // owned fluid particles
