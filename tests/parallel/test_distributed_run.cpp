@@ -1,6 +1,7 @@
 // A run over ranks (parallel/mpi_run.hpp through run_case): the final state is the serial run's,
 // bit for bit, on any rank count, for wall-particle scenes with both leapfrogs: the channel flows
-// (summation density: two dependent pair passes, a two-radius halo), the dam break (continuity density with dynamic wall densities in the state; particles travel
+// (summation density: two dependent pair passes, a two-radius halo; with particle shifting too),
+// the dam break (continuity density with dynamic wall densities in the state; particles travel
 // far enough to re-plan the halo many times) and the shock tube in 1D and 2D (the energy equation:
 // e in the state, the walls' fixed e in each local system). Rank 0 runs the serial reference.
 // Unsupported settings are refused with a ConfigError on every rank.
@@ -134,6 +135,23 @@ TEST_CASE("distributed run: the 2D shock tube with the energy equation equals th
   check_same_as_serial(shock_tube("shock_tube.yaml", {"discretization.boundary=wall_particles",
                                                       "discretization.smoothing_ratio=1.0",
                                                       "time.integrator=leapfrog_kdk"}));
+}
+
+TEST_CASE("distributed run: particle shifting equals the serial run bit for bit", "[parallel][run][shifting]") {
+  // The shift reads the summed densities of its neighbours (Poiseuille) or corrects the state's
+  // density (Couette with continuity density), and scales its anti-clumping term by W(dx).
+  SECTION("summation density") {
+    check_same_as_serial(load_config(verification("poiseuille.yaml"),
+                                     {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.03",
+                                      "output.times=[0.01,0.03]", "output.plots=false",
+                                      "discretization.particle_shifting={coefficient: 4}"}));
+  }
+  SECTION("continuity density") {
+    check_same_as_serial(load_config(verification("couette.yaml"),
+                                     {"discretization.particles_across=20", "time.integrator=leapfrog_kdk", "time.t_end=0.03",
+                                      "output.times=[0.03]", "output.plots=false", "discretization.density=continuity",
+                                      "discretization.particle_shifting={coefficient: 4}"}));
+  }
 }
 
 TEST_CASE("distributed run: settings it does not support are refused on every rank", "[parallel][run]") {
