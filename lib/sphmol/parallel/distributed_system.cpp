@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/kernels/registry.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/parallel/halo_particles.hpp"
 #include "sphmol/parallel/migration.hpp"
@@ -47,8 +48,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       domain_(whole.domain()),
       whole_layout_(whole.layout()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
-  if (whole.has_generator() || whole.reorder() || whole.layout().has_smoothing_length)
-    throw std::invalid_argument("DistributedSystem: generated particles, reordering and variable h are not supported");
+  if (whole.has_generator() || whole.reorder())
+    throw std::invalid_argument("DistributedSystem: generated particles and reordering are not supported");
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
@@ -58,6 +59,11 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     const std::vector<double>& e = whole.energy();
     wall_energy_.assign(e.begin() + static_cast<long>(P.n_fluid), e.begin() + static_cast<long>(n));
   }
+  // Variable h: every particle's h(0) (the walls keep it; with h from the density it is the fluid's
+  // reference), by global id, before any evaluation.
+  variable_h_ = config.discretization.smoothing_length != "constant";
+  if (variable_h_) h0_ = whole.smoothing_lengths();
+  support_ = kernel_info<D>(config.discretization.kernel).support;
   // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
   // the terms' length scales (particle shifting's W(dx)) are then the whole system's to the bit.
   const double h = whole.smoothing_length(), ratio = config.discretization.smoothing_ratio;
@@ -116,6 +122,7 @@ void DistributedSystem<D>::set_layout() {
   layout_.n = nfo_;
   layout_.has_density = whole_layout_.has_density;
   layout_.has_energy = whole_layout_.has_energy;
+  layout_.has_smoothing_length = whole_layout_.has_smoothing_length;
   layout_.n_wall_density = whole_layout_.n_wall_density > 0 ? owned_.n_wall() : 0;
   for (int d = 0; d < D; ++d) x_now_[d].resize(owned_.size());
 }
@@ -217,8 +224,27 @@ void DistributedSystem<D>::owned_positions(double t, const double* y) {
 }
 
 template <int D>
+double DistributedSystem<D>::largest_h(const double* y) const {
+  // As the serial evaluation sets h: from the state, or from the density (Niedoba 2012, eq 2.67);
+  // walls keep h(0).
+  const StateLayout<D>& L = layout_;
+  double hmax = 0.0;
+  for (std::size_t o = 0; o < owned_.size(); ++o) {
+    double h = h0_[gid_[o]];
+    if (o < nfo_ && L.has_smoothing_length) h = y[L.smoothing_length() + o];
+    else if (o < nfo_) h *= std::pow(owned_.rho[o] / y[L.density() + o], 1.0 / D);
+    hmax = std::max(hmax, h);
+  }
+  return comm_.max(hmax);
+}
+
+template <int D>
 bool DistributedSystem<D>::moved_too_far() const {
-  const double limit2 = 0.25 * skin_ * skin_;
+  // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
+  // hmax_ is the same on every rank, so this decision is too.
+  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
+  if (!(room > 0.0)) return true;
+  const double limit2 = 0.25 * room * room;
   bool far = false;
   for (std::size_t o = 0; o < owned_.size() && !far; ++o) {
     double r2 = 0.0;
@@ -236,7 +262,10 @@ void DistributedSystem<D>::plan() {
   const std::size_t no = owned_.size();
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
-  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range_);
+  // Variable h: P list radii of the largest h now (the local systems' pair lists follow their own largest h).
+  hmax_plan_ = hmax_;
+  const double range = variable_h_ ? stats_.depth * (support_ * hmax_plan_ + skin_) : range_;
+  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range);
   const std::vector<std::uint64_t> hgid = halo_.exchange(comm_, gid_);
   Particles<D> all = owned_;
   append_particles(all, exchange_halo_particles(comm_, halo_, owned_));
@@ -262,6 +291,11 @@ void DistributedSystem<D>::plan() {
     for (std::size_t k = nf_local_; k < order.size(); ++k) energy[k] = wall_energy_[gid_of(order[k]) - n_fluid_global_];
   }
   local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_, nullptr, std::move(energy));
+  if (variable_h_) {
+    std::vector<double> h0(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
+    local_->set_initial_smoothing_lengths(h0);
+  }
   y_local_.assign(local_->size(), 0.0);
   f_local_.assign(local_->size(), 0.0);
   x_plan_ = x_now_;
@@ -277,6 +311,7 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
   const double t_start = omp_get_wtime();
   owned_positions(t, y);
+  if (variable_h_) hmax_ = largest_h(y);
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
   const double t_planned = omp_get_wtime();
 

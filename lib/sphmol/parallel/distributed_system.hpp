@@ -118,6 +118,7 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
   void owned_positions(double t, const double* y);
   bool moved_too_far() const;  // collective
+  double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
   void plan();                 // collective: halo plan and a new local system
 
   // Per owned particle, `array` in this rank's state layout (L entries per particle block) as
@@ -139,6 +140,11 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
   std::size_t n_fluid_global_ = 0;
   std::vector<double> wall_energy_;  // the scene's fixed e of each wall, by global id - n_fluid_global_
+  // Variable h: h(0) of every particle by global id; the largest h of the latest evaluation and of
+  // the halo plan (the list radius, and the halo's reach, follow it); the kernel support per unit h.
+  bool variable_h_ = false;
+  std::vector<double> h0_;
+  double hmax_ = 0.0, hmax_plan_ = 0.0, support_ = 0.0;
   Particles<D> owned_;
   std::vector<std::uint64_t> gid_;
   std::size_t nfo_ = 0;  // owned fluid particles
