@@ -17,6 +17,7 @@
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "same_measurements.hpp"
+#include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
@@ -110,12 +111,12 @@ TEST_CASE("distributed run: the dam break equals the serial run bit for bit, thr
 
 // The shock tube with the energy equation and constant h (the shipped tubes vary h): x ends closed by
 // wall particles that keep their side's e, which enters their pressure (ideal gas).
-Config shock_tube(const std::string& file, const std::vector<std::string>& more = {}) {
-  std::vector<std::string> o{"discretization.smoothing_length=constant", "time.t_end=0.02", "output.times=[0.01,0.02]",
-                             "output.plots=false"};
-  o.insert(o.end(), more.begin(), more.end());
-  return load_config(verification(file), o);
+namespace {
+Config shock_tube(const std::string& file, std::vector<std::string> more = {}) {
+  more.insert(more.begin(), "discretization.smoothing_length=constant");
+  return short_shock_tube(file, more);
 }
+}  // namespace
 
 TEST_CASE("distributed run: the 1D shock tube with the energy equation equals the serial run bit for bit", "[parallel][run][energy]") {
   const Config c = shock_tube("shock_tube_1d.yaml");
@@ -140,27 +141,21 @@ TEST_CASE("distributed run: the 2D shock tube with the energy equation equals th
 TEST_CASE("distributed run: the shipped shock tubes with variable h equal the serial run bit for bit", "[parallel][run][variable_h]") {
   // h in the state (dh/dt) or from the density: the local pair lists and the halo's reach follow the
   // largest h, which grows where the gas expands.
-  const std::vector<std::string> shorter{"time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"};
-  auto with = [&](const std::vector<std::string>& more) {
-    auto o = shorter;
-    o.insert(o.end(), more.begin(), more.end());
-    return o;
-  };
   SECTION("1D, equal masses (h(0) varies across the jump), h by dh/dt") {
-    const Config c = load_config(verification("sod_1d.yaml"), shorter);
+    const Config c = short_shock_tube("sod_1d.yaml");
     REQUIRE(c.discretization.smoothing_length == "ode");
     check_same_as_serial(c);
   }
   SECTION("1D, h by dh/dt, repartitioned at every re-plan") {
-    const Finished split = check_same_as_serial(load_config(verification("shock_tube_1d.yaml"), shorter), {}, 1.0);
+    const Finished split = check_same_as_serial(short_shock_tube("shock_tube_1d.yaml"), {}, 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
   SECTION("1D, h from the density") {
-    check_same_as_serial(load_config(verification("shock_tube_1d.yaml"), with({"discretization.smoothing_length=density"})));
+    check_same_as_serial(short_shock_tube("shock_tube_1d.yaml", {"discretization.smoothing_length=density"}));
   }
   SECTION("2D, h by dh/dt, y periodic") {
-    check_same_as_serial(load_config(verification("shock_tube.yaml"),
-                                     with({"discretization.boundary=wall_particles", "discretization.smoothing_ratio=1.0"})));
+    check_same_as_serial(
+        short_shock_tube("shock_tube.yaml", {"discretization.boundary=wall_particles", "discretization.smoothing_ratio=1.0"}));
   }
 }
 
