@@ -18,7 +18,10 @@
 // sum is the serial sum. The CFL limit is reduced over ranks with min/max, which are exact.
 //
 // The halo plan is made again, with a new local system, when some particle has moved more than half
-// the skin since the last plan (the Verlet rule, halo.hpp). After such a re-plan, when the largest
+// the skin since the last plan (the Verlet rule, halo.hpp). With a variable h the list radius is the
+// kernel support of the largest h over all ranks (reduced at every evaluation): the halo reaches P
+// such radii at the plan, and the support's growth since then eats into the skin, as in the
+// Verlet list (neighbors/verlet_list.hpp). After such a re-plan, when the largest
 // rank's pair work has drifted past `rebalance_threshold` times the mean, the particles are
 // partitioned again by their current pair counts and migrate with their state (repartition(),
 // between steps, with whatever per-particle arrays the integrator carries).
