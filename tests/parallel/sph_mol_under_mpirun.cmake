@@ -1,10 +1,10 @@
 # `sph-mol` itself under mpirun (cmake -P, from tests/CMakeLists.txt): the dam break on 1 rank and
 # on 3 ranks writes the same files byte for byte (VTK particles, the front positions) and the same
 # checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
-# same state; ARKODE and CVODE on 2 ranks end in the particles of 1 rank; rank 0 alone prints the
-# summary; a setting a run over ranks does not support ends
-# every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR,
-# WORK_DIR.
+# same state, and so does the 1D Sod tube (energy equation, variable h); ARKODE and CVODE on 2
+# ranks end in the particles of 1 rank; rank 0 alone prints the summary; a setting a run over ranks
+# does not support ends every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL,
+# MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR, WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
 file(REMOVE_RECURSE ${WORK_DIR})
 set(sets --set discretization.spacing=0.04 --set time.t_end=0.06 --set output.times=[0.03,0.06]
@@ -48,6 +48,41 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/fluid_0
                 RESULT_VARIABLE same)
 if(NOT same EQUAL 0)
   message(FATAL_ERROR "3 ranks' checkpoint continued on 2 ranks: the final particles differ from the uninterrupted run")
+endif()
+
+# A shipped shock tube (energy equation, h by dh/dt, equal masses): 1 and 3 ranks write the same
+# profiles and checkpoint; 3 ranks' checkpoint continued on 2 ends in the profile of 1 rank.
+set(sod ${SOURCE_DIR}/verification/sod_1d.yaml)
+set(sod_sets --set time.t_end=0.04 --set output.times=[0.02,0.04] --set output.plots=false
+             --set output.checkpoint_every=0.02 --quiet)
+foreach(n 1 3)
+  execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} ${n} ${FLAGS} ${SPHMOL} --config ${sod} ${sod_sets} --output ${WORK_DIR}/sod-n${n}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sod_1d on ${n} ranks: exit ${rc}\n${out}\n${err}")
+  endif()
+  file(READ ${WORK_DIR}/sod-n${n}/checkpoint-0.02/checkpoint.json sod_cp${n})
+  string(JSON sod_state${n} GET "${sod_cp${n}}" state)
+endforeach()
+foreach(f profile_t0.02.csv profile_t0.04.csv)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/sod-n1/${f} ${WORK_DIR}/sod-n3/${f} RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "sod_1d: ${f} differs between 1 and 3 ranks")
+  endif()
+endforeach()
+if(NOT sod_state1 STREQUAL sod_state3)
+  message(FATAL_ERROR "sod_1d: the checkpoint of 3 ranks holds another state than that of 1 rank")
+endif()
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --restart ${WORK_DIR}/sod-n3/checkpoint-0.02
+                        --output ${WORK_DIR}/sod-restarted --quiet
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sod_1d restart on 2 ranks: exit ${rc}\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/sod-n1/profile_t0.04.csv
+                        ${WORK_DIR}/sod-restarted/profile_t0.04.csv RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "sod_1d: 3 ranks' checkpoint continued on 2 ranks: the final profile differs from the uninterrupted run")
 endif()
 
 # ARKODE and CVODE: on 2 ranks the same particles as on 1 (which runs serially), byte for byte.

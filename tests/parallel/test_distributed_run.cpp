@@ -1,9 +1,10 @@
 // A run over ranks (parallel/mpi_run.hpp through run_case): the final state is the serial run's,
 // bit for bit, on any rank count, for wall-particle scenes with both leapfrogs: the channel flows
-// (summation density: two dependent pair passes, a two-radius halo) and the dam break (continuity
-// density with dynamic wall densities in the state; particles travel far enough to re-plan the
-// halo many times). Rank 0 runs the serial reference. Unsupported settings are refused
-// with a ConfigError on every rank.
+// (summation density: two dependent pair passes, a two-radius halo; with particle shifting too),
+// the dam break (continuity density with dynamic wall densities in the state; particles travel
+// far enough to re-plan the halo many times) and the shock tube in 1D and 2D (the energy equation:
+// e in the state, the walls' fixed e in each local system). Rank 0 runs the serial reference.
+// Unsupported settings are refused with a ConfigError on every rank.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -16,6 +17,7 @@
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "same_measurements.hpp"
+#include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
@@ -107,6 +109,76 @@ TEST_CASE("distributed run: the dam break equals the serial run bit for bit, thr
   }
 }
 
+// The shock tube with the energy equation and constant h (the shipped tubes vary h): x ends closed by
+// wall particles that keep their side's e, which enters their pressure (ideal gas).
+namespace {
+Config shock_tube(const std::string& file, std::vector<std::string> more = {}) {
+  more.insert(more.begin(), "discretization.smoothing_length=constant");
+  return short_shock_tube(file, more);
+}
+}  // namespace
+
+TEST_CASE("distributed run: the 1D shock tube with the energy equation equals the serial run bit for bit", "[parallel][run][energy]") {
+  const Config c = shock_tube("shock_tube_1d.yaml");
+  REQUIRE(c.discretization.energy);
+  SECTION("one partition") {
+    const Finished split = check_same_as_serial(c);
+    CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
+  }
+  SECTION("partitioned again at every re-plan, e migrating with the leapfrog's state") {
+    const Finished split = check_same_as_serial(c, {}, 1.0);
+    if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
+  }
+}
+
+TEST_CASE("distributed run: the 2D shock tube with the energy equation equals the serial run bit for bit", "[parallel][run][energy]") {
+  // y periodic (wall particles at the x ends only), h0 = 1.0 dx to fit twice the pair radius across.
+  check_same_as_serial(shock_tube("shock_tube.yaml", {"discretization.boundary=wall_particles",
+                                                      "discretization.smoothing_ratio=1.0",
+                                                      "time.integrator=leapfrog_kdk"}));
+}
+
+TEST_CASE("distributed run: the shipped shock tubes with variable h equal the serial run bit for bit", "[parallel][run][variable_h]") {
+  // h in the state (dh/dt) or from the density: the local pair lists and the halo's reach follow the
+  // largest h, which grows where the gas expands.
+  SECTION("1D, equal masses (h(0) varies across the jump), h by dh/dt") {
+    const Config c = short_shock_tube("sod_1d.yaml");
+    REQUIRE(c.discretization.smoothing_length == "ode");
+    check_same_as_serial(c);
+  }
+  SECTION("1D, h by dh/dt, repartitioned at every re-plan") {
+    const Finished split = check_same_as_serial(short_shock_tube("shock_tube_1d.yaml"), {}, 1.0);
+    if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
+  }
+  SECTION("1D, h from the density") {
+    check_same_as_serial(short_shock_tube("shock_tube_1d.yaml", {"discretization.smoothing_length=density"}));
+  }
+  SECTION("2D, h by dh/dt, y periodic") {
+    check_same_as_serial(
+        short_shock_tube("shock_tube.yaml", {"discretization.boundary=wall_particles", "discretization.smoothing_ratio=1.0"}));
+  }
+}
+
+TEST_CASE("distributed run: particle shifting equals the serial run bit for bit", "[parallel][run][shifting]") {
+  // The shift reads the summed densities of its neighbours (Poiseuille) or corrects the state's
+  // density (Couette with continuity density), and scales its anti-clumping term by W(dx). With 19
+  // particles across, h / smoothing_ratio is not the spacing to the bit (the local systems are
+  // assembled with the scene's own).
+  SECTION("summation density") {
+    check_same_as_serial(load_config(verification("poiseuille.yaml"),
+                                     {"discretization.particles_across=19", "geometry.channel_length=1.0e-3",
+                                      "time.integrator=leapfrog", "time.t_end=0.03",
+                                      "output.times=[0.01,0.03]", "output.plots=false",
+                                      "discretization.particle_shifting={coefficient: 4}"}));
+  }
+  SECTION("continuity density") {
+    check_same_as_serial(load_config(verification("couette.yaml"),
+                                     {"discretization.particles_across=20", "time.integrator=leapfrog_kdk", "time.t_end=0.03",
+                                      "output.times=[0.03]", "output.plots=false", "discretization.density=continuity",
+                                      "discretization.particle_shifting={coefficient: 4}"}));
+  }
+}
+
 TEST_CASE("distributed run: settings it does not support are refused on every rank", "[parallel][run]") {
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
@@ -120,6 +192,7 @@ TEST_CASE("distributed run: settings it does not support are refused on every ra
   CHECK_THROWS_AS(run(with("time.integrator=arkode_imex"), &partitioner), ConfigError);
   CHECK_THROWS_AS(run(with("time.integrator=leapfrog_imex"), &partitioner), ConfigError);
   CHECK_THROWS_WITH(run(with("time.integrator=arkode_imex"), &partitioner), Catch::Contains("time.integrator"));
+  CHECK_THROWS_WITH(run(with("discretization.reorder=true"), &partitioner), Catch::Contains("discretization.reorder"));
 }
 
 TEST_CASE("distributed run: a 3D tank equals the serial run bit for bit", "[parallel][run]") {

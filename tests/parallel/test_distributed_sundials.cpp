@@ -21,6 +21,7 @@
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "same_measurements.hpp"
+#include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
@@ -146,6 +147,18 @@ TEST_CASE("distributed run: the dam break with ARKODE and CVODE equals the seria
     CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
   }
   SECTION("cvode_adams") { check_same_as_serial(dam_break("cvode_adams"), monitored); }
+}
+
+TEST_CASE("distributed run: the 1D shock tube with the energy equation, ARKODE and CVODE equals the serial run bit for bit",
+          "[parallel][run][sundials][energy]") {
+  // e (and h) in the state and in the error norm.
+  SECTION("arkode_erk, constant h") {
+    check_same_as_serial(
+        short_shock_tube("shock_tube_1d.yaml", {"discretization.smoothing_length=constant", "time.integrator=arkode_erk"}));
+  }
+  SECTION("cvode_adams, the shipped Sod tube (h by dh/dt)") {
+    check_same_as_serial(short_shock_tube("sod_1d.yaml", {"time.integrator=cvode_adams"}));
+  }
 }
 
 TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which would restart it", "[parallel][run][sundials]") {

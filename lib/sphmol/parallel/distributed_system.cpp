@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphmol/kernels/registry.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/parallel/halo_particles.hpp"
 #include "sphmol/parallel/migration.hpp"
@@ -22,15 +23,16 @@ namespace sphmol::parallel {
 
 namespace {
 
-// One particle's state as it travels: fluid x, v and the density of the state (when it has one);
-// a wall's integrated density in the first entry.
+// One particle's state as it is gathered: a fluid particle's value in each block of the state (x,
+// v, then density, energy and smoothing length when the scene has them), a wall's integrated
+// density in the first entry.
 template <int D>
-using StateRecord = std::array<double, 2 * D + 1>;
+inline constexpr std::size_t most_blocks = 2 * D + 3;
 
 template <int D>
 struct GatherRow {
   std::uint64_t gid;
-  StateRecord<D> value;
+  std::array<double, most_blocks<D>> value;
 };
 
 }  // namespace
@@ -46,18 +48,27 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       domain_(whole.domain()),
       whole_layout_(whole.layout()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
-  if (whole.has_generator() || whole.reorder() || whole.layout().has_energy || whole.layout().has_smoothing_length)
-    throw std::invalid_argument("DistributedSystem: generated particles, reordering, energy and variable h are not supported");
+  if (whole.has_generator() || whole.reorder())
+    throw std::invalid_argument("DistributedSystem: generated particles and reordering are not supported");
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
-  // assemble_system sets h = smoothing_ratio * spacing: a spacing that gives the whole system's h to
-  // the bit (round-off may make it differ from the scene's in the last place) gives the same h.
+  // Walls keep the energy the scene gave them (the state holds the fluid's only): every rank keeps
+  // the walls' values, by global id, for the walls of its local systems.
+  if (whole_layout_.has_energy) {
+    const std::vector<double>& e = whole.energy();
+    wall_energy_.assign(e.begin() + static_cast<long>(P.n_fluid), e.begin() + static_cast<long>(n));
+  }
+  // Variable h: every particle's h(0) (the walls keep it; with h from the density it is the fluid's
+  // reference), by global id, before any evaluation.
+  variable_h_ = config.discretization.smoothing_length != "constant";
+  if (variable_h_) h0_ = whole.smoothing_lengths();
+  support_ = kernel_info<D>(config.discretization.kernel).support;
+  // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
+  // the terms' length scales (particle shifting's W(dx)) are then the whole system's to the bit.
   const double h = whole.smoothing_length(), ratio = config.discretization.smoothing_ratio;
-  spacing_ = h / ratio;
-  for (int k = 0; k < 16 && ratio * spacing_ != h; ++k)
-    spacing_ = std::nextafter(spacing_, ratio * spacing_ < h ? std::numeric_limits<double>::infinity() : 0.0);
-  if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: no spacing reproduces the smoothing length");
+  spacing_ = whole.spacing();
+  if (ratio * spacing_ != h) throw std::logic_error("DistributedSystem: the whole system's spacing does not give its smoothing length");
   // Halo depth: one list radius per dependent pair pass (the top of the header); a term that sums
   // over the stored pair list without a row form counts as a pass of its own.
   const std::size_t passes = (whole.pair_passes().empty() ? whole.fused_pass_count() : whole.pair_passes().size()) +
@@ -110,6 +121,8 @@ void DistributedSystem<D>::set_layout() {
   nfo_ = owned_.n_fluid;
   layout_.n = nfo_;
   layout_.has_density = whole_layout_.has_density;
+  layout_.has_energy = whole_layout_.has_energy;
+  layout_.has_smoothing_length = whole_layout_.has_smoothing_length;
   layout_.n_wall_density = whole_layout_.n_wall_density > 0 ? owned_.n_wall() : 0;
   for (int d = 0; d < D; ++d) x_now_[d].resize(owned_.size());
 }
@@ -165,7 +178,7 @@ void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const s
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
   // Every array as per-particle columns, which migrate() moves with the particles.
-  const std::size_t state_blocks = 2 * D + (layout_.has_density ? 1 : 0);
+  const std::size_t state_blocks = this->state_blocks();
   std::vector<std::vector<double>> columns;
   std::vector<const std::vector<double>*> arrays{&y};
   for (const auto* a : state) arrays.push_back(a);
@@ -211,8 +224,27 @@ void DistributedSystem<D>::owned_positions(double t, const double* y) {
 }
 
 template <int D>
+double DistributedSystem<D>::largest_h(const double* y) const {
+  // As the serial evaluation sets h: from the state, or from the density (Niedoba 2012, eq 2.67);
+  // walls keep h(0).
+  const StateLayout<D>& L = layout_;
+  double hmax = 0.0;
+  for (std::size_t o = 0; o < owned_.size(); ++o) {
+    double h = h0_[gid_[o]];
+    if (o < nfo_ && L.has_smoothing_length) h = y[L.smoothing_length() + o];
+    else if (o < nfo_) h *= std::pow(owned_.rho[o] / y[L.density() + o], 1.0 / D);
+    hmax = std::max(hmax, h);
+  }
+  return comm_.max(hmax);
+}
+
+template <int D>
 bool DistributedSystem<D>::moved_too_far() const {
-  const double limit2 = 0.25 * skin_ * skin_;
+  // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
+  // hmax_ is the same on every rank, so this decision is too.
+  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
+  if (!(room > 0.0)) return true;
+  const double limit2 = 0.25 * room * room;
   bool far = false;
   for (std::size_t o = 0; o < owned_.size() && !far; ++o) {
     double r2 = 0.0;
@@ -230,7 +262,10 @@ void DistributedSystem<D>::plan() {
   const std::size_t no = owned_.size();
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
-  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range_);
+  // Variable h: P list radii of the largest h now (the local systems' pair lists follow their own largest h).
+  hmax_plan_ = hmax_;
+  const double range = variable_h_ ? stats_.depth * (support_ * hmax_plan_ + skin_) : range_;
+  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range);
   const std::vector<std::uint64_t> hgid = halo_.exchange(comm_, gid_);
   Particles<D> all = owned_;
   append_particles(all, exchange_halo_particles(comm_, halo_, owned_));
@@ -249,7 +284,18 @@ void DistributedSystem<D>::plan() {
     stats_.search_seconds += local_->search_seconds();
     stats_.rebuilds += local_->pair_list().rebuilds();
   }
-  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_);
+  std::vector<double> energy;
+  if (whole_layout_.has_energy) {
+    // The fluid's e comes from the state at every evaluation; the walls keep theirs.
+    energy.assign(order.size(), 0.0);
+    for (std::size_t k = nf_local_; k < order.size(); ++k) energy[k] = wall_energy_[gid_of(order[k]) - n_fluid_global_];
+  }
+  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_, nullptr, std::move(energy));
+  if (variable_h_) {
+    std::vector<double> h0(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
+    local_->set_initial_smoothing_lengths(h0);
+  }
   y_local_.assign(local_->size(), 0.0);
   f_local_.assign(local_->size(), 0.0);
   x_plan_ = x_now_;
@@ -265,54 +311,45 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
   const double t_start = omp_get_wtime();
   owned_positions(t, y);
+  if (variable_h_) hmax_ = largest_h(y);
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
   const double t_planned = omp_get_wtime();
 
   // The owned state to the ranks whose halo holds it, and both into the local system's state.
-  const std::size_t no = owned_.size();
+  const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
-  std::vector<StateRecord<D>> rec(no);
+  // One row per particle: a fluid particle's value in each block of the state (the local system's
+  // blocks are the same, from the same config), a wall's integrated density in the first entry.
+  std::vector<double> rec(no * width, 0.0), hrec(halo_.size() * width);
   // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
 #pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < nfo_; ++o) {
-    for (int d = 0; d < D; ++d) {
-      rec[o][d] = y[L.position(d) + o];
-      rec[o][D + d] = y[L.velocity(d) + o];
-    }
-    rec[o][2 * D] = L.has_density ? y[L.density() + o] : 0.0;
-  }
-  for (std::size_t o = nfo_; o < no; ++o) {
-    rec[o].fill(0.0);
-    if (L.n_wall_density > 0) rec[o][0] = y[L.wall_density() + (o - nfo_)];
-  }
-  const std::vector<StateRecord<D>> hrec = halo_.exchange(comm_, rec);
+  for (std::size_t o = 0; o < nfo_; ++o)
+    for (std::size_t b = 0; b < width; ++b) rec[o * width + b] = y[b * nfo_ + o];
+  if (L.n_wall_density > 0)
+    for (std::size_t o = nfo_; o < no; ++o) rec[o * width] = y[L.wall_density() + (o - nfo_)];
+  halo_.exchange_rows(comm_, rec.data(), width, hrec.data());
   const StateLayout<D>& LL = local_->layout();
-  const auto put = [&](std::size_t k, const StateRecord<D>& r) {
+  const auto put = [&](std::size_t k, const double* r) {
     if (k < nf_local_) {
-      for (int d = 0; d < D; ++d) {
-        y_local_[LL.position(d) + k] = r[d];
-        y_local_[LL.velocity(d) + k] = r[D + d];
-      }
-      if (LL.has_density) y_local_[LL.density() + k] = r[2 * D];
+      for (std::size_t b = 0; b < width; ++b) y_local_[b * nf_local_ + k] = r[b];
     } else if (LL.n_wall_density > 0) {
       y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
     }
   };
 #pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec[o]);
+  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec.data() + o * width);
 #pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < hrec.size(); ++q) put(halo_at_[q], hrec[q]);
+  for (std::size_t q = 0; q < halo_.size(); ++q) put(halo_at_[q], hrec.data() + q * width);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
   local_->rhs(t, y_local_.data(), f_local_.data());
 
   // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
   const double t_reduce = omp_get_wtime();
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);  // position, velocity and density blocks
 #pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];
-    for (std::size_t b = 0; b < blocks; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
+    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
   }
   if (L.n_wall_density > 0)
     for (std::size_t o = nfo_; o < no; ++o)
@@ -386,7 +423,7 @@ std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& 
   if (whole.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem::local_part: not a whole state");
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& W = whole_layout_;
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  const std::size_t blocks = state_blocks();
   std::vector<double> y(L.size());
   for (std::size_t o = 0; o < nfo_; ++o)
     for (std::size_t b = 0; b < blocks; ++b) y[b * nfo_ + o] = whole[b * W.n + gid_[o]];
@@ -399,8 +436,9 @@ template <int D>
 void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) const {
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& W = whole_layout_;
-  const std::size_t blocks = 2 * D + (L.has_density ? 1 : 0);
+  const std::size_t blocks = state_blocks();
   std::vector<GatherRow<D>> mine(owned_.size());
+  if (blocks > most_blocks<D>) throw std::logic_error("DistributedSystem::gather: more state blocks than a row holds");
   for (std::size_t o = 0; o < owned_.size(); ++o) {
     mine[o].gid = gid_[o];
     mine[o].value.fill(0.0);

@@ -18,7 +18,10 @@
 // sum is the serial sum. The CFL limit is reduced over ranks with min/max, which are exact.
 //
 // The halo plan is made again, with a new local system, when some particle has moved more than half
-// the skin since the last plan (the Verlet rule, halo.hpp). After such a re-plan, when the largest
+// the skin since the last plan (the Verlet rule, halo.hpp). With a variable h the list radius is the
+// kernel support of the largest h over all ranks (reduced at every evaluation): the halo reaches P
+// such radii at the plan, and the support's growth since then eats into the skin, as in the
+// Verlet list (neighbors/verlet_list.hpp). After such a re-plan, when the largest
 // rank's pair work has drifted past `rebalance_threshold` times the mean, the particles are
 // partitioned again by their current pair counts and migrate with their state (repartition(),
 // between steps, with whatever per-particle arrays the integrator carries).
@@ -118,6 +121,7 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
   void owned_positions(double t, const double* y);
   bool moved_too_far() const;  // collective
+  double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
   void plan();                 // collective: halo plan and a new local system
 
   // Per owned particle, `array` in this rank's state layout (L entries per particle block) as
@@ -125,6 +129,8 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   void to_columns(const std::vector<double>& array, std::size_t blocks, std::vector<std::vector<double>>& columns) const;
   void from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks, std::vector<double>& array) const;
   void set_layout();
+  // Blocks of n values in the state: positions, velocities and the optional per-particle fields.
+  std::size_t state_blocks() const { return 2 * D + layout_.extra_blocks(); }
 
   Communicator comm_;
   Config config_;
@@ -136,6 +142,12 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   Domain<D> domain_;
   double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
   std::size_t n_fluid_global_ = 0;
+  std::vector<double> wall_energy_;  // the scene's fixed e of each wall, by global id - n_fluid_global_
+  // Variable h: h(0) of every particle by global id; the largest h of the latest evaluation and of
+  // the halo plan (the list radius, and the halo's reach, follow it); the kernel support per unit h.
+  bool variable_h_ = false;
+  std::vector<double> h0_;
+  double hmax_ = 0.0, hmax_plan_ = 0.0, support_ = 0.0;
   Particles<D> owned_;
   std::vector<std::uint64_t> gid_;
   std::size_t nfo_ = 0;  // owned fluid particles

@@ -53,6 +53,11 @@ class Halo {
     exchange(comm, owned.data(), halo.data());
     return halo;
   }
+  // The same for rows of `width` doubles per particle (a width known at run time: the state blocks
+  // a scene has), owned[i * width ...] to halo[k * width ...].
+  void exchange_rows(const Communicator& comm, const double* owned, std::size_t width, double* halo) const {
+    exchange_bytes(comm, reinterpret_cast<const std::byte*>(owned), width * sizeof(double), reinterpret_cast<std::byte*>(halo));
+  }
 
  private:
   void exchange_bytes(const Communicator& comm, const std::byte* owned, std::size_t bytes, std::byte* halo) const;

@@ -139,9 +139,6 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
     why.push_back("time.integrator: '" + integrator + "' (leapfrog, leapfrog_kdk, arkode_erk and cvode_adams run over ranks)");
   if (disc.boundary != "wall_particles") why.push_back("discretization.boundary: '" + disc.boundary + "' (only wall_particles)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
-  if (disc.particle_shifting.enabled) why.push_back("discretization.particle_shifting");
-  if (disc.energy) why.push_back("discretization.energy");
-  if (disc.smoothing_length != "constant") why.push_back("discretization.smoothing_length: '" + disc.smoothing_length + "'");
   if (disc.reorder) why.push_back("discretization.reorder: true");
   if (whole.has_generator()) why.push_back("generated particles");
   if (why.empty()) return;

@@ -260,6 +260,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.energy && energy.empty())
     throw std::invalid_argument("discretization.energy: case '" + config.case_name + "' provides no initial energy");
   sys->configure_fields(fields, std::move(energy));
+  sys->set_spacing(spacing);
   if (ghosts) sys->set_generator(std::move(ghosts));
   sys->set_reorder(disc.reorder);
   const auto unfusable = sys->terms_needing_stored_pairs();

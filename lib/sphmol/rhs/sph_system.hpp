@@ -132,6 +132,11 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   const Domain<D>& domain() const { return domain_; }
   const CflLimits& cfl_limits() const { return cfl_; }
   double smoothing_length() const { return ws_.h; }
+  // The lattice spacing the scene was assembled with (rhs/assemble.hpp; 0 when not set): h and the
+  // terms' length scales (particle shifting's W(dx)) derive from it, so a system assembled again
+  // from the same config and spacing (a rank's share in a run over ranks) has the same terms to the bit.
+  void set_spacing(double dx) { spacing_ = dx; }
+  double spacing() const { return spacing_; }
   std::vector<double> initial_state() const;
   std::vector<std::string> active_terms() const;
   std::string_view kernel_name() const { return kernel_->kernel_name(); }
@@ -165,6 +170,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   StateFields fields_;
   std::vector<double> h_ref_, rho_ref_;  // h(0), rho(0) per particle for SmoothingLengthMode::density
   double support_ = 0.0;                 // kernel support in units of h
+  double spacing_ = 0.0;                 // set_spacing()
   double stable_step_ = 0.0;
   long rhs_evals_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
