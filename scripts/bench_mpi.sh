@@ -93,7 +93,10 @@ done
 
 if [[ -z "$model_from" ]]; then
   model_from=0
-  for r in $ranks; do if [[ $r -gt 1 && $r -le $(nproc) ]]; then model_from=$r; fi; done
+  # The machine's cores (those this process may run on): GNU nproc reports OMP_NUM_THREADS instead
+  # when that is set, and a shell with OMP_NUM_THREADS=1 then fits no model.
+  cores=$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)
+  for r in $ranks; do if [[ $r -gt 1 && $r -le $cores ]]; then model_from=$r; fi; done
 fi
 python3 - "$output" "$dimension" "$model_ranks" "$model_from" $ranks <<'EOF'
 import csv, json, math, os, sys, tempfile
