@@ -3,7 +3,8 @@
 // Cases: Poiseuille (laminar, wall particles, ARKODE), shock tube (compressible, energy and dh/dt,
 // ARKODE), lid-driven cavity with wall particles and with ghost particles (moving walls, leapfrog),
 // hydrostatic tank (gravity, walls, a drift monitor that keeps per-particle data), dam break (dynamic
-// walls: wall densities in the state; with the drift-kick-drift and the kick-drift-kick leapfrog).
+// walls: wall densities in the state; with the drift-kick-drift and the kick-drift-kick leapfrog),
+// Poiseuille and Couette with arkode_imex (adaptive IMEX steps and their Krylov stage solves).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -25,6 +26,7 @@ struct Outcome {
   std::size_t n_fluid = 0;
   long rebuilds = 0;
   std::vector<std::uint32_t> order;  // workspace order at the end (empty: reordering off)
+  long steps = 0, rejected = 0, krylov = -1;  // krylov: -1 for an integrator without Krylov solves
 };
 
 Outcome run_steps(const std::string& file, const std::vector<std::string>& overrides, int threads, bool reorder,
@@ -42,6 +44,10 @@ Outcome run_steps(const std::string& file, const std::vector<std::string>& overr
   o.n_fluid = sys->layout().n;
   o.rebuilds = sys->pair_list().rebuilds();
   o.order = sys->workspace_order();
+  o.steps = integ->stats().steps;
+  o.rejected = integ->stats().rejected_steps;
+  const nlohmann::json d = integ->describe();
+  if (d.contains("krylov_iterations")) o.krylov = d.at("krylov_iterations").get<long>();
   omp_set_num_threads(1);
   return o;
 }
@@ -89,6 +95,10 @@ std::vector<Scenario> scenarios() {
       // ARKODE's adaptive steps: its error norms (the OpenMP vector's on 2 threads) must not depend
       // on how the threads split their sums (time/fixed_point_norm.hpp), or the steps differ.
       {"dam_break.yaml", {"discretization.spacing=0.04", "time.t_end=0.5", "time.integrator=arkode_erk"}, 300, false},
+      // arkode_imex: the same for its state vector's norms, and its stage solves' Krylov iterations
+      // must not depend on the thread count either (time/viscous_solve.hpp).
+      {"poiseuille.yaml", {"time.integrator=arkode_imex"}, 300, false},
+      {"couette.yaml", {"time.integrator=arkode_imex"}, 300, false},
   };
 }
 
@@ -106,6 +116,9 @@ TEST_CASE("the state after N steps is bit-identical for 1 and 2 threads", "[inte
       REQUIRE(one.y.size() == two.y.size());
       CHECK(std::equal(one.y.begin(), one.y.end(), two.y.begin()));
       CHECK(one.rebuilds == two.rebuilds);
+      CHECK(one.steps == two.steps);
+      CHECK(one.rejected == two.rejected);
+      CHECK(one.krylov == two.krylov);
     }
   }
 }

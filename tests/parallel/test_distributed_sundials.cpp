@@ -5,6 +5,10 @@
 // rounded otherwise (the MPI vector's own per-rank partial sums) into another step sequence within
 // 0.01 s, and the states then differ at the tolerance's level (about 1e-5 relative). Rank 0 runs
 // the serial reference.
+// The IMEX integrators (arkode_imex, leapfrog_imex) over ranks likewise: their stage solves apply the
+// owned rows' viscous operator with halo velocities fetched from their owners, and their Krylov dot
+// products are exact sums reduced over the ranks (time/fixed_point_norm.hpp), so the Krylov
+// iterations, steps and states are the serial run's to the bit.
 #include <catch2/catch.hpp>
 #include <unistd.h>
 
@@ -101,6 +105,8 @@ Finished check_same_as_serial(const Config& c, const std::vector<std::string>& o
     CHECK(split.summary["steps"] == serial.summary["steps"]);
     CHECK(split.summary["rejected_steps"] == serial.summary["rejected_steps"]);
     CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
+    CHECK(split.summary["integrator"].value("krylov_iterations", -1L) == serial.summary["integrator"].value("krylov_iterations", -1L));
+    CHECK(split.summary["integrator"].value("stage_solves", -1L) == serial.summary["integrator"].value("stage_solves", -1L));
     INFO(comm.size() << " ranks, " << split.summary["steps"] << " steps");
     INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
     CHECK(same_bits(split.y, serial.y));
@@ -161,6 +167,44 @@ TEST_CASE("distributed run: the 1D shock tube with the energy equation, ARKODE a
   }
 }
 
+TEST_CASE("distributed run: Poiseuille and Couette with the IMEX integrators equal the serial run bit for bit",
+          "[parallel][run][sundials][imex]") {
+  for (const std::string file : {"poiseuille.yaml", "couette.yaml"}) {
+    SECTION(file + ", arkode_imex") {
+      const Finished split = check_same_as_serial(channel(file, "arkode_imex"));
+      CHECK(split.summary["integrator"]["krylov_iterations"].get<long>() > 0);
+    }
+    SECTION(file + ", arkode_imex with GMRES and a named table") {
+      check_same_as_serial(channel(file, "arkode_imex", {"time.krylov.solver=spgmr", "time.table=ARKODE_ARK436L2SA_ERK_6_3_4"}));
+    }
+    SECTION(file + ", leapfrog_imex") {
+      // Over ten steps at the shipped acoustic coefficient.
+      const Finished split = check_same_as_serial(channel(file, "leapfrog_imex", {"time.t_end=0.1", "output.times=[0.05,0.1]"}));
+      CHECK(split.summary["integrator"]["krylov_iterations"].get<long>() > 0);
+    }
+  }
+}
+
+TEST_CASE("distributed run: arkode_imex's frozen operator across halo plans equals the serial run bit for bit",
+          "[parallel][run][sundials][imex]") {
+  // Couette until the fluid by the moving plate has moved half the skin: stage evaluations plan the
+  // halo again while L_n, recorded with the previous plan, is still applied.
+  const Finished split = check_same_as_serial(channel("couette.yaml", "arkode_imex", {"time.t_end=0.6", "output.times=[0.3,0.6]"}));
+  CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
+}
+
+TEST_CASE("distributed run: leapfrog_imex's particles are not repartitioned, which would record its operator again",
+          "[parallel][run][imex]") {
+  // The lid-driven cavity stirs the particles: the halo is planned again and the pair work drifts; a
+  // threshold of 1 asks for a new partition at every re-plan, which leapfrog_imex declines.
+  const Config c = load_config(verification("cavity.yaml"), {"discretization.particles_across=20", "time.integrator=leapfrog_imex",
+                                                             "time.t_end=0.5", "output.times=[0.25,0.5]", "output.plots=false"});
+  const Finished split = check_same_as_serial(c, {}, 1.0);
+  CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
+  CHECK(split.summary["parallel"]["repartitions"] == 0);
+  if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions_declined"].get<long>() > 0);
+}
+
 TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which would restart it", "[parallel][run][sundials]") {
   // A threshold of 1 asks for a new partition at every re-plan; the leapfrogs would migrate, ARKODE
   // stays on its partition (starting it again would change its steps) and still takes the serial steps.
@@ -169,21 +213,22 @@ TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which woul
   if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions_declined"].get<long>() > 0);
 }
 
-TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues over ranks as the serial one does serially",
-          "[parallel][run][sundials][restart]") {
+// A checkpoint of c written over ranks at `checkpoint` (its folder name), continued over ranks, ends
+// where the serial run's checkpoint continued serially ends: the same steps and RHS evaluations and
+// the same state to the bit.
+static void check_restart_same_as_serial(const Config& c, const std::string& name, const std::string& checkpoint) {
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
   // One folder for all ranks (rank 0 writes, every rank reads the checkpoint), one per rank count.
   const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-sundials-restart-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
-  const Config c = dam_break("arkode_erk", {"output.checkpoint_every=0.02"});
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-" + name + "-restart-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
   run(c, &partitioner, "", (dir / "split").string());
   comm.barrier();  // the checkpoint is on disk
-  const Finished split = run(c, &partitioner, (dir / "split" / "checkpoint-0.02").string());
+  const Finished split = run(c, &partitioner, (dir / "split" / checkpoint).string());
   CHECK(split.summary["status"] == "completed");
   if (comm.rank() == 0) {
     run(c, nullptr, "", (dir / "serial").string());
-    const Finished serial = run(c, nullptr, (dir / "serial" / "checkpoint-0.02").string());
+    const Finished serial = run(c, nullptr, (dir / "serial" / checkpoint).string());
     CHECK(serial.summary["status"] == "completed");
     CHECK(split.summary["steps"] == serial.summary["steps"]);
     CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
@@ -193,4 +238,17 @@ TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues ov
   }
   comm.barrier();
   if (comm.rank() == 0) fs::remove_all(dir);
+}
+
+TEST_CASE("distributed run: an ARKODE checkpoint written over ranks continues over ranks as the serial one does serially",
+          "[parallel][run][sundials][restart]") {
+  check_restart_same_as_serial(dam_break("arkode_erk", {"output.checkpoint_every=0.02"}), "sundials", "checkpoint-0.02");
+}
+
+TEST_CASE("distributed run: a leapfrog_imex checkpoint written over ranks continues over ranks as the serial one does serially",
+          "[parallel][run][imex][restart]") {
+  // Its previous velocities (the predictor's) travel through the checkpoint, gathered and split again.
+  check_restart_same_as_serial(channel("poiseuille.yaml", "leapfrog_imex", {"time.t_end=0.1", "output.times=[0.05,0.1]",
+                                                                           "output.checkpoint_every=0.05"}),
+                               "imex", "checkpoint-0.05");
 }

@@ -99,3 +99,65 @@ TEST_CASE("fixed-point norm: serial and OpenMP vectors and their clones use it",
   for (N_Vector v : {s, o, ws, wo, c}) N_VDestroy(v);
   SUNContext_Free(&ctx);
 }
+
+TEST_CASE("fixed-point dot product: the same bits for any order and split, close to the exact sum", "[time][norm]") {
+  std::mt19937_64 rng(11);
+  std::lognormal_distribution<double> mag(0.0, 3.0);
+  std::uniform_int_distribution<int> sign(0, 1);
+  const std::size_t n = 10007;
+  std::vector<double> x(n), y(n);
+  long double exact = 0.0L;
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = (sign(rng) ? 1.0 : -1.0) * mag(rng);
+    y[i] = (sign(rng) ? 1.0 : -1.0) * mag(rng);
+    exact += static_cast<long double>(x[i] * y[i]);
+  }
+  const double whole = fixed_point_dot(x.data(), y.data(), n);
+  CHECK(whole == Approx(static_cast<double>(exact)).epsilon(1e-12));
+  // The parts' chunks, summed as an MPI_SUM of 64-bit integers would sum them.
+  for (const auto& cuts : {std::vector<std::size_t>{0, 1, 5000, 5001, n}, {0, 3333, 6666, n}}) {
+    double largest = 0.0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+      largest = std::max(largest, largest_product(x.data() + cuts[k], y.data() + cuts[k], cuts[k + 1] - cuts[k]));
+    const int shift = fixed_point_shift(largest);
+    FixedPointChunks all{};
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const auto part = fixed_point_products(x.data() + cuts[k], y.data() + cuts[k], cuts[k + 1] - cuts[k], shift);
+      for (int c = 0; c < 3; ++c) all[c] += part[c];
+    }
+    CHECK(fixed_point_sum(all, shift) == whole);
+  }
+  std::vector<std::size_t> p(n);
+  std::iota(p.begin(), p.end(), 0);
+  std::shuffle(p.begin(), p.end(), rng);
+  std::vector<double> xp(n), yp(n);
+  for (std::size_t i = 0; i < n; ++i) xp[i] = x[p[i]], yp[i] = y[p[i]];
+  CHECK(fixed_point_dot(xp.data(), yp.data(), n) == whole);
+  // A negative sum, zero and a NaN.
+  for (auto& v : y) v = -v;
+  CHECK(fixed_point_dot(x.data(), y.data(), n) == -whole);
+  std::vector<double> z(n, 0.0);
+  CHECK(fixed_point_dot(x.data(), z.data(), n) == 0.0);
+  z[3] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(std::isnan(fixed_point_dot(x.data(), z.data(), n)));
+}
+
+TEST_CASE("fixed-point dot product replaces a serial vector's and its clones'", "[time][norm]") {
+  SUNContext ctx = nullptr;
+  REQUIRE(SUNContext_Create(nullptr, &ctx) == 0);
+  const std::size_t n = 4097;
+  N_Vector a = N_VNew_Serial(static_cast<sunindextype>(n), ctx);
+  use_fixed_point_dot(a);
+  N_Vector b = N_VClone(a);
+  double* x = N_VGetArrayPointer(a);
+  double* y = N_VGetArrayPointer(b);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = std::sin(0.37 * static_cast<double>(i)) * std::exp(0.01 * static_cast<double>(i % 97));
+    y[i] = std::cos(0.11 * static_cast<double>(i));
+  }
+  CHECK(N_VDotProd(a, b) == fixed_point_dot(x, y, n));
+  CHECK(N_VDotProd(b, a) == fixed_point_dot(x, y, n));
+  N_VDestroy(b);
+  N_VDestroy(a);
+  SUNContext_Free(&ctx);
+}

@@ -174,7 +174,7 @@ TEST_CASE("stage linear solver: identity off the velocity block, (I - gamma L) x
   REQUIRE(SUNContext_Create(nullptr, &ctx) == 0);
   {
     const double gamma = 0.01;
-    StageLinearSolver stage(ctx, KrylovOptions{"pcg", 0.0, 200}, &op, s.n);
+    StageLinearSolver stage(ctx, KrylovOptions{"pcg", 0.0, 200}, &op, s.n, s.size());
     stage.set_gamma([gamma] { return gamma; });
     SUNLinearSolver ls = stage.get();
     REQUIRE(SUNLinSolGetType(ls) == SUNLINEARSOLVER_ITERATIVE);

@@ -46,7 +46,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
       rebalance_threshold_(rebalance_threshold),
       domain_(whole.domain()),
-      whole_layout_(whole.layout()) {
+      whole_layout_(whole.layout()),
+      implicit_terms_(whole.implicit_terms()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
   if (whole.has_generator() || whole.reorder())
     throw std::invalid_argument("DistributedSystem: generated particles and reordering are not supported");
@@ -265,10 +266,14 @@ void DistributedSystem<D>::plan() {
   // Variable h: P list radii of the largest h now (the local systems' pair lists follow their own largest h).
   hmax_plan_ = hmax_;
   const double range = variable_h_ ? stats_.depth * (support_ * hmax_plan_ + skin_) : range_;
-  halo_.plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range);
-  const std::vector<std::uint64_t> hgid = halo_.exchange(comm_, gid_);
+  // A new plan object: operators recorded with the old one keep it (velocity_halo.hpp).
+  auto halo = std::make_shared<Halo<D>>();
+  halo->plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range);
+  halo_ = halo;
+  velocity_halo_ = std::make_shared<const VelocityHalo<D>>(comm_, halo_, n_fluid_global_, static_cast<std::uint64_t>(stats_.repartitions));
+  const std::vector<std::uint64_t> hgid = halo_->exchange(comm_, gid_);
   Particles<D> all = owned_;
-  append_particles(all, exchange_halo_particles(comm_, halo_, owned_));
+  append_particles(all, exchange_halo_particles(comm_, *halo_, owned_));
   // The local set in global-id order: the serial order of these particles, fluid first.
   const std::size_t nh = hgid.size();
   const auto gid_of = [&](std::uint32_t k) { return k < no ? gid_[k] : hgid[k - no]; };
@@ -280,6 +285,13 @@ void DistributedSystem<D>::plan() {
   halo_at_.resize(nh);
   for (std::size_t k = 0; k < order.size(); ++k)
     (order[k] < no ? owned_at_[order[k]] : halo_at_[order[k] - no]) = static_cast<std::uint32_t>(k);
+  // The viscous operator's rows and columns of the local fluid particles: owned fluid o is row and
+  // column o, halo particle q column nfo + q (velocity_halo.hpp).
+  local_row_.assign(nf_local_, ViscousOperator::kNoRow);
+  local_column_.assign(nf_local_, ViscousOperator::kNoRow);
+  for (std::size_t o = 0; o < nfo_; ++o) local_row_[owned_at_[o]] = local_column_[owned_at_[o]] = static_cast<std::uint32_t>(o);
+  for (std::size_t q = 0; q < nh; ++q)
+    if (halo_at_[q] < nf_local_) local_column_[halo_at_[q]] = static_cast<std::uint32_t>(nfo_ + q);
   if (local_) {  // the counters of the system it replaces
     stats_.search_seconds += local_->search_seconds();
     stats_.rebuilds += local_->pair_list().rebuilds();
@@ -308,6 +320,16 @@ void DistributedSystem<D>::plan() {
 
 template <int D>
 void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
+  evaluate(t, y, ydot, nullptr);
+}
+
+template <int D>
+void DistributedSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {
+  evaluate(t, y, fe, &op);
+}
+
+template <int D>
+void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, ViscousOperator* op) {
   ++rhs_evals_;
   const double t_start = omp_get_wtime();
   owned_positions(t, y);
@@ -320,14 +342,14 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   const StateLayout<D>& L = layout_;
   // One row per particle: a fluid particle's value in each block of the state (the local system's
   // blocks are the same, from the same config), a wall's integrated density in the first entry.
-  std::vector<double> rec(no * width, 0.0), hrec(halo_.size() * width);
+  std::vector<double> rec(no * width, 0.0), hrec(halo_->size() * width);
   // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
 #pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o)
     for (std::size_t b = 0; b < width; ++b) rec[o * width + b] = y[b * nfo_ + o];
   if (L.n_wall_density > 0)
     for (std::size_t o = nfo_; o < no; ++o) rec[o * width] = y[L.wall_density() + (o - nfo_)];
-  halo_.exchange_rows(comm_, rec.data(), width, hrec.data());
+  halo_->exchange_rows(comm_, rec.data(), width, hrec.data());
   const StateLayout<D>& LL = local_->layout();
   const auto put = [&](std::size_t k, const double* r) {
     if (k < nf_local_) {
@@ -339,10 +361,15 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
 #pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec.data() + o * width);
 #pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < halo_.size(); ++q) put(halo_at_[q], hrec.data() + q * width);
+  for (std::size_t q = 0; q < halo_->size(); ++q) put(halo_at_[q], hrec.data() + q * width);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
-  local_->rhs(t, y_local_.data(), f_local_.data());
+  if (op) {
+    local_->rhs_explicit(t, y_local_.data(), f_local_.data(), local_op_);
+    op->owned_rows(local_op_, local_row_, local_column_, nfo_, velocity_halo_);
+  } else {
+    local_->rhs(t, y_local_.data(), f_local_.data());
+  }
 
   // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
   const double t_reduce = omp_get_wtime();
@@ -378,12 +405,18 @@ void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
   const double mine[3] = {acoustic, -amax2, hmin};
   double all[3];
   MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MIN, comm_.handle());
-  stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], true);
+  // As SphSystem: no viscous limit for the explicit part of an IMEX split.
+  stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], op == nullptr);
   if (rhs_evals_ == 1) first_stable_step_ = stable_step_;
   const double t_end = omp_get_wtime();
   stats_.exchange_seconds += t_end - t_reduce;
   stats_.rhs_seconds += t_end - t_start;
   stats_.search_seconds += t_planned - t_start;  // the displacement test and the plan
+}
+
+template <int D>
+void DistributedSystem<D>::minimum_everywhere(double* values, std::size_t count) const {
+  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_MIN, comm_.handle());
 }
 
 template <int D>

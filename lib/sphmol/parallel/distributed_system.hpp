@@ -31,6 +31,13 @@
 // (fixed_point_norm_mpi.hpp): every rank sees the serial run's error norms and takes its steps. An
 // evaluation at a stage state refreshes the halo from that state like any other, since the state
 // alone is exchanged per evaluation.
+//
+// The implicit-explicit integrators (arkode_imex, leapfrog_imex) see an ImexSystem: rhs_explicit
+// records the viscous operator of the owned fluid rows, taken from the local system's operator,
+// whose columns past the owned rows are halo velocities (velocity_halo.hpp). Applying it fetches
+// those from their owners by the evaluation's halo plan; its rows are the serial operator's rows
+// with their entries in the serial order, and the Krylov solves' dot products are exact sums
+// reduced over the ranks, so the stage solves iterate as the serial ones do, to the bit.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -44,13 +51,15 @@
 #include "sphmol/parallel/rcb_partition.hpp"
 #include "sphmol/parallel/fixed_point_norm_mpi.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/parallel/velocity_halo.hpp"
+#include "sphmol/time/imex_system.hpp"
 #include "sphmol/time/ode_system.hpp"
 #include "sphmol/time/state_vector.hpp"
 
 namespace sphmol::parallel {
 
 template <int D>
-class DistributedSystem final : public OdeSystem, public StateVectorMaker {
+class DistributedSystem final : public OdeSystem, public ImexSystem, public StateVectorMaker {
  public:
   // Collective. `whole`: the whole scene (every rank builds it, from `config`), before any
   // evaluation; its particle index is the global id. imbalance_tolerance (> 1): the partition's aim
@@ -65,6 +74,10 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   // Collective: every rank evaluates at the same t (the integrators' step decisions rest on
   // reductions, the same on every rank).
   void rhs(double t, const double* y, double* ydot) override;
+  // Collective: f_E and the viscous operator of the owned fluid rows (ImexSystem).
+  void rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) override;
+  std::vector<std::string> implicit_terms() const override { return implicit_terms_; }
+  void minimum_everywhere(double* values, std::size_t count) const override;
   // Collective: an MPI vector over this rank's part of the state (N_VMake_Parallel, no copy), its
   // norm the fixed-point one of the serial run (fixed_point_norm_mpi.hpp).
   N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const override;
@@ -123,6 +136,8 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   bool moved_too_far() const;  // collective
   double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
   void plan();                 // collective: halo plan and a new local system
+  // Collective: f at (t, y) into ydot, and with `op` the viscous operator of the owned rows.
+  void evaluate(double t, const double* y, double* ydot, ViscousOperator* op);
 
   // Per owned particle, `array` in this rank's state layout (L entries per particle block) as
   // columns, and back.
@@ -152,7 +167,12 @@ class DistributedSystem final : public OdeSystem, public StateVectorMaker {
   std::vector<std::uint64_t> gid_;
   std::size_t nfo_ = 0;  // owned fluid particles
   StateLayout<D> layout_, whole_layout_;
-  Halo<D> halo_;
+  std::shared_ptr<const Halo<D>> halo_;
+  std::shared_ptr<const VelocityHalo<D>> velocity_halo_;  // the halo columns of the current plan
+  // Per local fluid particle: its owned row (or ViscousOperator::kNoRow) and its operator column.
+  std::vector<std::uint32_t> local_row_, local_column_;
+  ViscousOperator local_op_;
+  std::vector<std::string> implicit_terms_;
   std::unique_ptr<SphSystem<D>> local_;
   std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
   std::size_t nf_local_ = 0;

@@ -4,7 +4,7 @@
 // parts' fixed-point sums by an integer MPI sum. Integer sums do not depend on their order, so the
 // norm, and with it ARKODE's and CVODE's steps and the final state, are those of the serial run
 // (which takes the same norm) to the bit on any rank count, for two collectives of at most three
-// numbers per norm.
+// numbers per norm. Dot products (the Krylov solves of the implicit integrators) likewise.
 #include <mpi.h>
 #include <sundials/sundials_nvector.h>
 
@@ -13,7 +13,9 @@
 namespace sphmol::parallel {
 
 // Collective: an MPI vector over this rank's `local` doubles at `data` (no copy), `whole` doubles in
-// all, on `comm` (which must outlive the vector and its clones), with the fixed-point norm.
+// all, on `comm` (which must outlive the vector and its clones), with the fixed-point norm and dot product.
 N_Vector make_fixed_point_norm_vector(MPI_Comm comm, double* data, std::size_t local, std::size_t whole, SUNContext ctx);
+// Collective: the same over `local` doubles of its own.
+N_Vector new_fixed_point_vector(MPI_Comm comm, std::size_t local, std::size_t whole, SUNContext ctx);
 
 }  // namespace sphmol::parallel

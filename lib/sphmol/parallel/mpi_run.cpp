@@ -12,6 +12,9 @@ namespace sphmol::parallel {
 
 namespace {
 
+// Integrator checkpoint arrays of the positions' length (D values per fluid particle).
+constexpr const char* kPositionLength[] = {"c", "v_previous"};
+
 template <int D>
 class MpiRun final : public PartitionedRun<D> {
  public:
@@ -34,7 +37,9 @@ class MpiRun final : public PartitionedRun<D> {
     // ARKODE and CVODE keep their step history (error controller, Adams history) inside SUNDIALS;
     // starting them again on a new share would change the steps from the serial run's, so their
     // particles stay where they are (counted in the summary).
-    if (!js.contains("f")) {
+    // leapfrog_imex likewise: started again, it would record its viscous operator at the state
+    // instead of keeping the one of the step's evaluation (at the predicted state).
+    if (!js.contains("f") || js.contains("v_previous")) {
       ++declined_;
       return;
     }
@@ -50,20 +55,21 @@ class MpiRun final : public PartitionedRun<D> {
     integrator.initialize(sys_, t, y_.data());
     integrator.restore_state(js);
   }
-  // The leapfrogs' per-particle arrays: f of the state's length and c of the positions' (the
-  // latter carried in the position blocks of a state-length array).
+  // The leapfrogs' per-particle arrays: f of the state's length, and c and leapfrog_imex's previous
+  // velocities v_previous of the positions' (carried in the position blocks of a state-length array).
   nlohmann::json whole_integrator_state(const nlohmann::json& state) override {
     nlohmann::json js = state;
     if (!js.contains("f")) return js;  // ARKODE, CVODE: no per-particle arrays (a step size, counters)
     std::vector<double> whole;
     sys_.gather(decode_doubles(js.at("f").get<std::string>()).data(), whole);
     js["f"] = encode_doubles(whole);
-    if (js.contains("c")) {
-      std::vector<double> c = decode_doubles(js.at("c").get<std::string>());
+    for (const char* key : kPositionLength) {
+      if (!js.contains(key)) continue;
+      std::vector<double> c = decode_doubles(js.at(key).get<std::string>());
       c.resize(sys_.size(), 0.0);
       sys_.gather(c.data(), whole);
       whole.resize(D * sys_.whole_layout().n);
-      js["c"] = encode_doubles(whole);
+      js[key] = encode_doubles(whole);
     }
     return js;
   }
@@ -71,12 +77,13 @@ class MpiRun final : public PartitionedRun<D> {
     nlohmann::json js = whole;
     if (!js.contains("f")) return js;  // restore_state() names what is missing
     js["f"] = encode_doubles(sys_.local_part(decode_doubles(js.at("f").get<std::string>())));
-    if (js.contains("c")) {
-      std::vector<double> c = decode_doubles(js.at("c").get<std::string>());
+    for (const char* key : kPositionLength) {
+      if (!js.contains(key)) continue;
+      std::vector<double> c = decode_doubles(js.at(key).get<std::string>());
       c.resize(sys_.whole_layout().size(), 0.0);
       std::vector<double> mine = sys_.local_part(c);
       mine.resize(D * sys_.layout().n);
-      js["c"] = encode_doubles(mine);
+      js[key] = encode_doubles(mine);
     }
     return js;
   }
@@ -135,8 +142,10 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
   const auto& disc = config.discretization;
   std::vector<std::string> why;
   const std::string& integrator = config.time.integrator;
-  if (integrator != "leapfrog" && integrator != "leapfrog_kdk" && integrator != "arkode_erk" && integrator != "cvode_adams")
-    why.push_back("time.integrator: '" + integrator + "' (leapfrog, leapfrog_kdk, arkode_erk and cvode_adams run over ranks)");
+  if (integrator != "leapfrog" && integrator != "leapfrog_kdk" && integrator != "leapfrog_imex" && integrator != "arkode_erk" &&
+      integrator != "cvode_adams" && integrator != "arkode_imex")
+    why.push_back("time.integrator: '" + integrator +
+                  "' (leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_imex and cvode_adams run over ranks)");
   if (disc.boundary != "wall_particles") why.push_back("discretization.boundary: '" + disc.boundary + "' (only wall_particles)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
   if (disc.reorder) why.push_back("discretization.reorder: true");

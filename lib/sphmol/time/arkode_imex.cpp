@@ -2,8 +2,6 @@
 
 #include <arkode/arkode_butcher_dirk.h>
 #include <arkode/arkode_butcher_erk.h>
-#include <nvector/nvector_openmp.h>
-#include <nvector/nvector_serial.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -14,6 +12,7 @@
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/time/block_error_weights.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/state_vector.hpp"
 
 namespace sphmol {
 
@@ -64,7 +63,8 @@ long ArkodeImex::krylov_iterations() const {
 
 void ArkodeImex::evaluate(double t, const double* y) {
   const std::size_t n = sys_->size();
-  if (cached_ && t == cache_t_ && std::memcmp(y, cache_y_.data(), n * sizeof(double)) == 0) return;
+  // Over ranks every rank must take the same branch: the evaluation is collective.
+  if (imex_->everywhere(cached_ && t == cache_t_ && std::memcmp(y, cache_y_.data(), n * sizeof(double)) == 0)) return;
   cache_y_.assign(y, y + n);
   cache_t_ = t;
   cached_ = false;
@@ -103,7 +103,8 @@ int ArkodeImex::fi_callback(double, N_Vector y, N_Vector ydot, void* self) {
 int ArkodeImex::weights_callback(N_Vector y, N_Vector w, void* self) {
   auto* me = static_cast<ArkodeImex*>(self);
   const StateBlocks blocks{me->sys_->size(), me->vb_, me->vb_ + me->nv_, me->sys_->block_length()};
-  block_error_weights(blocks, me->opt_.rtol, me->opt_.atol, N_VGetArrayPointer(y), N_VGetArrayPointer(w));
+  block_error_weights(blocks, me->opt_.rtol, me->opt_.atol, N_VGetArrayPointer(y), N_VGetArrayPointer(w),
+                      [me](double* v, std::size_t count) { me->imex_->minimum_everywhere(v, count); });
   return 0;
 }
 
@@ -148,9 +149,8 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
 
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
-  const int threads = omp_get_max_threads();
-  y_ = threads > 1 ? N_VMake_OpenMP(static_cast<sunindextype>(n), y, threads, ctx_)
-                   : N_VMake_Serial(static_cast<sunindextype>(n), y, ctx_);
+  // Order-independent norms (time/state_vector.hpp): the same steps on any thread or rank count.
+  y_ = make_state_vector(sys, y, omp_get_max_threads(), ctx_);
   mem_ = ARKStepCreate(&ArkodeImex::fe_callback, &ArkodeImex::fi_callback, t0, y_, ctx_);
   if (!mem_) throw std::runtime_error("ARKStepCreate failed");
   check(ARKStepSetUserData(mem_, this), "SetUserData");
@@ -179,7 +179,7 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
     check(ARKStepSetCFLFraction(mem_, kCflFraction), "SetCFLFraction");
     check(ARKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
   }
-  ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_);
+  ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_, n);
   ls_->set_gamma([this] {
     double gamma = 0.0;
     check(ARKStepGetCurrentGamma(mem_, &gamma), "GetCurrentGamma");

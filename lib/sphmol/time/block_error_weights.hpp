@@ -10,7 +10,10 @@
 // largest |v| over all velocity components for velocities, 0 for the other fields (densities are far
 // from zero). S is taken from the state the weights are set for (the step's start), so the weights are
 // a function of that state alone; a state at rest (S = 0) falls back to atol.
+// Over MPI ranks S is the whole state's: the extremes are reduced over the ranks (minima and maxima
+// are exact in any order), so every rank weighs its entries as the serial run does.
 #include <cstddef>
+#include <functional>
 
 namespace sphmol {
 
@@ -19,7 +22,11 @@ struct StateBlocks {
   std::size_t block = 0;  // entries per position or velocity component block
 };
 
-// w (length blocks.size) from y.
-void block_error_weights(const StateBlocks& blocks, double rtol, double atol, const double* y, double* w);
+// Replaces `count` values by their minima over every process (collective); empty: one process.
+using MinimumOverProcesses = std::function<void(double* values, std::size_t count)>;
+
+// w (length blocks.size) from y; at most 3 position blocks.
+void block_error_weights(const StateBlocks& blocks, double rtol, double atol, const double* y, double* w,
+                         const MinimumOverProcesses& minimum = {});
 
 }  // namespace sphmol

@@ -1,6 +1,7 @@
 #pragma once
-// Weighted RMS norms whose value does not depend on how the additions are ordered or split: the
-// norm ARKODE and CVODE take of their error estimates and corrections.
+// Weighted RMS norms and dot products whose value does not depend on how the additions are ordered
+// or split: the norm ARKODE and CVODE take of their error estimates and corrections, and the dot
+// products of the Krylov solves of the implicit integrators (time/viscous_solve.hpp).
 //
 // Why: a floating-point sum rounds differently in another order, and adaptive step-size and order
 // control amplifies last-bit differences of its error norms into another step sequence (on the dam
@@ -15,6 +16,11 @@
 // part is kept as three 48-bit chunks, so that parts can be added with ordinary 64-bit integer
 // sums (an MPI_SUM over up to 2^16 ranks), and the whole length must stay below 2^31 entries.
 // A NaN or infinite term makes the norm infinite, which fails the integrator's error test.
+//
+// Dot products the same way, for signed terms x_i y_i (rounded first, as SUNDIALS' serial vector
+// does): truncated toward zero on the grid of the largest |x_i y_i|, summed modulo 2^128 (two's
+// complement, exact in any order while |sum| < 2^127, which 2^31 terms below 2^96 keep), in the same
+// three chunks. A NaN or infinite term makes the dot product NaN, which fails the Krylov solve.
 #include <sundials/sundials_nvector.h>
 
 #include <array>
@@ -36,8 +42,20 @@ double fixed_point_wrms(const FixedPointChunks& chunks, int shift, double length
 // The whole norm of one part (a serial or OpenMP vector).
 double fixed_point_wrms(const double* x, const double* w, std::size_t n);
 
+// max_i |x_i y_i| over n entries; +infinity if any term is NaN or infinite.
+double largest_product(const double* x, const double* y, std::size_t n);
+// The signed terms' sum on the grid of `shift` (modulo 2^128), in chunks.
+FixedPointChunks fixed_point_products(const double* x, const double* y, std::size_t n, int shift);
+// The signed sum from the chunks summed over every part.
+double fixed_point_sum(const FixedPointChunks& chunks, int shift);
+// The whole dot product of one part.
+double fixed_point_dot(const double* x, const double* y, std::size_t n);
+
 // Replaces the weighted RMS norm of a serial or OpenMP vector (and of every vector cloned from it)
 // with fixed_point_wrms.
 void use_fixed_point_norm(N_Vector v);
+// Replaces the dot product of a serial or OpenMP vector (and of its clones) with fixed_point_dot, and
+// removes the fused and local dot products, so that every dot product a solver takes is that one.
+void use_fixed_point_dot(N_Vector v);
 
 }  // namespace sphmol

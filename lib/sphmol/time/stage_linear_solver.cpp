@@ -4,8 +4,9 @@
 
 namespace sphmol {
 
-StageLinearSolver::StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb)
-    : solve_(std::move(k)), op_(op), vb_(vb) {
+StageLinearSolver::StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb,
+                                     std::size_t length)
+    : solve_(std::move(k)), op_(op), vb_(vb), length_(length) {
   ls_ = SUNLinSolNewEmpty(ctx);
   if (!ls_) throw std::runtime_error("SUNDIALS: creating the stage linear solver failed");
   ls_->content = this;
@@ -45,7 +46,8 @@ int StageLinearSolver::solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector 
     const double gamma = me->gamma_();
     const double* bb = N_VGetArrayPointer(b);
     double* xx = N_VGetArrayPointer(x);
-    const std::size_t n = static_cast<std::size_t>(N_VGetLength(b)), vb = me->vb_, ve = vb + me->op_->size();
+    // This process's entries (N_VGetLength is the whole length over ranks).
+    const std::size_t n = me->length_, vb = me->vb_, ve = vb + me->op_->size();
     // Off the velocity block the system is the identity.
     for (std::size_t k = 0; k < vb; ++k) xx[k] = bb[k];
     for (std::size_t k = ve; k < n; ++k) xx[k] = bb[k];

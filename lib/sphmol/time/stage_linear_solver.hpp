@@ -22,8 +22,9 @@ namespace sphmol {
 class StageLinearSolver {
  public:
   // op: the operator of the stage systems, read at each solve (its contents may change between
-  // solves, the object may not move); the velocity block is [vb, vb + op->size()) of the state.
-  StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb);
+  // solves, the object may not move); the velocity block is [vb, vb + op->size()) of this process's
+  // `length` entries of the state.
+  StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb, std::size_t length);
   ~StageLinearSolver();
   StageLinearSolver(const StageLinearSolver&) = delete;
   StageLinearSolver& operator=(const StageLinearSolver&) = delete;
@@ -38,7 +39,7 @@ class StageLinearSolver {
   SUNLinearSolver ls_ = nullptr;
   ViscousSolve solve_;
   const ViscousOperator* op_;
-  std::size_t vb_;
+  std::size_t vb_, length_;
   std::function<double()> gamma_;
   N_Vector weights_ = nullptr;  // ARKStep's, set through the scaling-vector operation
   bool zero_guess_ = false;

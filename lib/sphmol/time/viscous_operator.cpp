@@ -1,6 +1,7 @@
 #include "sphmol/time/viscous_operator.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sphmol {
 
@@ -8,6 +9,8 @@ void ViscousOperator::begin(std::size_t rows, int components, const std::uint32_
                             const std::uint32_t* order) {
   n_ = rows;
   dims_ = components;
+  remote_.reset();
+  stride_ = rows;
   start_.assign(row_capacity, row_capacity + rows);
   count_.assign(rows, 0);
   state_.resize(rows);
@@ -37,9 +40,51 @@ void ViscousOperator::end() {
   }
 }
 
+void ViscousOperator::owned_rows(const ViscousOperator& local, const std::vector<std::uint32_t>& row,
+                                 const std::vector<std::uint32_t>& column, std::size_t rows,
+                                 std::shared_ptr<const RemoteColumns> remote) {
+  n_ = rows;
+  dims_ = local.dims_;
+  remote_ = std::move(remote);
+  stride_ = rows + (remote_ ? remote_->size() : 0);
+  start_.clear();
+  count_.clear();
+  state_.clear();
+  col_.clear();
+  coef_.clear();
+  diag_.clear();
+  b_.clear();
+  const auto D = static_cast<std::size_t>(dims_);
+  for (std::size_t i = 0; i < local.n_; ++i) {
+    const std::uint32_t r = row[local.state_[i]];
+    if (r == kNoRow) continue;
+    start_.push_back(static_cast<std::uint32_t>(col_.size()));
+    count_.push_back(local.count_[i]);
+    state_.push_back(r);
+    for (std::uint32_t k = local.start_[i]; k < local.start_[i] + local.count_[i]; ++k) {
+      col_.push_back(column[local.col_[k]]);
+      coef_.push_back(local.coef_[k]);
+    }
+    diag_.push_back(local.diag_[i]);
+    b_.insert(b_.end(), local.b_.begin() + static_cast<std::ptrdiff_t>(i * D), local.b_.begin() + static_cast<std::ptrdiff_t>((i + 1) * D));
+  }
+  if (state_.size() != rows) throw std::logic_error("ViscousOperator::owned_rows: the local operator lacks owned rows");
+  end();
+}
+
 void ViscousOperator::apply(const double* v, double* out) const {
   const std::size_t n = n_;
   const int D = dims_;
+  // Columns index the block itself, or (with halo columns) a copy of it followed by the halo values.
+  std::size_t stride = n;
+  if (remote_) {
+    ext_.resize(static_cast<std::size_t>(D) * stride_);
+    for (int d = 0; d < D; ++d)
+      std::copy(v + static_cast<std::size_t>(d) * n, v + static_cast<std::size_t>(d + 1) * n, ext_.data() + static_cast<std::size_t>(d) * stride_);
+    remote_->fetch(v, n, D, ext_.data(), stride_);
+    v = ext_.data();
+    stride = stride_;
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t s = state_[i];
@@ -47,7 +92,7 @@ void ViscousOperator::apply(const double* v, double* out) const {
     const double* a = coef_.data() + start_[i];
     const std::uint32_t m = count_[i];
     for (int d = 0; d < D; ++d) {
-      const double* vd = v + static_cast<std::size_t>(d) * n;
+      const double* vd = v + static_cast<std::size_t>(d) * stride;
       double sum = 0.0;
       for (std::uint32_t k = 0; k < m; ++k) sum += a[k] * vd[c[k]];
       out[static_cast<std::size_t>(d) * n + s] = diag_[i] * vd[s] - sum;

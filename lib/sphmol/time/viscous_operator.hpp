@@ -11,9 +11,17 @@
 // reorder the workspace.
 //
 // Vectors are velocity blocks in state layout: component d of fluid particle i at d * rows() + i.
+//
+// Over MPI ranks a rank's operator holds the rows of its owned fluid particles, taken from the
+// operator its local system recorded over owned and halo particles (owned_rows); its columns are
+// the owned rows' velocities and, after them, halo values that apply() fetches from their owners
+// (time/remote_columns.hpp).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "sphmol/time/remote_columns.hpp"
 
 namespace sphmol {
 
@@ -32,12 +40,21 @@ class ViscousOperator {
   void finish_row(std::size_t i, std::uint32_t count, double diagonal, const double* b);
   // After the evaluation: the diagonal in state order (Jacobi preconditioner).
   void end();
+  // The rows of `local` whose state index s has row[s] != kNoRow, as rows row[s] of this operator
+  // (`rows` of them), in local's order and with their entries in local's order (the same sums);
+  // column c of local becomes column[c], which is a row of this operator or rows + h for the h-th
+  // column of `remote`.
+  static constexpr std::uint32_t kNoRow = ~std::uint32_t{0};
+  void owned_rows(const ViscousOperator& local, const std::vector<std::uint32_t>& row, const std::vector<std::uint32_t>& column,
+                  std::size_t rows, std::shared_ptr<const RemoteColumns> remote);
+  // The halo columns (null: every column is a row of this operator).
+  const RemoteColumns* remote() const { return remote_.get(); }
 
   std::size_t rows() const { return n_; }
   int components() const { return dims_; }
   std::size_t size() const { return n_ * static_cast<std::size_t>(dims_); }
   bool empty() const { return n_ == 0; }
-  // out = L v (v and out: velocity blocks, not aliased).
+  // out = L v (v and out: velocity blocks, not aliased). Collective when remote() is set.
   void apply(const double* v, double* out) const;
   // out = L v + b.
   void apply_affine(const double* v, double* out) const;
@@ -55,6 +72,9 @@ class ViscousOperator {
   std::vector<std::uint32_t> col_;
   std::vector<double> coef_, diag_, b_;  // b_: per workspace row, components() values
   std::vector<double> diag_state_, b_state_;
+  std::shared_ptr<const RemoteColumns> remote_;
+  std::size_t stride_ = 0;           // of a component in the vector the columns index: rows + halo columns
+  mutable std::vector<double> ext_;  // that vector, when there are halo columns
 };
 
 }  // namespace sphmol

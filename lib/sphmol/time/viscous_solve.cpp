@@ -8,6 +8,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sphmol/time/fixed_point_norm.hpp"
+
 namespace sphmol {
 
 ViscousSolve::ViscousSolve(KrylovOptions o) : opt_(std::move(o)) {
@@ -24,16 +26,30 @@ ViscousSolve::~ViscousSolve() {
   if (ctx_) SUNContext_Free(&ctx_);
 }
 
-void ViscousSolve::resize(std::size_t n) {
-  if (ls_ && n == n_) return;
+void ViscousSolve::resize(const ViscousOperator& op) {
+  const std::size_t n = op.size();
+  const RemoteColumns* remote = op.remote();
+  // Over ranks the same distribution means the same length on every rank: either every rank makes
+  // new vectors (a collective) or none does.
+  const std::uint64_t distribution = remote ? remote->distribution() : 0;
+  if (ls_ && n == n_ && (remote != nullptr) == distributed_ && distribution == distribution_) return;
   if (ls_) SUNLinSolFree(ls_);
   if (x_) N_VDestroy(x_);
   if (b_) N_VDestroy(b_);
   if (w_) N_VDestroy(w_);
   n_ = n;
-  x_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
-  b_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
-  w_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+  distributed_ = remote != nullptr;
+  distribution_ = distribution;
+  // Dot products summed exactly (time/fixed_point_norm.hpp): the Krylov iterates do not depend on
+  // the order of the additions, so that a run over threads or ranks takes the serial run's.
+  if (remote) {
+    x_ = remote->new_vector(n, ctx_);
+  } else {
+    x_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+    use_fixed_point_dot(x_);
+  }
+  b_ = N_VClone(x_);
+  w_ = N_VClone(x_);
   // Right preconditioning for GMRES, so that its test is on the true residual; PCG is symmetric.
   ls_ = opt_.solver == "pcg" ? SUNLinSol_PCG(x_, SUN_PREC_LEFT, opt_.max_iterations, ctx_)
                              : SUNLinSol_SPGMR(x_, SUN_PREC_RIGHT, opt_.max_iterations, ctx_);
@@ -84,8 +100,8 @@ int ViscousSolve::run(const ViscousOperator& op, double gamma, const double* w, 
 
 int ViscousSolve::solve(const ViscousOperator& op, double gamma, const double* r, double* x) {
   const std::size_t n = op.size();
-  if (n == 0) return 0;
-  resize(n);
+  if (n == 0 && !op.remote()) return 0;  // over ranks, a rank without fluid still takes part
+  resize(op);
   double* xx = N_VGetArrayPointer(x_);
   double* bb = N_VGetArrayPointer(b_);
   std::copy(r, r + n, bb);
@@ -110,8 +126,8 @@ int ViscousSolve::solve_weighted(const ViscousOperator& op, double gamma, const 
   const std::size_t n = op.size();
   last_its_ = 0;
   last_res_ = 0.0;
-  if (n == 0) return SUNLS_SUCCESS;
-  resize(n);
+  if (n == 0 && !op.remote()) return SUNLS_SUCCESS;
+  resize(op);
   std::copy(r, r + n, N_VGetArrayPointer(b_));
   std::copy(x, x + n, N_VGetArrayPointer(x_));
   const int flag = run(op, gamma, w, delta, zero_guess);

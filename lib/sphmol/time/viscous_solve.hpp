@@ -3,10 +3,13 @@
 // velocity block with a SUNDIALS Krylov solver used directly (SUNLinSolSetup / SUNLinSolSolve with an
 // ATimes callback): preconditioned conjugate gradients (SUNLinSol_PCG) where L is symmetric, GMRES
 // (SUNLinSol_SPGMR) otherwise. Jacobi preconditioner (the diagonal 1 - gamma L_ii), warm start from x.
+// Its dot products are summed exactly (time/fixed_point_norm.hpp), and over MPI ranks reduced over
+// them (time/remote_columns.hpp): the iterates are the same bits on any thread or rank count.
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_nvector.h>
 
+#include <cstdint>
 #include <string>
 
 #include "sphmol/time/viscous_operator.hpp"
@@ -41,7 +44,8 @@ class ViscousSolve {
  private:
   static int atimes(void* self, N_Vector v, N_Vector z);
   static int psolve(void* self, N_Vector r, N_Vector z, double tol, int lr);
-  void resize(std::size_t n);
+  // Krylov vectors for op's velocity block (serial, or over the ranks of op.remote()).
+  void resize(const ViscousOperator& op);
   // The Krylov solve of (I - gamma L) x = r into x_ from b_ (and the guess in x_); the SUNDIALS flag.
   int run(const ViscousOperator& op, double gamma, const double* w, double delta, bool zero_guess);
 
@@ -50,6 +54,8 @@ class ViscousSolve {
   SUNLinearSolver ls_ = nullptr;
   N_Vector x_ = nullptr, b_ = nullptr, w_ = nullptr;
   std::size_t n_ = 0;
+  bool distributed_ = false;
+  std::uint64_t distribution_ = 0;
   const ViscousOperator* op_ = nullptr;
   double gamma_ = 0.0;
   long iterations_ = 0;
