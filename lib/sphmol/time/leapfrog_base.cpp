@@ -24,10 +24,14 @@ void LeapfrogBase::initialize(OdeSystem& sys, double t0, double* y) {
   f_.assign(sys.size(), 0.0);
   sys.rhs(t0, y, f_.data());  // a_0 (and the position correction c_0) start the first step
   evaluated();
-  const std::size_t vb = sys.velocities_begin(), nv = sys.velocities_end() - vb;  // positions: [0, nv)
-  c_.resize(nv);
-  for (std::size_t k = 0; k < nv; ++k) c_[k] = f_[k] - y[vb + k];
+  c_.resize(sys.velocities_end() - sys.velocities_begin());  // one per position component
+  correction_from_f();
   initialized();
+}
+
+void LeapfrogBase::correction_from_f() {
+  const std::size_t vb = sys_->velocities_begin();
+  for (std::size_t k = 0; k < c_.size(); ++k) c_[k] = f_[k] - y_[vb + k];
 }
 
 double LeapfrogBase::step_toward(double tout) {
@@ -114,8 +118,7 @@ void LeapfrogBase::restore_state(const nlohmann::json& s) {
   } else {
     // Written before leapfrog_kdk and leapfrog_imex kept c: they took f's position block minus the
     // current velocity, which is what this sets (an O(dt^2) difference from c, for one step).
-    const std::size_t vb = sys_->velocities_begin();
-    for (std::size_t k = 0; k < c_.size(); ++k) c_[k] = f_[k] - y_[vb + k];
+    correction_from_f();
   }
   restore_extra(s);
 }

@@ -54,6 +54,9 @@ class LeapfrogBase : public Integrator {
   std::vector<double> c_;  // position correction of the latest own evaluation, per position component
 
  private:
+  // c = f's position block minus the velocity in y_ (exact where f was evaluated at y_).
+  void correction_from_f();
+
   IntegratorStats stats_;
   double cfl_step_ = 0.0;
 };
