@@ -84,7 +84,8 @@ class GhostGenerator final : public ParticleGenerator<D> {
  public:
   // support: the kernel support in units of h (images are made within support * max h of a wall).
   // The box's faces come first, in the order (x lower, x upper, y lower, ...), then `planes`.
-  GhostGenerator(BoxWalls<D> walls, double support, const std::vector<GhostPlane<D>>& planes = {}) : support_(support) {
+  GhostGenerator(BoxWalls<D> walls, double support, const std::vector<GhostPlane<D>>& planes = {})
+      : walls_(walls), planes_(planes), support_(support) {
     for (int d = 0; d < D; ++d)
       for (int s = 0; s < 2; ++s)
         if (walls[d][s].present) mirrors_.push_back({face_plane(d, s, walls[d][s]), d, walls[d][s].position});
@@ -173,6 +174,9 @@ class GhostGenerator final : public ParticleGenerator<D> {
     return s;
   }
   std::size_t base() const { return n_base_; }
+  // The mirrors as given: a rank's local system (parallel/distributed_system.hpp) is assembled with the same.
+  const BoxWalls<D>& walls() const { return walls_; }
+  const std::vector<GhostPlane<D>>& planes() const { return planes_; }
   const std::vector<std::uint32_t>& sources() const { return source_; }
   const std::vector<std::uint32_t>& masks() const { return mask_; }
 
@@ -261,6 +265,8 @@ class GhostGenerator final : public ParticleGenerator<D> {
     for (int d = 0; d < D; ++d) v[d] += 2.0 * wall_tangent[d] - tangent[d];
   }
 
+  BoxWalls<D> walls_;
+  std::vector<GhostPlane<D>> planes_;
   std::vector<Mirror> mirrors_;
   std::vector<std::uint32_t> perpendicular_;  // per mirror: the mirrors at right angles to it
   double support_;

@@ -49,8 +49,14 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       whole_layout_(whole.layout()),
       implicit_terms_(whole.implicit_terms()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
-  if (whole.has_generator() || whole.reorder())
-    throw std::invalid_argument("DistributedSystem: generated particles and reordering are not supported");
+  if (whole.reorder()) throw std::invalid_argument("DistributedSystem: reordering is not supported");
+  // Ghost (mirror) walls: every local system is assembled with the whole system's mirrors (the header).
+  if (whole.has_generator()) {
+    const auto* ghosts = dynamic_cast<const GhostGenerator<D>*>(whole.generator());
+    if (!ghosts) throw std::invalid_argument("DistributedSystem: generated particles other than ghost walls are not supported");
+    ghost_walls_ = ghosts->walls();
+    ghost_planes_ = ghosts->planes();
+  }
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
@@ -240,10 +246,32 @@ double DistributedSystem<D>::largest_h(const double* y) const {
 }
 
 template <int D>
+double DistributedSystem<D>::mirror_margin() const {
+  // A fluid particle p behind a mirror (a wall it has crossed) is nearer to the images of the
+  // particles in front than to those particles: along each mirror normal of an image the two
+  // distances differ by at most 2 p, so an image within the support comes from a source within the
+  // support plus 2 D times the deepest crossing. Particles in front of every mirror: 0.
+  double behind = 0.0;
+  const auto crossed = [&](const GhostPlane<D>& m, std::size_t o) {
+    double s = -m.offset;
+    for (int d = 0; d < D; ++d) s += m.normal[d] * x_now_[d][o];
+    behind = std::max(behind, -s);
+  };
+  for (std::size_t o = 0; o < nfo_; ++o) {
+    for (int d = 0; d < D; ++d)
+      for (int side = 0; side < 2; ++side)
+        if ((*ghost_walls_)[d][side].present) crossed(face_plane(d, side, (*ghost_walls_)[d][side]), o);
+    for (const auto& m : ghost_planes_) crossed(m, o);
+  }
+  return 2.0 * D * comm_.max(behind);
+}
+
+template <int D>
 bool DistributedSystem<D>::moved_too_far() const {
   // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
   // hmax_ is the same on every rank, so this decision is too.
-  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
+  // So does the ghost margin's growth (mirror_margin()).
+  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_)) - std::max(0.0, margin_ - margin_plan_);
   if (!(room > 0.0)) return true;
   const double limit2 = 0.25 * room * room;
   bool far = false;
@@ -265,7 +293,8 @@ void DistributedSystem<D>::plan() {
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   // Variable h: P list radii of the largest h now (the local systems' pair lists follow their own largest h).
   hmax_plan_ = hmax_;
-  const double range = variable_h_ ? stats_.depth * (support_ * hmax_plan_ + skin_) : range_;
+  margin_plan_ = margin_;
+  const double range = (variable_h_ ? stats_.depth * (support_ * hmax_plan_ + skin_) : range_) + stats_.depth * margin_plan_;
   // A new plan object: operators recorded with the old one keep it (velocity_halo.hpp).
   auto halo = std::make_shared<Halo<D>>();
   halo->plan(comm_, domain_, gather_owned_bounds<D>(comm_, xs, no), xs, no, range);
@@ -302,7 +331,8 @@ void DistributedSystem<D>::plan() {
     energy.assign(order.size(), 0.0);
     for (std::size_t k = nf_local_; k < order.size(); ++k) energy[k] = wall_energy_[gid_of(order[k]) - n_fluid_global_];
   }
-  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_, nullptr, std::move(energy));
+  local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_,
+                              ghost_walls_ ? &*ghost_walls_ : nullptr, std::move(energy), ghost_planes_);
   if (variable_h_) {
     std::vector<double> h0(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
@@ -334,6 +364,7 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   const double t_start = omp_get_wtime();
   owned_positions(t, y);
   if (variable_h_) hmax_ = largest_h(y);
+  if (ghost_walls_) margin_ = mirror_margin();
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
   const double t_planned = omp_get_wtime();
 

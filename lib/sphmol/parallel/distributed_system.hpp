@@ -17,6 +17,14 @@
 // every search makes it) lists the serial neighbours in the serial order, and every per-particle
 // sum is the serial sum. The CFL limit is reduced over ranks with min/max, which are exact.
 //
+// Ghost (mirror) walls: each local system mirrors its own fluid particles, owned and halo, at every
+// evaluation (boundary/ghost_particles.hpp). An image is never nearer to a particle in front of its
+// mirror than its source is, so the images an owned row reads come from halo sources, and they are
+// appended in the order of their sources, as in the serial run: every row lists the serial images in
+// the serial order, with the fields their sources have on their owners (the deep halo computes them
+// alike). A fluid particle behind a mirror brings images nearer than their sources by up to twice
+// its depth behind it, per mirror; the halo reaches that much farther (mirror_margin()).
+//
 // The halo plan is made again, with a new local system, when some particle has moved more than half
 // the skin since the last plan (the Verlet rule, halo.hpp). With a variable h the list radius is the
 // kernel support of the largest h over all ranks (reduced at every evaluation): the halo reaches P
@@ -41,10 +49,12 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/halo.hpp"
@@ -135,6 +145,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void owned_positions(double t, const double* y);
   bool moved_too_far() const;  // collective
   double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
+  // Collective, ghost walls only: how much farther than the support an image's source may lie (from the
+  // owned positions now); the halo reaches that much farther per pass.
+  double mirror_margin() const;
   void plan();                 // collective: halo plan and a new local system
   // Collective: f at (t, y) into ydot, and with `op` the viscous operator of the owned rows.
   void evaluate(double t, const double* y, double* ydot, ViscousOperator* op);
@@ -157,6 +170,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   Domain<D> domain_;
   double spacing_ = 0.0, range_ = 0.0, skin_ = 0.0;
   std::size_t n_fluid_global_ = 0;
+  // Ghost walls: the whole system's mirrors, for every local system (none without ghost walls).
+  std::optional<BoxWalls<D>> ghost_walls_;
+  std::vector<GhostPlane<D>> ghost_planes_;
+  double margin_ = 0.0, margin_plan_ = 0.0;  // mirror_margin() now and at the halo plan
   std::vector<double> wall_energy_;  // the scene's fixed e of each wall, by global id - n_fluid_global_
   // Variable h: h(0) of every particle by global id; the largest h of the latest evaluation and of
   // the halo plan (the list radius, and the halo's reach, follow it); the kernel support per unit h.

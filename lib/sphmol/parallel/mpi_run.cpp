@@ -146,10 +146,13 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
       integrator != "cvode_adams" && integrator != "arkode_imex")
     why.push_back("time.integrator: '" + integrator +
                   "' (leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_imex and cvode_adams run over ranks)");
-  if (disc.boundary != "wall_particles") why.push_back("discretization.boundary: '" + disc.boundary + "' (only wall_particles)");
+  if (disc.boundary != "wall_particles" && disc.boundary != "ghost")
+    why.push_back("discretization.boundary: '" + disc.boundary + "' (wall_particles and ghost run over ranks)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
   if (disc.reorder) why.push_back("discretization.reorder: true");
-  if (whole.has_generator()) why.push_back("generated particles");
+  // Ghost walls are the one generated set the local systems rebuild (distributed_system.hpp).
+  if (whole.has_generator() && !dynamic_cast<const GhostGenerator<D>*>(whole.generator()))
+    why.push_back("generated particles other than ghost walls");
   if (why.empty()) return;
   std::string text;
   for (const auto& w : why) text += (text.empty() ? "" : "; ") + w;
