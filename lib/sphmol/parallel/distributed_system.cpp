@@ -348,12 +348,17 @@ void DistributedSystem<D>::exchange_into_local(const double* y) {
 }
 
 template <int D>
-void DistributedSystem<D>::refresh_local(double t, const double* y) {
-  // As an evaluation prepares the local system (a halo plan when one is due), then its fields as
-  // SphSystem::refresh_fields sets them: no evaluation is counted and the step limit stays.
+void DistributedSystem<D>::prepare_local(double t, const double* y) {
   owned_positions(t, y);
   if (variable_h_) hmax_ = largest_h(y);
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
+}
+
+template <int D>
+void DistributedSystem<D>::refresh_local(double t, const double* y) {
+  // As an evaluation prepares the local system (a halo plan when one is due), then its fields as
+  // SphSystem::refresh_fields sets them: no evaluation is counted and the step limit stays.
+  prepare_local(t, y);
   exchange_into_local(y);
   std::vector<double> scratch;
   local_->refresh_fields(t, y_local_.data(), scratch);
@@ -373,9 +378,7 @@ template <int D>
 void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, ViscousOperator* op) {
   ++rhs_evals_;
   const double t_start = omp_get_wtime();
-  owned_positions(t, y);
-  if (variable_h_) hmax_ = largest_h(y);
-  if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
+  prepare_local(t, y);
   const double t_planned = omp_get_wtime();
   exchange_into_local(y);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;

@@ -144,6 +144,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
   void owned_positions(double t, const double* y);
   bool moved_too_far() const;  // collective
+  // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
+  void prepare_local(double t, const double* y);
   void exchange_into_local(const double* y);  // collective: the owned and halo state into y_local_
   double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
   void plan();                 // collective: halo plan and a new local system
