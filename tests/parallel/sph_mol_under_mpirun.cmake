@@ -1,10 +1,12 @@
 # `sph-mol` itself under mpirun (cmake -P, from tests/CMakeLists.txt): the dam break on 1 rank and
-# on 3 ranks writes the same files byte for byte (VTK particles, the front positions) and the same
+# on 3 ranks writes the same particles (1 rank: the serial .vtp files; 3 ranks: a .pvtp per file
+# whose 3 per-rank pieces together hold the same particles and values, compared by PIECES_EQUAL,
+# and a .pvd that lists the .pvtp files), the same front positions byte for byte and the same
 # checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
 # same state, and so does the 1D Sod tube (energy equation, variable h); ARKODE and CVODE on 2
 # ranks end in the particles of 1 rank; rank 0 alone prints the summary; a setting a run over ranks
 # does not support ends every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL,
-# MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR, WORK_DIR.
+# PIECES_EQUAL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR, WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
 file(REMOVE_RECURSE ${WORK_DIR})
 set(sets --set discretization.spacing=0.04 --set time.t_end=0.06 --set output.times=[0.03,0.06]
@@ -22,12 +24,30 @@ foreach(n 1 3)
     message(FATAL_ERROR "${n} ranks: the summary was printed ${printed} times\n${out}")
   endif()
 endforeach()
-foreach(f fluid_0001.vtp fluid_0002.vtp walls_0002.vtp front.csv)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/${f} ${WORK_DIR}/n3/${f} RESULT_VARIABLE same)
+# The particles of 1 rank's .vtp in the 3 pieces of 3 ranks' .pvtp.
+function(check_pieces serial split pieces what)
+  execute_process(COMMAND ${PIECES_EQUAL} ${serial} ${split} ${pieces} RESULT_VARIABLE same ERROR_VARIABLE why)
   if(NOT same EQUAL 0)
-    message(FATAL_ERROR "${f} differs between 1 and 3 ranks")
+    message(FATAL_ERROR "${what}: ${why}")
+  endif()
+endfunction()
+foreach(f fluid_0000 fluid_0001 fluid_0002 walls_0000 walls_0002)
+  check_pieces(${WORK_DIR}/n1/${f}.vtp ${WORK_DIR}/n3/${f}.pvtp 3 "${f}: 3 ranks against 1")
+  if(EXISTS ${WORK_DIR}/n3/${f}.vtp)
+    message(FATAL_ERROR "3 ranks wrote the serial file ${f}.vtp")
   endif()
 endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/front.csv ${WORK_DIR}/n3/front.csv RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "front.csv differs between 1 and 3 ranks")
+endif()
+# The collections: the same entries, with .pvtp files over ranks.
+file(READ ${WORK_DIR}/n1/particles.pvd pvd1)
+file(READ ${WORK_DIR}/n3/particles.pvd pvd3)
+string(REPLACE ".vtp\"" ".pvtp\"" pvd1_as_pieces "${pvd1}")
+if(NOT pvd1 MATCHES "file=\"fluid_0002.vtp\"" OR NOT pvd3 STREQUAL pvd1_as_pieces)
+  message(FATAL_ERROR "particles.pvd: 3 ranks should list the .pvtp files of the serial entries\n1 rank:\n${pvd1}\n3 ranks:\n${pvd3}")
+endif()
 foreach(n 1 3)
   file(READ ${WORK_DIR}/n${n}/checkpoint-0.03/checkpoint.json cp${n})
   string(JSON state${n} GET "${cp${n}}" state)
@@ -44,11 +64,8 @@ execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --restart ${W
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "restart on 2 ranks: exit ${rc}\n${out}\n${err}")
 endif()
-execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/n1/fluid_0002.vtp ${WORK_DIR}/restarted/fluid_0000.vtp
-                RESULT_VARIABLE same)
-if(NOT same EQUAL 0)
-  message(FATAL_ERROR "3 ranks' checkpoint continued on 2 ranks: the final particles differ from the uninterrupted run")
-endif()
+check_pieces(${WORK_DIR}/n1/fluid_0002.vtp ${WORK_DIR}/restarted/fluid_0000.pvtp 2
+             "3 ranks' checkpoint continued on 2 ranks: the final particles against the uninterrupted run")
 
 # A shipped shock tube (energy equation, h by dh/dt, equal masses): 1 and 3 ranks write the same
 # profiles and checkpoint; 3 ranks' checkpoint continued on 2 ends in the profile of 1 rank.
@@ -85,7 +102,7 @@ if(NOT same EQUAL 0)
   message(FATAL_ERROR "sod_1d: 3 ranks' checkpoint continued on 2 ranks: the final profile differs from the uninterrupted run")
 endif()
 
-# ARKODE and CVODE: on 2 ranks the same particles as on 1 (which runs serially), byte for byte.
+# ARKODE and CVODE: on 2 ranks the same particles as on 1 (which runs serially), to the bit.
 foreach(integrator arkode_erk cvode_adams)
   set(short --set discretization.spacing=0.04 --set time.integrator=${integrator} --set time.t_end=0.02
             --set output.times=[0.02] --set output.plots=false --set output.vtk=true --quiet)
@@ -97,11 +114,8 @@ foreach(integrator arkode_erk cvode_adams)
       message(FATAL_ERROR "${integrator} on ${n} ranks: exit ${rc}\n${out}\n${err}")
     endif()
   endforeach()
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/${integrator}-n1/fluid_0001.vtp
-                          ${WORK_DIR}/${integrator}-n2/fluid_0001.vtp RESULT_VARIABLE same)
-  if(NOT same EQUAL 0)
-    message(FATAL_ERROR "${integrator}: the final particles differ between 1 and 2 ranks")
-  endif()
+  check_pieces(${WORK_DIR}/${integrator}-n1/fluid_0001.vtp ${WORK_DIR}/${integrator}-n2/fluid_0001.pvtp 2
+               "${integrator}: the final particles of 2 ranks against 1")
 endforeach()
 
 execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --config ${SOURCE_DIR}/verification/poiseuille.yaml

@@ -349,25 +349,7 @@ void DistributedSystem<D>::plan() {
 }
 
 template <int D>
-void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
-  evaluate(t, y, ydot, nullptr);
-}
-
-template <int D>
-void DistributedSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {
-  evaluate(t, y, fe, &op);
-}
-
-template <int D>
-void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, ViscousOperator* op) {
-  ++rhs_evals_;
-  const double t_start = omp_get_wtime();
-  owned_positions(t, y);
-  if (variable_h_) hmax_ = largest_h(y);
-  if (ghost_walls_) margin_ = mirror_margin();
-  if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
-  const double t_planned = omp_get_wtime();
-
+void DistributedSystem<D>::exchange_into_local(const double* y) {
   // The owned state to the ranks whose halo holds it, and both into the local system's state.
   const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
@@ -393,6 +375,43 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec.data() + o * width);
 #pragma omp parallel for schedule(static)
   for (std::size_t q = 0; q < halo_->size(); ++q) put(halo_at_[q], hrec.data() + q * width);
+}
+
+template <int D>
+void DistributedSystem<D>::prepare_local(double t, const double* y) {
+  owned_positions(t, y);
+  if (variable_h_) hmax_ = largest_h(y);
+  if (ghost_walls_) margin_ = mirror_margin();
+  if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
+}
+
+template <int D>
+void DistributedSystem<D>::refresh_local(double t, const double* y) {
+  // As an evaluation prepares the local system (a halo plan when one is due), then its fields as
+  // SphSystem::refresh_fields sets them: no evaluation is counted and the step limit stays.
+  prepare_local(t, y);
+  exchange_into_local(y);
+  std::vector<double> scratch;
+  local_->refresh_fields(t, y_local_.data(), scratch);
+}
+
+template <int D>
+void DistributedSystem<D>::rhs(double t, const double* y, double* ydot) {
+  evaluate(t, y, ydot, nullptr);
+}
+
+template <int D>
+void DistributedSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {
+  evaluate(t, y, fe, &op);
+}
+
+template <int D>
+void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, ViscousOperator* op) {
+  ++rhs_evals_;
+  const double t_start = omp_get_wtime();
+  prepare_local(t, y);
+  const double t_planned = omp_get_wtime();
+  exchange_into_local(y);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
   if (op) {
@@ -404,6 +423,9 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
 
   // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
   const double t_reduce = omp_get_wtime();
+  const std::size_t no = owned_.size(), width = state_blocks();
+  const StateLayout<D>& L = layout_;
+  const StateLayout<D>& LL = local_->layout();
 #pragma omp parallel for schedule(static)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];

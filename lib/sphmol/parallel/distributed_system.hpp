@@ -114,6 +114,16 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void repartition(double t, std::vector<double>& y, const std::vector<std::vector<double>*>& state,
                    const std::vector<std::vector<double>*>& positions);
 
+  // Collective, at an output time: the local system (owned + halo particles) with its fields at
+  // (t, y), y this rank's state, as SphSystem::refresh_fields sets them (no evaluation counted, the
+  // step limit kept; the halo is planned again if it is due). Its owned rows then hold the whole
+  // system's values, so each rank can write its own particles (run/owned_piece.hpp).
+  void refresh_local(double t, const double* y);
+  const SphSystem<D>& local_system() const { return *local_; }
+  const std::vector<double>& local_state() const { return y_local_; }
+  // The local system's row of each owned particle.
+  const std::vector<std::uint32_t>& owned_rows() const { return owned_at_; }
+
   // Owned particles: fluid first; the global id of each; the density of the latest evaluation.
   const Particles<D>& owned() const { return owned_; }
   const std::vector<std::uint64_t>& gid() const { return gid_; }
@@ -144,6 +154,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
   void owned_positions(double t, const double* y);
   bool moved_too_far() const;  // collective
+  // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
+  void prepare_local(double t, const double* y);
+  void exchange_into_local(const double* y);  // collective: the owned and halo state into y_local_
   double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
   // Collective, ghost walls only: how much farther than the support an image's source may lie (from the
   // owned positions now); the halo reaches that much farther per pass.

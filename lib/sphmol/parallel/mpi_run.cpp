@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
@@ -27,6 +28,34 @@ class MpiRun final : public PartitionedRun<D> {
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
   void check(double t, double) override { health_(t, y_.data()); }
+  OwnedPiece<D> owned_piece(double t) override {
+    sys_.refresh_local(t, y_.data());
+    OwnedPiece<D> p;
+    p.system = &sys_.local_system();
+    p.y = sys_.local_state().data();
+    // Owned fluid comes first among the owned particles; the local rows are in global-id order, so
+    // sorting the rows sorts the ids too.
+    const auto& rows = sys_.owned_rows();
+    const auto& gid = sys_.gid();
+    const std::size_t nfo = sys_.owned().n_fluid;
+    std::vector<std::pair<std::size_t, std::int64_t>> fluid, walls;
+    for (std::size_t o = 0; o < rows.size(); ++o) (o < nfo ? fluid : walls).emplace_back(rows[o], static_cast<std::int64_t>(gid[o]));
+    std::sort(fluid.begin(), fluid.end());
+    std::sort(walls.begin(), walls.end());
+    for (const auto& [row, id] : fluid) {
+      p.fluid_rows.push_back(row);
+      p.fluid_ids.push_back(id);
+    }
+    for (const auto& [row, id] : walls) {
+      p.wall_rows.push_back(row);
+      p.wall_ids.push_back(id);
+    }
+    p.rank = comm_.rank();
+    p.ranks = comm_.size();
+    p.barrier = [this] { comm_.barrier(); };
+    return p;
+  }
+  void barrier() override { comm_.barrier(); }
   void rebalance(Integrator& integrator, double t) override {
     if (!sys_.imbalanced()) return;
     // The leapfrogs carry, beyond y, their last evaluation f (the state's length) and the XSPH
@@ -124,7 +153,8 @@ class MpiRun final : public PartitionedRun<D> {
             {"verlet_pairs_halo_rows", redundant},
             {"exchange_seconds", exchange},
             {"rhs_seconds", rhs},
-            {"output", "the whole state gathered on rank 0, which measures and writes every file"}};
+            {"output", "each rank writes its own particles' VTK pieces; the whole state is gathered on rank 0, which "
+                       "measures and writes every other file"}};
   }
 
  private:
@@ -150,6 +180,8 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
     why.push_back("discretization.boundary: '" + disc.boundary + "' (wall_particles and ghost run over ranks)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
   if (disc.reorder) why.push_back("discretization.reorder: true");
+  // The ranks' VTK pieces hold their own fluid particles and walls (run/pvtp_file.hpp), no images.
+  if (config.output.vtk_ghosts) why.push_back("output.vtk_ghosts: true (the ranks' VTK pieces hold fluid and walls only)");
   // Ghost walls are the one generated set the local systems rebuild (distributed_system.hpp).
   if (whole.has_generator() && !dynamic_cast<const GhostGenerator<D>*>(whole.generator()))
     why.push_back("generated particles other than ghost walls");

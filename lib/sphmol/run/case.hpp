@@ -11,6 +11,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/owned_piece.hpp"
 
 namespace sphmol {
 
@@ -82,6 +83,12 @@ class OutputObserver {
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // Over several ranks: an observer that writes per-rank files (VTK pieces) is called on every rank
+  // at output times with the rank's own particles (run/owned_piece.hpp) instead of at_output on
+  // rank 0 with the whole system. `whole`: the scene as built (not evaluated off rank 0); `out`:
+  // enabled on every rank when the run writes files, rank 0's records being the run's file list.
+  virtual bool writes_pieces() const { return false; }
+  virtual void at_output_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {}
   // An observer with its own sampling times (probes with `every`): the earliest time it still wants
   // (infinity: none); the run loop stops there too and calls at_time (after refresh_fields).
   virtual double next_time() const { return std::numeric_limits<double>::infinity(); }

@@ -5,13 +5,15 @@
 //
 // Every rank builds the whole scene; the integrator then advances each rank's own part of the
 // state. At output times the whole state is gathered, and the root rank measures, writes the
-// observers' files and the summary with the whole system, as a serial run does.
+// observers' files and the summary with the whole system, as a serial run does; observers that
+// write per-rank files (VTK pieces) get each rank's own particles instead (owned_piece()).
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/owned_piece.hpp"
 #include "sphmol/time/integrator.hpp"
 #include "sphmol/time/ode_system.hpp"
 
@@ -26,6 +28,11 @@ class PartitionedRun {
   virtual std::vector<double>& state() = 0;
   // Collective: the whole state in the serial layout, on every rank.
   virtual void gather(std::vector<double>& whole) = 0;
+  // Collective, at an output time t: this rank's own particles with their fields at (t, state()),
+  // for the observers that write per-rank files. Valid until the next call on the run.
+  virtual OwnedPiece<D> owned_piece(double t) = 0;
+  // Collective: returns once every rank has called it.
+  virtual void barrier() = 0;
   // Collective, after each accepted step: throws BlowUp on every rank when any rank's part fails a
   // check (the same BlowUp everywhere).
   virtual void check(double t, double h) = 0;

@@ -110,6 +110,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     if (restart && opt.continuing)
       for (const auto& f : restart->files) out.record(f);
   }
+  // Over ranks every rank writes its own VTK pieces into the folder rank 0 has just made.
+  if (part) part->barrier();
+  const OutputSink own = root ? out : OutputSink{out.directory, opt.write_files};
   const double t_first = t;
   std::vector<double> scratch;
 
@@ -185,14 +188,26 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
         if (root) o->at_time(*sys, y.data(), t, out);
       }
   };
+  // Observers with per-rank files (VTK pieces): every rank writes its own particles' part.
+  const auto write_pieces = [&] {
+    if (!part || !own.enabled) return;  // the same on every rank
+    if (std::none_of(observers.begin(), observers.end(), [](const auto& o) { return o->writes_pieces(); })) return;
+    const OwnedPiece<D> piece = part->owned_piece(t);
+    for (auto& o : observers)
+      if (o->writes_pieces()) o->at_output_pieces(*sys, piece, t, own);
+  };
+  // Over ranks those observers write their pieces instead.
+  const auto on_root = [&](const std::unique_ptr<OutputObserver<D>>& o) { return !part || !o->writes_pieces(); };
   try {
   // The initial state: the observers (VTK files, probes) write t = 0 too; the case measures from the
   // first output time on. A restart continues from its checkpoint, which has them already.
   if (!restart) {
     if (root) {
       sys->refresh_fields(t, y.data(), scratch);
-      for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+      for (auto& o : observers)
+        if (on_root(o)) o->at_output(*sys, y.data(), t, out);
     }
+    write_pieces();
     observe_own_times();
   }
   while (next_out < times.size()) {
@@ -211,12 +226,14 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
         // last stage: both the case's measurement and the observers read them.
         sys->refresh_fields(t, y.data(), scratch);
         nlohmann::json m = c.measure(*sys, y.data(), t, out);
-        for (auto& o : observers) o->at_output(*sys, y.data(), t, out);
+        for (auto& o : observers)
+          if (on_root(o)) o->at_output(*sys, y.data(), t, out);
         progress.clear();
         if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
         errors.push_back(std::move(m));
         conservation.record(*sys, y.data(), t);
       }
+      write_pieces();
       ++next_out;
     }
     observe_own_times();

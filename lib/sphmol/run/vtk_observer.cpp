@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 #include "sphmol/io/atomic_file.hpp"
 
@@ -74,16 +75,22 @@ std::size_t vtk_part_size(const SphSystem<D>& sys, VtkPart part) {
   return e - b;
 }
 
+namespace {
+
+// The arrays of one .vtp: its TimeValue, the point data, the points and the vertex cells.
+struct VtpArrays {
+  std::vector<Array> time, point, points, verts;
+};
+
+// The arrays of `rows` (particle indices of sys, all of `part`), written with the ids `ids`.
 template <int D>
-std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part) {
+VtpArrays vtp_arrays(const SphSystem<D>& sys, const double* y, double t, VtkPart part,
+                     const std::vector<std::size_t>& rows, const std::vector<std::int64_t>& ids, bool every_block) {
   const auto& P = sys.particles();
   const auto& L = sys.layout();
   const auto& dom = sys.domain();
   const std::size_t nf = P.n_fluid;
-  // Plain variables, not a structured binding: the lambdas below capture them (clang 14 cannot).
-  const auto range = part_range(sys, part);
-  const std::size_t first = range.first, last = range.second;
-  const std::size_t n = last - first;
+  const std::size_t n = rows.size();
   const std::vector<double>& rho = sys.density();
   const std::vector<double>& p = sys.pressure();
 
@@ -92,40 +99,40 @@ std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart
   // set: SphSystem does not reorder then). All wrapped into the periodic box.
   const auto position = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
-    const std::size_t i = first + k;
+    const std::size_t i = rows[k];
     if (part == VtkPart::fluid) return dom.wrap(d, y[L.position(d) + i]);
     if (part == VtkPart::walls) return dom.wrap(d, P.wall_position(d, i, t));
     return dom.wrap(d, sys.positions()[d][i]);
   };
   const auto velocity = [&](std::size_t k, int d) {
     if (d >= D) return 0.0;
-    const std::size_t i = first + k;
+    const std::size_t i = rows[k];
     if (part == VtkPart::fluid) return y[L.velocity(d) + i];
     if (part == VtkPart::walls) return P.wall_velocity(d, i, t);
     return sys.velocities()[d][i];
   };
   const auto field = [&](const std::vector<double>& f) {
-    return [&f, first = first](std::size_t k, int) { return first + k < f.size() ? f[first + k] : 0.0; };
+    return [&f, &rows](std::size_t k, int) { return rows[k] < f.size() ? f[rows[k]] : 0.0; };
   };
 
-  std::vector<Array> time_arrays, point_arrays, points, verts;
-  time_arrays.push_back(make_array<double>("Float64", "TimeValue", 1, 1, [&](std::size_t, int) { return t; }));
-  point_arrays.push_back(make_array<std::int64_t>("Int64", "id", 1, n, [&](std::size_t k, int) {
-    return part == VtkPart::ghosts ? std::int64_t{-1} : static_cast<std::int64_t>(first + k);
-  }));
-  point_arrays.push_back(make_array<double>("Float64", "mass", 1, n, field(P.mass)));
-  point_arrays.push_back(make_array<double>("Float64", "velocity", 3, n, velocity));
+  VtpArrays a;
+  a.time.push_back(make_array<double>("Float64", "TimeValue", 1, 1, [&](std::size_t, int) { return t; }));
+  a.point.push_back(make_array<std::int64_t>("Int64", "id", 1, n, [&](std::size_t k, int) { return ids[k]; }));
+  a.point.push_back(make_array<double>("Float64", "mass", 1, n, field(P.mass)));
+  a.point.push_back(make_array<double>("Float64", "velocity", 3, n, velocity));
   // With an integrated density the fluid's is the state's own (the same values the RHS gathered).
   if (part == VtkPart::fluid && L.has_density)
-    point_arrays.push_back(make_array<double>("Float64", "density", 1, n,
-                                              [&](std::size_t k, int) { return y[L.density() + k]; }));
+    a.point.push_back(make_array<double>("Float64", "density", 1, n,
+                                         [&](std::size_t k, int) { return y[L.density() + rows[k]]; }));
   else
-    point_arrays.push_back(make_array<double>("Float64", "density", 1, n, field(rho)));
-  point_arrays.push_back(make_array<double>("Float64", "pressure", 1, n, field(p)));
-  point_arrays.push_back(make_array<std::uint8_t>("UInt8", "kind", 1, n, [&](std::size_t, int) {
+    a.point.push_back(make_array<double>("Float64", "density", 1, n, field(rho)));
+  a.point.push_back(make_array<double>("Float64", "pressure", 1, n, field(p)));
+  a.point.push_back(make_array<std::uint8_t>("UInt8", "kind", 1, n, [&](std::size_t, int) {
     return static_cast<std::uint8_t>(part);
   }));
-  if (part == VtkPart::fluid && nf > 0) {
+  // every_block: a piece declares the state blocks even where its system has no fluid, as every
+  // other piece and the .pvtp do.
+  if (part == VtkPart::fluid && (nf > 0 || every_block)) {
     // Further state blocks after the velocities, one scalar per fluid particle each, except the
     // density, written above (one array per name: ParaView shows only one of two equal names). Wall
     // densities of dynamic boundary particles, last in the state, are in the walls' "density".
@@ -134,47 +141,88 @@ std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart
     for (std::size_t b = 0; b < extra; ++b) {
       const std::string name = names.size() >= 2 + extra ? names[2 + b] : "state_block_" + std::to_string(b);
       if (name == "density") continue;
-      point_arrays.push_back(make_array<double>("Float64", name, 1, n, [&, b](std::size_t k, int) {
-        return y[L.velocities_end() + b * nf + k];
+      a.point.push_back(make_array<double>("Float64", name, 1, n, [&, b](std::size_t k, int) {
+        return y[L.velocities_end() + b * nf + rows[k]];
       }));
     }
   }
-  points.push_back(make_array<double>("Float64", "Points", 3, n, position));
+  a.points.push_back(make_array<double>("Float64", "Points", 3, n, position));
   // One vertex cell per particle, so ParaView draws the points without a glyph filter.
-  verts.push_back(make_array<std::int64_t>("Int64", "connectivity", 1, n, [](std::size_t k, int) { return k; }));
-  verts.push_back(make_array<std::int64_t>("Int64", "offsets", 1, n, [](std::size_t k, int) { return k + 1; }));
+  a.verts.push_back(make_array<std::int64_t>("Int64", "connectivity", 1, n, [](std::size_t k, int) { return k; }));
+  a.verts.push_back(make_array<std::int64_t>("Int64", "offsets", 1, n, [](std::size_t k, int) { return k + 1; }));
+  return a;
+}
 
+std::string vtp_text(const VtpArrays& a, std::size_t n) {
   std::ostringstream s;
   std::uint64_t offset = 0;
   const auto tags = [&](const std::vector<Array>& arrays, const char* indent, bool tuples = false) {
-    for (const auto& a : arrays) {
-      array_tag(s, a, offset, indent, tuples);
-      offset += sizeof(std::uint64_t) + a.bytes.size();
+    for (const auto& x : arrays) {
+      array_tag(s, x, offset, indent, tuples);
+      offset += sizeof(std::uint64_t) + x.bytes.size();
     }
   };
   s << "<?xml version=\"1.0\"?>\n"
     << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
     << "  <PolyData>\n    <FieldData>\n";
-  tags(time_arrays, "      ", true);
+  tags(a.time, "      ", true);
   s << "    </FieldData>\n"
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
     << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"density\" Vectors=\"velocity\">\n";
-  tags(point_arrays, "        ");
+  tags(a.point, "        ");
   s << "      </PointData>\n      <Points>\n";
-  tags(points, "        ");
+  tags(a.points, "        ");
   s << "      </Points>\n      <Verts>\n";
-  tags(verts, "        ");
+  tags(a.verts, "        ");
   s << "      </Verts>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
   std::string text = s.str();
   text.reserve(text.size() + offset + 32);
-  for (const auto* group : {&time_arrays, &point_arrays, &points, &verts})
-    for (const auto& a : *group) {
-      append_le<std::uint64_t>(text, a.bytes.size());
-      text += a.bytes;
+  for (const auto* group : {&a.time, &a.point, &a.points, &a.verts})
+    for (const auto& x : *group) {
+      append_le<std::uint64_t>(text, x.bytes.size());
+      text += x.bytes;
     }
   text += "\n  </AppendedData>\n</VTKFile>\n";
   return text;
+}
+
+std::vector<VtkArrayInfo> infos(const std::vector<Array>& arrays) {
+  std::vector<VtkArrayInfo> out;
+  for (const auto& a : arrays) out.push_back({a.type, a.name, a.components});
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part) {
+  const auto [first, last] = part_range(sys, part);
+  std::vector<std::size_t> rows(last - first);
+  std::vector<std::int64_t> ids(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rows[k] = first + k;
+    // Ghosts -1: they are made anew at every evaluation.
+    ids[k] = part == VtkPart::ghosts ? std::int64_t{-1} : static_cast<std::int64_t>(first + k);
+  }
+  return vtp_text(vtp_arrays(sys, y, t, part, rows, ids, false), rows.size());
+}
+
+template <int D>
+std::string vtp_piece_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part,
+                           const std::vector<std::size_t>& rows, const std::vector<std::int64_t>& ids) {
+  if (ids.size() != rows.size()) throw std::invalid_argument("vtp_piece_file: one id per row");
+  const auto [first, last] = part_range(sys, part);
+  for (const std::size_t i : rows)
+    if (i < first || i >= last) throw std::invalid_argument("vtp_piece_file: a row outside its particle group");
+  return vtp_text(vtp_arrays(sys, y, t, part, rows, ids, true), rows.size());
+}
+
+template <int D>
+VtkArrayLayout vtk_array_layout(const SphSystem<D>& sys, VtkPart part) {
+  // The arrays of an empty selection: the same names, types and components as any piece's.
+  const VtpArrays a = vtp_arrays(sys, nullptr, 0.0, part, {}, {}, true);
+  return {infos(a.point), infos(a.points).front()};
 }
 
 template <int D>
@@ -190,6 +238,11 @@ void VtkObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double 
     written_.push_back({t, static_cast<int>(part), name});
   }
   ++outputs_;
+  write_collection(out);
+}
+
+template <int D>
+void VtkObserver<D>::write_collection(const OutputSink& out) const {
   // Rewritten every time, so an interrupted run still leaves a complete collection.
   std::ostringstream s;
   s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -199,6 +252,42 @@ void VtkObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double 
       << kPartName[e.part] << "\" file=\"" << e.file << "\"/>\n";
   s << "  </Collection>\n</VTKFile>\n";
   out.write("particles.pvd", s.str());
+}
+
+template <int D>
+void VtkObserver<D>::at_output_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
+  if (!out.enabled) return;  // the same on every rank
+  // The groups of the serial output, decided on the whole scene (a rank may own no wall); ghost
+  // walls do not run over ranks.
+  std::vector<VtkPart> parts{VtkPart::fluid};
+  if (walls_ && vtk_part_size(whole, VtkPart::walls) > 0) parts.push_back(VtkPart::walls);
+  const auto stem = [&](VtkPart part) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s_%04zu", kPartName[static_cast<int>(part)], outputs_);
+    return std::string(name);
+  };
+  for (const VtkPart part : parts) {
+    const bool fluid = part == VtkPart::fluid;
+    out.write(vtp_piece_name(stem(part), piece.rank),
+              vtp_piece_file(*piece.system, piece.y, t, part, fluid ? piece.fluid_rows : piece.wall_rows,
+                             fluid ? piece.fluid_ids : piece.wall_ids));
+  }
+  // Every piece is on disk before a collection names it.
+  piece.barrier();
+  for (const VtkPart part : parts) {
+    const std::string file = stem(part) + ".pvtp";
+    if (piece.rank == 0) {
+      std::vector<std::string> sources;
+      for (int r = 0; r < piece.ranks; ++r) {
+        sources.push_back(vtp_piece_name(stem(part), r));
+        out.record(sources.back());  // written by rank r, listed in rank 0's summary
+      }
+      out.write(file, pvtp_file(vtk_array_layout(*piece.system, part), sources));
+    }
+    written_.push_back({t, static_cast<int>(part), file});
+  }
+  ++outputs_;
+  if (piece.rank == 0) write_collection(out);
 }
 
 template <int D>
@@ -238,5 +327,14 @@ template std::size_t vtk_part_size<3>(const SphSystem<3>&, VtkPart);
 template std::string vtp_file<1>(const SphSystem<1>&, const double*, double, VtkPart);
 template std::string vtp_file<2>(const SphSystem<2>&, const double*, double, VtkPart);
 template std::string vtp_file<3>(const SphSystem<3>&, const double*, double, VtkPart);
+template std::string vtp_piece_file<1>(const SphSystem<1>&, const double*, double, VtkPart, const std::vector<std::size_t>&,
+                                       const std::vector<std::int64_t>&);
+template std::string vtp_piece_file<2>(const SphSystem<2>&, const double*, double, VtkPart, const std::vector<std::size_t>&,
+                                       const std::vector<std::int64_t>&);
+template std::string vtp_piece_file<3>(const SphSystem<3>&, const double*, double, VtkPart, const std::vector<std::size_t>&,
+                                       const std::vector<std::int64_t>&);
+template VtkArrayLayout vtk_array_layout<1>(const SphSystem<1>&, VtkPart);
+template VtkArrayLayout vtk_array_layout<2>(const SphSystem<2>&, VtkPart);
+template VtkArrayLayout vtk_array_layout<3>(const SphSystem<3>&, VtkPart);
 
 }  // namespace sphmol

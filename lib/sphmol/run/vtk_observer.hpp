@@ -15,10 +15,15 @@
 // are where the solver places them (Particles::wall_position: belts such as a cavity lid stay put),
 // ghosts as generated at the most recent RHS evaluation (the run loop evaluates the RHS at the written
 // state first). Each file carries its time as the FieldData array `TimeValue`, which ParaView reads.
+// Over several ranks (at_output_pieces) each rank writes the particles it owns as a piece,
+// `fluid_NNNN_r<rank>.vtp`, and rank 0 a `fluid_NNNN.pvtp` naming the pieces (run/pvtp_file.hpp),
+// which the collection then lists: the same particles and values as the serial file, split.
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "sphmol/run/case.hpp"
+#include "sphmol/run/pvtp_file.hpp"
 
 namespace sphmol {
 
@@ -29,6 +34,8 @@ class VtkObserver final : public OutputObserver<D> {
  public:
   explicit VtkObserver(bool walls, bool ghosts = false) : walls_(walls), ghosts_(ghosts) {}
   void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  bool writes_pieces() const override { return true; }
+  void at_output_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
 
@@ -38,6 +45,7 @@ class VtkObserver final : public OutputObserver<D> {
     int part;
     std::string file;
   };
+  void write_collection(const OutputSink& out) const;  // particles.pvd
   bool walls_, ghosts_;
   std::vector<Entry> written_;  // every file so far, for the .pvd
   std::size_t outputs_ = 0;     // output times written (the NNNN of the file names)
@@ -52,5 +60,15 @@ std::size_t vtk_part_size(const SphSystem<D>& sys, VtkPart part);
 // (exposed for tests).
 template <int D>
 std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part);
+
+// A piece of one part: the rows `rows` of sys (all of that part) with the ids `ids`, in the arrays
+// of the serial file (a fluid piece declares every state block, even with no fluid in sys).
+template <int D>
+std::string vtp_piece_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part,
+                           const std::vector<std::size_t>& rows, const std::vector<std::int64_t>& ids);
+
+// The point arrays and points that a piece of `part` of sys declares (for the .pvtp).
+template <int D>
+VtkArrayLayout vtk_array_layout(const SphSystem<D>& sys, VtkPart part);
 
 }  // namespace sphmol

@@ -1,0 +1,30 @@
+#pragma once
+// One rank's own particles at an output time of a run over several ranks (run/partitioned_run.hpp),
+// for the observers that write per-rank files (VTK pieces, run/vtk_observer.hpp). The rank's local
+// system holds its owned particles and halo copies of its neighbours' and has just been evaluated
+// at the output state, so the owned rows' fields (density, pressure, ...) are the whole system's;
+// only the owned rows are listed, so every particle is written by exactly one rank.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "sphmol/rhs/sph_system.hpp"
+
+namespace sphmol {
+
+template <int D>
+struct OwnedPiece {
+  const SphSystem<D>* system = nullptr;  // owned + halo particles, fields of the output state
+  const double* y = nullptr;             // that system's state (its own layout)
+  // The owned rows of `system` (ascending, fluid rows first) and their global ids (the particle's
+  // index in the whole scene, as the serial output's `id`).
+  std::vector<std::size_t> fluid_rows, wall_rows;
+  std::vector<std::int64_t> fluid_ids, wall_ids;
+  int rank = 0, ranks = 1;
+  // Collective: returns on a rank once every rank has called it (a piece on disk before the
+  // collection that names it).
+  std::function<void()> barrier;
+};
+
+}  // namespace sphmol
