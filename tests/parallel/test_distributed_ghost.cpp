@@ -18,65 +18,19 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
-#include "same_measurements.hpp"
+#include "serial_reference.hpp"
 #include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
+using namespace sphmol::parallel::testing;
 
 namespace {
 
-std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
-
-struct Finished {
-  nlohmann::json summary;
-  std::vector<double> y;
-};
-
-Finished run(const Config& c, const RunPartitioner* partitioner) {
-  Finished f;
-  RunOptions opt;
-  opt.write_files = false;
-  opt.final_state = &f.y;
-  opt.partitioner = partitioner;
-  f.summary = run_case(c, opt);
-  return f;
-}
-
-// Entries whose bits differ (0: the same state to the bit).
-std::size_t differing_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return std::max(a.size(), b.size());
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) n += std::memcmp(&a[k], &b[k], sizeof(double)) != 0;
-  return n;
-}
-
-// `output_only`: final_errors keys of a case's own per-evaluation monitor (run at output times only
-// over ranks). `rebalance`: the imbalance past which the particles are partitioned again (1: at every
-// re-plan; the leapfrogs move, ARKODE and CVODE stay).
-Finished check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
+// The mirror walls are what this file is about.
+Finished check_ghost_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
   REQUIRE(c.discretization.boundary == "ghost");
-  const Communicator comm;
-  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
-  const Finished split = run(c, &partitioner);
-  CHECK(split.summary["status"] == "completed");
-  if (comm.rank() == 0) {
-    static std::map<std::string, Finished> serial_runs;
-    const std::string key = to_yaml(c);
-    if (!serial_runs.count(key)) serial_runs.emplace(key, run(c, nullptr));
-    const Finished& serial = serial_runs.at(key);
-    REQUIRE(serial.summary["status"] == "completed");
-    CHECK(split.summary["steps"] == serial.summary["steps"]);
-    CHECK(split.summary["rejected_steps"] == serial.summary["rejected_steps"]);
-    // One evaluation more per repartition: the integrator starts again on the new share.
-    CHECK(split.summary["rhs_evals"].get<long>() ==
-          serial.summary["rhs_evals"].get<long>() + split.summary["parallel"]["repartitions"].get<long>());
-    INFO(comm.size() << " ranks, " << split.summary["steps"] << " steps, " << split.y.size() << " state values");
-    CHECK(differing_bits(split.y, serial.y) == 0);
-    check_same_measurements(split.summary, serial.summary, output_only);
-    CHECK(split.summary["parallel"]["ranks"] == comm.size());
-  }
-  return split;
+  return check_same_as_serial(c, output_only, rebalance);
 }
 
 Config cavity(const std::string& integrator) {
@@ -91,25 +45,25 @@ TEST_CASE("distributed run: the 2D Sod tube with free-slip ghost walls equals th
   SECTION("leapfrog, one partition") {
     const Config c = short_shock_tube("sod.yaml");
     REQUIRE(c.discretization.smoothing_length == "ode");
-    const Finished split = check_same_as_serial(c);
+    const Finished split = check_ghost_same_as_serial(c);
     CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
   }
   SECTION("leapfrog, partitioned again at every re-plan") {
-    const Finished split = check_same_as_serial(short_shock_tube("sod.yaml"), {}, 1.0);
+    const Finished split = check_ghost_same_as_serial(short_shock_tube("sod.yaml"), {}, 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
-  SECTION("cvode_adams") { check_same_as_serial(short_shock_tube("sod.yaml", {"time.integrator=cvode_adams"})); }
+  SECTION("cvode_adams") { check_ghost_same_as_serial(short_shock_tube("sod.yaml", {"time.integrator=cvode_adams"})); }
 }
 
 TEST_CASE("distributed run: the lid-driven cavity with no-slip ghost walls equals the serial run bit for bit",
           "[parallel][run][ghost]") {
   // Four no-slip mirrors: the lid's images move at 2 U - v, the corners' particles have three images.
-  SECTION("leapfrog, one partition") { check_same_as_serial(cavity("leapfrog")); }
+  SECTION("leapfrog, one partition") { check_ghost_same_as_serial(cavity("leapfrog")); }
   SECTION("leapfrog, partitioned again at every re-plan") {
-    const Finished split = check_same_as_serial(cavity("leapfrog"), {}, 1.0);
+    const Finished split = check_ghost_same_as_serial(cavity("leapfrog"), {}, 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
-  SECTION("arkode_erk") { check_same_as_serial(cavity("arkode_erk")); }
+  SECTION("arkode_erk") { check_ghost_same_as_serial(cavity("arkode_erk")); }
 }
 
 TEST_CASE("distributed run: a water column with ghost walls under gravity equals the serial run bit for bit",
@@ -122,6 +76,6 @@ TEST_CASE("distributed run: a water column with ghost walls under gravity equals
                                 "discretization.density=summation", "fluid.eos.clamp_negative=true",
                                 "discretization.particles_across=20", "time.dt=5.0e-4", "time.t_end=0.05",
                                 "output.times=[0.025,0.05]", "output.plots=false"});
-  const Finished split = check_same_as_serial(c, {"max_drift", "drift_creep", "drift_creep_since"});
+  const Finished split = check_ghost_same_as_serial(c, {"max_drift", "drift_creep", "drift_creep_since"});
   CHECK(split.summary["parallel"]["halo_depth_list_radii"].get<int>() >= 2);
 }

@@ -16,69 +16,12 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
-#include "same_measurements.hpp"
+#include "serial_reference.hpp"
 #include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
-
-namespace {
-
-std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
-
-struct Finished {
-  nlohmann::json summary;
-  std::vector<double> y;
-};
-
-Finished run(const Config& c, const RunPartitioner* partitioner) {
-  Finished f;
-  RunOptions opt;
-  opt.write_files = false;
-  opt.final_state = &f.y;
-  opt.partitioner = partitioner;
-  f.summary = run_case(c, opt);
-  return f;
-}
-
-// Number of entries whose bits differ (0: the same state to the bit).
-std::size_t differing_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return std::max(a.size(), b.size());
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) n += std::memcmp(&a[k], &b[k], sizeof(double)) != 0;
-  return n;
-}
-
-// `output_only`: final_errors keys measured by a case's own per-evaluation monitor, which a run
-// over ranks runs at output times only (they may differ).
-// `rebalance`: the imbalance past which the particles are partitioned again (1: at every re-plan).
-Finished check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
-  const Communicator comm;
-  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
-  const Finished split = run(c, &partitioner);
-  CHECK(split.summary["status"] == "completed");
-  if (comm.rank() == 0) {
-    // The serial reference on rank 0 alone (every rank has the gathered state), once per config.
-    static std::map<std::string, Finished> serial_runs;
-    const std::string key = to_yaml(c);
-    if (!serial_runs.count(key)) serial_runs.emplace(key, run(c, nullptr));
-    const Finished& serial = serial_runs.at(key);
-    REQUIRE(serial.summary["status"] == "completed");
-    CHECK(split.summary["steps"] == serial.summary["steps"]);
-    // One evaluation more per repartition: the integrator starts again on the new share.
-    CHECK(split.summary["rhs_evals"].get<long>() ==
-          serial.summary["rhs_evals"].get<long>() + split.summary["parallel"]["repartitions"].get<long>());
-    INFO(comm.size() << " ranks: " << split.y.size() << " state values");
-    CHECK(split.y.size() == serial.y.size());
-    CHECK(differing_bits(split.y, serial.y) == 0);
-    // The measurements on the gathered state are the serial ones.
-    check_same_measurements(split.summary, serial.summary, output_only);
-    CHECK(split.summary["parallel"]["ranks"] == comm.size());
-  }
-  return split;
-}
-
-}  // namespace
+using namespace sphmol::parallel::testing;
 
 TEST_CASE("distributed run: Poiseuille with the leapfrog equals the serial run bit for bit", "[parallel][run]") {
   check_same_as_serial(load_config(verification("poiseuille.yaml"),

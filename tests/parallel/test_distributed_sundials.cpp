@@ -24,97 +24,16 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
-#include "same_measurements.hpp"
+#include "serial_reference.hpp"
 #include "short_shock_tube.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
+using namespace sphmol::parallel::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
-
-struct Finished {
-  nlohmann::json summary;
-  std::vector<double> y;
-};
-
-Finished run(const Config& c, const RunPartitioner* partitioner, const std::string& restart_from = "",
-             const std::string& output_dir = "") {
-  Finished f;
-  RunOptions opt;
-  opt.write_files = !output_dir.empty();
-  opt.output_dir = output_dir;
-  opt.restart_from = restart_from;
-  opt.final_state = &f.y;
-  opt.partitioner = partitioner;
-  f.summary = run_case(c, opt);
-  return f;
-}
-
-// The largest difference between two whole states relative to each quantity's own scale: positions
-// against the largest |x| over all position blocks, velocities against the largest |v|, then the
-// fluid densities and the wall densities each against their largest value. (A velocity component
-// that is zero but for round-off, such as a channel's cross-stream one, is measured against the
-// flow's speed, not against itself.)
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b, const nlohmann::json& summary) {
-  if (a.size() != b.size()) return INFINITY;
-  const auto D = summary["dimension"].get<std::size_t>();
-  const auto n = summary["particles"]["fluid"].get<std::size_t>();
-  const std::size_t fluid_blocks = a.size() / n;  // positions, velocities, density
-  std::vector<std::pair<std::size_t, std::size_t>> groups{{0, D * n}, {D * n, 2 * D * n}};
-  if (fluid_blocks > 2 * D) groups.emplace_back(2 * D * n, fluid_blocks * n);
-  if (fluid_blocks * n < a.size()) groups.emplace_back(fluid_blocks * n, a.size());
-  double worst = 0.0;
-  for (const auto& [lo, hi] : groups) {
-    double scale = 0.0, diff = 0.0;
-    for (std::size_t k = lo; k < hi; ++k) {
-      scale = std::max(scale, std::abs(b[k]));
-      diff = std::max(diff, std::abs(a[k] - b[k]));
-    }
-    worst = std::max(worst, scale > 0.0 ? diff / scale : diff);
-  }
-  return worst;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
-// The serial reference of a config, once per config, on rank 0.
-const Finished& serial_run(const Config& c) {
-  static std::map<std::string, Finished> runs;
-  const std::string key = to_yaml(c);
-  if (!runs.count(key)) runs.emplace(key, run(c, nullptr));
-  return runs.at(key);
-}
-
-// The split run against the serial one: the same steps, evaluations and rejections, the same final
-// state to the bit and the same measurements.
-// `output_only`: final_errors keys of a case's own per-evaluation monitor, which a run over ranks
-// runs at output times only (they may differ).
-Finished check_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
-  const Communicator comm;
-  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
-  const Finished split = run(c, &partitioner);
-  CHECK(split.summary["status"] == "completed");
-  if (comm.rank() == 0) {
-    const Finished& serial = serial_run(c);
-    REQUIRE(serial.summary["status"] == "completed");
-    CHECK(split.summary["steps"] == serial.summary["steps"]);
-    CHECK(split.summary["rejected_steps"] == serial.summary["rejected_steps"]);
-    CHECK(split.summary["rhs_evals"] == serial.summary["rhs_evals"]);
-    CHECK(split.summary["integrator"].value("krylov_iterations", -1L) == serial.summary["integrator"].value("krylov_iterations", -1L));
-    CHECK(split.summary["integrator"].value("stage_solves", -1L) == serial.summary["integrator"].value("stage_solves", -1L));
-    INFO(comm.size() << " ranks, " << split.summary["steps"] << " steps");
-    INFO("largest relative difference from the serial state: " << relative_difference(split.y, serial.y, serial.summary));
-    CHECK(same_bits(split.y, serial.y));
-    check_same_measurements(split.summary, serial.summary, output_only);
-    CHECK(split.summary["parallel"]["ranks"] == comm.size());
-  }
-  return split;
-}
 
 Config channel(const std::string& file, const std::string& integrator, const std::vector<std::string>& more = {}) {
   std::vector<std::string> o{"discretization.particles_across=20", "time.integrator=" + integrator, "time.t_end=0.03",

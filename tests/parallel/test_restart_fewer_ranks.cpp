@@ -19,35 +19,14 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
+#include "serial_reference.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
+using namespace sphmol::parallel::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
-
-struct Finished {
-  nlohmann::json summary;
-  std::vector<double> y;
-};
-
-Finished run(const Config& c, const RunPartitioner* partitioner, const std::string& output_dir, const std::string& restart_from = "") {
-  Finished f;
-  RunOptions opt;
-  opt.write_files = !output_dir.empty();
-  opt.output_dir = output_dir;
-  opt.restart_from = restart_from;
-  opt.final_state = &f.y;
-  opt.partitioner = partitioner;
-  f.summary = run_case(c, opt);
-  return f;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
 
 // MPI_Comm_split's communicator, freed with the object.
 class SubCommunicator {
@@ -78,7 +57,7 @@ void check_continued_on_fewer_ranks(const Config& c, const std::string& name, co
   const fs::path dir = fs::temp_directory_path() /
                        ("sphmol-" + name + "-fewer-" + std::to_string(pid) + "-" + std::to_string(world.size()));
   const MpiRunPartitioner all(world, MpiRunPartitioner::default_tolerance, rebalance);
-  const Finished whole = run(c, &all, (dir / "all").string());
+  const Finished whole = run(c, &all, "", (dir / "all").string());
   REQUIRE(whole.summary["status"] == "completed");
   world.barrier();  // the checkpoint is on disk
 
@@ -87,9 +66,9 @@ void check_continued_on_fewer_ranks(const Config& c, const std::string& name, co
     const Communicator comm(sub.handle());
     REQUIRE(comm.size() == fewer);
     const MpiRunPartitioner part(comm, MpiRunPartitioner::default_tolerance, rebalance);
-    const Finished continued = run(c, &part, "", (dir / "all" / checkpoint).string());
+    const Finished continued = run(c, &part, (dir / "all" / checkpoint).string());
     if (comm.rank() == 0) {
-      const Finished serial = run(c, nullptr, "", (dir / "all" / checkpoint).string());
+      const Finished serial = run(c, nullptr, (dir / "all" / checkpoint).string());
       INFO("written on " << world.size() << " ranks, continued on " << comm.size());
       CHECK(continued.summary["status"] == "completed");
       CHECK(continued.summary["parallel"]["ranks"] == fewer);
