@@ -8,9 +8,6 @@
 // halo whose outer rows need their own images). Rank 0 runs the serial reference.
 #include <catch2/catch.hpp>
 
-#include <cmath>
-#include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 

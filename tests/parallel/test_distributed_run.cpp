@@ -7,8 +7,6 @@
 // Unsupported settings are refused with a ConfigError on every rank (ghost walls: test_distributed_ghost.cpp).
 #include <catch2/catch.hpp>
 
-#include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 

@@ -9,9 +9,8 @@
 #include <mpi.h>
 #include <unistd.h>
 
-#include <cstring>
+#include <algorithm>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
