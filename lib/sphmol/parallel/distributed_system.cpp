@@ -381,7 +381,10 @@ template <int D>
 void DistributedSystem<D>::prepare_local(double t, const double* y) {
   owned_positions(t, y);
   if (variable_h_) hmax_ = largest_h(y);
-  if (ghost_walls_) margin_ = mirror_margin();
+  if (ghost_walls_) {
+    margin_ = mirror_margin();
+    stats_.mirror_margin_max = std::max(stats_.mirror_margin_max, margin_);
+  }
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
 }
 

@@ -144,6 +144,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
     double imbalance = 1.0;         // largest rank's pair work over the mean, at the last partition
     double imbalance_seen = 1.0;    // the same, at the last re-plan
     long repartitions = 0;          // partitions after the first
+    double mirror_margin_max = 0.0; // the deepest crossing of a ghost mirror, times 2 D, over the run (m)
   };
   Stats stats() const;
   // Pairs in the rows of the current local neighbour list: the owned rows' (this rank's share of

@@ -146,6 +146,7 @@ class MpiRun final : public PartitionedRun<D> {
             {"repartitions_declined", declined_},
             {"halo_depth_list_radii", s.depth},
             {"halo_plans", s.plans},
+            {"ghost_mirror_margin_max", s.mirror_margin_max},
             {"owned_particles", owned},
             {"owned_fluid", fluid},
             {"halo_particles_max", halo},
