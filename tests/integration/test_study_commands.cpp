@@ -71,6 +71,86 @@ TEST_CASE("sph-mol compare writes one row per integrator setting and names the f
   CHECK(std::filesystem::exists(out + "/comparison.png"));
 }
 
+TEST_CASE("sph-mol compare reports the implicit solves' Krylov iterations, 0 for the explicit runs", "[integration][compare]") {
+  // Couette at 20 across to t = 0.02 s: leapfrog_imex solves the viscous kick once per step,
+  // arkode_imex once per implicit stage; the explicit leapfrog and Dormand-Prince solve nothing.
+  const std::string out = "reports/compare_couette_krylov";
+  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
+                  " --integrators leapfrog,leapfrog_imex,arkode_imex,arkode_erk --step-factors 1 --rtols 1e-5"
+                  " --set discretization.particles_across=20 --set time.t_end=0.02 --set output.times=[0.02]",
+              out + ".log") == 0);
+  const auto j = read_json(out + "/comparison.json");
+  REQUIRE(j["runs"].size() == 4);
+  for (const auto& r : j["runs"]) {
+    INFO(r.dump());
+    const std::string name = r["integrator"].get<std::string>();
+    const bool imex = name == "leapfrog_imex" || name == "arkode_imex";
+    CHECK(r["status"] == "completed");
+    if (imex) {
+      CHECK(r["implicit_solves"].get<long>() > 0);
+      CHECK(r["krylov_iterations"].get<long>() > 0);
+      CHECK(r["krylov_iterations_per_step"].get<double>() > 0.0);
+      CHECK(r["krylov_iterations_per_solve"].get<double>() > 0.0);
+      CHECK(r["krylov_iterations_per_step"].get<double>() ==
+            Approx(r["krylov_iterations"].get<double>() / r["steps"].get<double>()));
+    } else {
+      CHECK(r["implicit_solves"] == 0);
+      CHECK(r["krylov_iterations"] == 0);
+      CHECK(r["krylov_iterations_per_step"] == 0.0);
+      CHECK(r["krylov_iterations_per_solve"].is_null());
+    }
+  }
+  // leapfrog_imex: one solve per step; arkode_imex (ARK324L2SA): 3 implicit stages per attempted step.
+  CHECK(j["runs"][1]["implicit_solves"] == j["runs"][1]["steps"]);
+  CHECK(j["runs"][2]["implicit_solves"].get<long>() ==
+        3 * (j["runs"][2]["steps"].get<long>() + j["runs"][2]["rejected_steps"].get<long>()));
+  // The adaptive ARKODE runs count their CFL-limited steps; the leapfrogs leave it empty.
+  CHECK(j["runs"][0]["stability_limited_steps"].is_null());
+  CHECK(j["runs"][2]["stability_limited_steps"].is_number());
+  CHECK(j["runs"][3]["stability_limited_steps"].is_number());
+
+  // The CSV: one header row with units, the same columns in every row; the explicit runs' cells are
+  // 0, their iterations per solve empty.
+  std::ifstream f(out + "/comparison.csv");
+  std::string line;
+  REQUIRE(std::getline(f, line));
+  const auto cells = [](const std::string& l) {
+    std::vector<std::string> c;
+    std::stringstream s(l);
+    for (std::string x; std::getline(s, x, ',');) c.push_back(x);
+    if (!l.empty() && l.back() == ',') c.emplace_back();
+    return c;
+  };
+  const auto header = cells(line);
+  std::map<std::string, std::size_t> col;
+  for (std::size_t k = 0; k < header.size(); ++k) col[header[k]] = k;
+  for (const char* name : {"rejected_steps [-]", "stability_limited_steps [-]", "implicit_solves [-]", "krylov_iterations [-]",
+                           "krylov_iterations_per_step [-]", "krylov_iterations_per_solve [-]"})
+    REQUIRE(col.count(name) == 1);
+  std::map<std::string, std::vector<std::string>> rows;
+  while (std::getline(f, line)) {
+    const auto c = cells(line);
+    REQUIRE(c.size() == header.size());
+    rows[c[0]] = c;
+  }
+  REQUIRE(rows.size() == 4);
+  for (const char* name : {"leapfrog_imex", "arkode_imex"}) {
+    INFO(name);
+    CHECK(std::stol(rows[name][col["krylov_iterations [-]"]]) > 0);
+    CHECK(std::stod(rows[name][col["krylov_iterations_per_step [-]"]]) > 0.0);
+    CHECK(std::stod(rows[name][col["krylov_iterations_per_solve [-]"]]) > 0.0);
+  }
+  for (const char* name : {"leapfrog", "arkode_erk"}) {
+    INFO(name);
+    CHECK(rows[name][col["implicit_solves [-]"]] == "0");
+    CHECK(rows[name][col["krylov_iterations [-]"]] == "0");
+    CHECK(rows[name][col["krylov_iterations_per_step [-]"]] == "0");
+    CHECK(rows[name][col["krylov_iterations_per_solve [-]"]].empty());
+  }
+  // The printed table closes the log.
+  CHECK_THAT(slurp(out + ".log"), Catch::Contains("its/step"));
+}
+
 TEST_CASE("sph-mol compare --reference-dt measures the time error: second order for the leapfrog", "[integration][compare]") {
   // Couette at 20 across to t = 0.01 s; CFL steps x 1, 1/2, 1/4; reference Verner 6 at dt = 1e-5.
   const std::string out = "reports/compare_couette_reference";

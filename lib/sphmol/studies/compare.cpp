@@ -1,5 +1,6 @@
 #include "sphmol/studies/compare.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -74,6 +75,61 @@ nlohmann::json fastest_at_targets(const std::vector<IntegratorSpec>& specs, cons
     }
   }
   return out;
+}
+
+// A run's step and implicit-solve counts from its summary: the Krylov iterations and implicit
+// solves of leapfrog_imex (one viscous solve per step) and arkode_imex (one per implicit stage), 0 for
+// the explicit integrators; the CFL-limited step attempts of the adaptive ARKODE integrators.
+struct RunCounts {
+  long steps = 0, rejected = 0, solves = 0, krylov = 0;
+  std::optional<long> stability_limited;
+  double krylov_per_step() const { return steps > 0 ? static_cast<double>(krylov) / static_cast<double>(steps) : 0.0; }
+  // No solves (an explicit integrator): none.
+  std::optional<double> krylov_per_solve() const {
+    if (solves <= 0) return std::nullopt;
+    return static_cast<double>(krylov) / static_cast<double>(solves);
+  }
+};
+
+RunCounts counts_of(const nlohmann::json& S) {
+  const auto count = [](const nlohmann::json& j, const char* key) -> long {
+    return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<long>() : 0;
+  };
+  RunCounts c;
+  c.steps = count(S, "steps");
+  c.rejected = count(S, "rejected_steps");
+  const nlohmann::json& I = S.contains("integrator") ? S["integrator"] : nlohmann::json(nullptr);
+  c.solves = count(I, "implicit_solves");
+  c.krylov = count(I, "krylov_iterations");
+  if (I.is_object() && I.contains("stability_limited_steps")) c.stability_limited = count(I, "stability_limited_steps");
+  return c;
+}
+
+// The runs as a text table for the log: cost, steps, implicit solves and error per run.
+void print_run_table(std::ostream& log, const nlohmann::json& runs) {
+  const std::vector<std::string> head{"integrator", "setting",     "CPU s",      "RHS",     "steps",    "rejected",
+                                      "CFL-limited", "solves",     "Krylov its", "its/step", "its/solve", "error"};
+  std::vector<std::vector<std::string>> rows{head};
+  const auto num = [](const nlohmann::json& v) {
+    if (v.is_null()) return std::string("-");
+    if (v.is_number_integer()) return std::to_string(v.get<long>());
+    return fmt(v.get<double>());
+  };
+  for (const auto& r : runs)
+    rows.push_back({r["integrator"].get<std::string>(), r["setting"].get<std::string>(), num(r["cpu_seconds"]), num(r["rhs_evals"]),
+                    num(r["steps"]), num(r["rejected_steps"]), num(r["stability_limited_steps"]), num(r["implicit_solves"]),
+                    num(r["krylov_iterations"]), num(r["krylov_iterations_per_step"]), num(r["krylov_iterations_per_solve"]),
+                    r["error"].is_null() ? std::string("blown up") : num(r["error"])});
+  std::vector<std::size_t> width(head.size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t k = 0; k < row.size(); ++k) width[k] = std::max(width[k], row[k].size());
+  for (const auto& row : rows) {
+    log << "compare: ";
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      const std::string pad(width[k] - row[k].size(), ' ');
+      log << (k < 2 ? row[k] + pad : pad + row[k]) << (k + 1 < row.size() ? "  " : "\n");
+    }
+  }
 }
 
 }  // namespace
@@ -154,16 +210,40 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
       const double exact_error = exact ? r.error : r.blown_up ? inf : relative_difference(r.error, ref_value);
       if (!exact) exact_key = S.value("primary_error", "e_rms") + " relative to the reference run";
       points.back().push_back({setting, wall, r.cpu_seconds, S["rhs_evals"].get<double>(), error, exact_error});
+      const RunCounts n = counts_of(S);
+      const auto per_solve = n.krylov_per_solve();
+      // Not applicable (no implicit solves; no CFL-limit count): an empty cell, null in the JSON.
+      const auto cell = [](const auto& v) { return v ? fmt(static_cast<double>(*v)) : std::string(); };
       csv << spec.label << ',' << setting << ',' << fmt(wall) << ',' << fmt(r.cpu_seconds) << ',' << S["rhs_evals"] << ','
-          << S["steps"] << ',' << fmt(error) << ',' << fmt(exact_error) << ',' << S["status"].get<std::string>() << '\n';
+          << n.steps << ',' << n.rejected << ',' << cell(n.stability_limited) << ',' << n.solves << ',' << n.krylov << ','
+          << fmt(n.krylov_per_step()) << ',' << cell(per_solve) << ',' << fmt(error) << ',' << fmt(exact_error) << ','
+          << S["status"].get<std::string>() << '\n';
       const auto num = [&](double x) { return r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(x); };
-      runs.push_back({{"integrator", spec.label}, {"setting", setting}, {"wall_seconds", wall}, {"cpu_seconds", r.cpu_seconds},
-                      {"rhs_evals", S["rhs_evals"]}, {"steps", S["steps"]}, {"error", num(error)}, {"exact_error", num(exact_error)},
+      const auto opt_json = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+      runs.push_back({{"integrator", spec.label},
+                      {"setting", setting},
+                      {"wall_seconds", wall},
+                      {"cpu_seconds", r.cpu_seconds},
+                      {"rhs_evals", S["rhs_evals"]},
+                      {"steps", S["steps"]},
+                      {"rejected_steps", n.rejected},
+                      {"stability_limited_steps", opt_json(n.stability_limited)},
+                      {"implicit_solves", n.solves},
+                      {"krylov_iterations", n.krylov},
+                      {"krylov_iterations_per_step", n.krylov_per_step()},
+                      {"krylov_iterations_per_solve", opt_json(per_solve)},
+                      {"error", num(error)},
+                      {"exact_error", num(exact_error)},
                       {"status", S["status"]}});
-      if (opt.log)
+      if (opt.log) {
         *opt.log << "compare: " << spec.label << ' ' << setting << ": error " << fmt(error) << ", wall " << fmt(wall) << " s, CPU "
-                 << fmt(r.cpu_seconds) << " s, " << S["rhs_evals"] << " RHS evaluations" << (r.note.empty() ? "" : "; " + r.note)
-                 << '\n';
+                 << fmt(r.cpu_seconds) << " s, " << S["rhs_evals"] << " RHS evaluations, " << n.steps << " steps";
+        if (n.rejected > 0) *opt.log << " (" << n.rejected << " rejected)";
+        if (n.solves > 0)
+          *opt.log << ", " << n.krylov << " Krylov iterations (" << fmt(n.krylov_per_step()) << " per step, " << fmt(*per_solve)
+                   << " per solve)";
+        *opt.log << (r.note.empty() ? "" : "; " + r.note) << '\n';
+      }
       if (!r.blown_up) {
         series.x.push_back(wall);
         series.y.push_back(error);
@@ -175,12 +255,15 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
     cpu_chart.series.push_back(std::move(cpu_series));
   }
   chart.ylabel = cpu_chart.ylabel = "final " + error_key;
+  if (opt.log) print_run_table(*opt.log, runs);
   const nlohmann::json fastest = fastest_at_targets(opt.integrators, points, false, error_key, opt.targets, opt.log);
   // With a reference run, the same summary for the exact-reference error (time + space error).
   const nlohmann::json fastest_exact =
       reference_dt ? fastest_at_targets(opt.integrators, points, true, exact_key, opt.targets, opt.log) : nlohmann::json(nullptr);
   write_file_atomically(opt.output_dir + "/comparison.csv",
-                        "integrator,setting,wall_seconds [s],cpu_seconds [s],rhs_evals [-],steps [-],error [" +
+                        "integrator,setting,wall_seconds [s],cpu_seconds [s],rhs_evals [-],steps [-],rejected_steps [-],"
+                        "stability_limited_steps [-],implicit_solves [-],krylov_iterations [-],krylov_iterations_per_step [-],"
+                        "krylov_iterations_per_solve [-],error [" +
                             (reference_dt ? std::string("-") : error_unit(exact_key)) + "],exact_error [" +
                             (exact ? error_unit(exact_key) : std::string("-")) + "],status\n" + csv.str());
   const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");

@@ -12,6 +12,12 @@
 // alone: the relative rms velocity difference at t_end from a reference run of the same
 // discretisation (ARKODE Verner 8(5)6 at the fixed step reference_dt), as in converge --refine time;
 // the exact-reference error is still written (column exact_error).
+// Per run the table also holds the step counts and the implicit solves' cost: rejected steps (error-test
+// failures), the step attempts the CFL limit set (adaptive ARKODE integrators; empty otherwise), the
+// implicit solves (leapfrog_imex: one viscous solve per step; arkode_imex: one per implicit stage),
+// their Krylov iterations, and those per step and per solve. The explicit integrators have 0 solves
+// and 0 iterations, and an empty iterations-per-solve cell (null in comparison.json). The log ends
+// with the runs as a text table.
 // "Fastest at a target error": studies/fastest_at_error.hpp (interpolated on each curve).
 #include <iosfwd>
 #include <nlohmann/json.hpp>

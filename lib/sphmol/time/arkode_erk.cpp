@@ -38,6 +38,14 @@ nlohmann::json ArkodeErk::describe() const {
   } else {
     j["rtol"] = opt_.rtol;
     j["atol"] = opt_.atol;
+    if (mem_) {
+      // Step attempts whose size the CFL limit set, and those the error controller set.
+      long exp_steps = 0, acc_steps = 0;
+      ERKStepGetNumExpSteps(mem_, &exp_steps);
+      ERKStepGetNumAccSteps(mem_, &acc_steps);
+      j["stability_limited_steps"] = exp_steps;
+      j["accuracy_limited_steps"] = acc_steps;
+    }
   }
   return j;
 }

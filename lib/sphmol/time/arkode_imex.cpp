@@ -51,6 +51,18 @@ nlohmann::json ArkodeImex::describe() const {
     j["krylov_iterations"] = its;
     j["krylov_iterations_per_step"] = steps > 0 ? static_cast<double>(its) / static_cast<double>(steps) : 0.0;
     j["stage_solves"] = newton;
+    // SetLinear: one Newton iteration, so one Krylov solve, per implicit stage.
+    j["implicit_solves"] = newton;
+    j["krylov_iterations_per_solve"] = newton > 0 ? static_cast<double>(its) / static_cast<double>(newton) : 0.0;
+    // Step attempts whose size the stability limit (the explicit part's CFL step) set, and those
+    // the error controller set (ARKStepGetNumExpSteps / GetNumAccSteps).
+    if (!opt_.fixed_step) {
+      long exp_steps = 0, acc_steps = 0;
+      ARKStepGetNumExpSteps(mem_, &exp_steps);
+      ARKStepGetNumAccSteps(mem_, &acc_steps);
+      j["stability_limited_steps"] = exp_steps;
+      j["accuracy_limited_steps"] = acc_steps;
+    }
   }
   return j;
 }

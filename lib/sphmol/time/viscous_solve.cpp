@@ -95,6 +95,7 @@ int ViscousSolve::run(const ViscousOperator& op, double gamma, const double* w, 
   last_its_ = SUNLinSolNumIters(ls_);
   last_res_ = SUNLinSolResNorm(ls_);
   iterations_ += last_its_;
+  ++solves_;
   return flag;
 }
 

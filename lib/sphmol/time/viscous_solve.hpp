@@ -40,6 +40,7 @@ class ViscousSolve {
   int last_iterations() const { return last_its_; }
   double last_residual() const { return last_res_; }
   long total_iterations() const { return iterations_; }
+  long total_solves() const { return solves_; }  // Krylov solves run (each of solve, solve_weighted)
 
  private:
   static int atimes(void* self, N_Vector v, N_Vector z);
@@ -59,6 +60,7 @@ class ViscousSolve {
   const ViscousOperator* op_ = nullptr;
   double gamma_ = 0.0;
   long iterations_ = 0;
+  long solves_ = 0;
   int last_its_ = 0;
   double last_res_ = 0.0;
 };
