@@ -15,8 +15,10 @@ namespace {
 
 const std::string source_dir = SPHMOL_SOURCE_DIR;
 
-// Runs the binary on a shipped config with `sets` (each a --set value); the summary, or null.
-nlohmann::json run(const std::string& config, const std::string& tag, const std::vector<std::string>& sets) {
+// Runs the binary on a shipped config with `sets` (each a --set value); the summary, or null when the
+// run failed (with `failed_too`: the summary a failed run wrote, e.g. a blown-up one, or null).
+nlohmann::json run(const std::string& config, const std::string& tag, const std::vector<std::string>& sets,
+                   bool failed_too = false) {
   const auto out = std::filesystem::temp_directory_path() / ("sphmol-it-sod-" + tag);
   std::filesystem::remove_all(out);
   std::vector<std::string> args = {"--threads", "1", "--config", source_dir + "/verification/" + config, "--output",
@@ -27,7 +29,7 @@ nlohmann::json run(const std::string& config, const std::string& tag, const std:
   }
   const auto r = test_support::run_process(SPHMOL_BINARY, args, out.string() + ".err");
   INFO(r.err);
-  if (r.code != 0) return nullptr;
+  if (r.code != 0 && !(failed_too && std::filesystem::exists(out / "summary.json"))) return nullptr;
   std::ifstream in(out / "summary.json");
   return nlohmann::json::parse(in);
 }
@@ -77,12 +79,14 @@ TEST_CASE("Sod 1D: the waves stay within one local spacing at twice and half the
 }
 
 // Against the 1D tube at the 2D tube's spacing (2.5e-3 on the dense side; the shipped 1D file has
-// half of it). Measured (leapfrog, 2800 + 350 particles): 2D L1 rho/u/p/e 0.0039/0.0058/0.0044/0.0100,
-// 1D at 2.5e-3 (its jump smoothed over a quarter spacing) 0.0048/0.0081/0.0061/0.0111: 0.81x, 0.72x,
-// 0.72x, 0.90x. (Against the 1D tube at its own 1.25e-3, 0.0026/0.0038/0.0032/0.0058, the 2D one is
-// 1.5x in rho: that is the spacing, first order with shocks.) At h0 = 1.0 (m / rho)^(1/2), the 1D value, the 2D rarefaction is under-resolved
-// along x (measured L1 rho 0.0058).
-TEST_CASE("Sod 2D: L1 errors within 1.5x of the 1D tube's at the same spacing", "[shock_tube][sod]") {
+// half of it). Measured (leapfrog, 2800 + 350 particles, continuity with volume weights, the jump
+// smoothed over half a spacing): 2D L1 rho/u/p/e 0.0025/0.0042/0.0033/0.0076, 1D at 2.5e-3 (its
+// jump smoothed over a quarter spacing) 0.0048/0.0081/0.0061/0.0111; wave offsets in local spacings
+// shock 0.92, contact 0.20, fan head -0.57, tail -0.57. With the mass-weighted continuity (the 1D
+// file's) the start had to be smoothed over one spacing: 0.0039/0.0058/0.0044/0.0100, head -2.09.
+// At h0 = 1.0 (m / rho)^(1/2), the 1D value, the 2D rarefaction is under-resolved along x.
+TEST_CASE("Sod 2D: L1 errors within 1.5x of the 1D tube's at the same spacing, every wave within one local spacing",
+          "[shock_tube][sod]") {
   const auto s1 = run("sod_1d.yaml", "2d-ref", {"discretization.spacing=2.5e-3"});
   const auto s2 = run("sod.yaml", "2d", {});
   REQUIRE_FALSE(s1.is_null());
@@ -93,10 +97,41 @@ TEST_CASE("Sod 2D: L1 errors within 1.5x of the 1D tube's at the same spacing", 
     INFO(k);
     CHECK(l1(s2, k) < 1.5 * l1(s1, k));
   }
-  CHECK(l1(s2, "L1_rho") < 0.0075);
+  CHECK(l1(s2, "L1_rho") < 0.0035);
   const auto& w = s2["final_errors"]["waves"];
-  CHECK(std::abs(w["shock"]["offset_local_spacings"].get<double>()) < 1.5);
-  CHECK(std::abs(w["contact"]["offset_local_spacings"].get<double>()) < 1.5);
+  for (const char* k : {"shock", "contact", "rarefaction_head", "rarefaction_tail"}) {
+    INFO(k);
+    CHECK(std::abs(w[k]["offset_local_spacings"].get<double>()) < 1.0);
+  }
+}
+
+// A sharp start (smoothing 0) at twice the spacing (5e-3: 100 x 7 dense, 35 x 2 light). With the
+// mass-weighted continuity the first light column, pushed away from the dense gas, loses density
+// 8x faster than -rho div v and is ejected (blown up at t = 0.0088; smoothed over half a spacing at
+// t = 0.086). With volume weights (Colagrossi & Landrini 2003) it runs; measured offsets
+// in local spacings: contact 0.47, fan head -0.09, tail -0.12, shock 1.92 (2 light rows across).
+TEST_CASE("Sod 2D: a sharp start runs with the volume-weighted continuity, not with the mass-weighted one",
+          "[shock_tube][sod]") {
+  const std::vector<std::string> sharp = {"shock_tube.smoothing=0", "discretization.spacing=5e-3"};
+  auto with = [&](const char* form) {
+    auto sets = sharp;
+    sets.push_back(std::string("discretization.continuity=") + form);
+    return sets;
+  };
+  const auto v = run("sod.yaml", "2d-sharp-volume", with("volume"));
+  REQUIRE_FALSE(v.is_null());
+  INFO(v["final_errors"].dump());
+  CHECK(v["status"] == "completed");
+  CHECK(l1(v, "L1_rho") < 0.008);
+  const auto& w = v["final_errors"]["waves"];
+  for (const char* k : {"contact", "rarefaction_head", "rarefaction_tail"}) {
+    INFO(k);
+    CHECK(std::abs(w[k]["offset_local_spacings"].get<double>()) < 1.0);
+  }
+  CHECK(std::abs(w["shock"]["offset_local_spacings"].get<double>()) < 2.5);
+  const auto m = run("sod.yaml", "2d-sharp-mass", with("mass"), true);
+  REQUIRE_FALSE(m.is_null());
+  CHECK(m["status"] == "blown_up");
 }
 
 // Hernquist-Katz data, equal spacing (Niedoba 2012, §3). Measured (leapfrog): 2D at h0 = 1.3 dx

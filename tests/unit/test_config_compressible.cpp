@@ -123,3 +123,14 @@ TEST_CASE("shock_tube config: setup, smoothing, viscosity form and conductivity 
              Contains("discretization.artificial_viscosity.eta") && Contains("monaghan_1992"));
   CHECK_THAT(error_of({"discretization.artificial_conductivity.alpha=-1"}), Contains("discretization.artificial_conductivity.alpha"));
 }
+
+TEST_CASE("discretization.continuity: mass by default, volume for sod.yaml, round trip, errors", "[config]") {
+  CHECK(load_config(shock).discretization.continuity == "mass");
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/sod.yaml");
+  CHECK(c.discretization.continuity == "volume");
+  CHECK(load_config_string(to_yaml(c)).discretization.continuity == "volume");
+  CHECK_THAT(error_of({"discretization.continuity=area"}), Contains("discretization.continuity") && Contains("volume"));
+  CHECK_THAT(error_of({"discretization.continuity=volume", "discretization.density=summation",
+                       "discretization.smoothing_length=constant"}),
+             Contains("discretization.continuity") && Contains("discretization.density: continuity"));
+}

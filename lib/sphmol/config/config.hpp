@@ -93,6 +93,9 @@ struct DiscretizationConfig {
   std::string kernel = "cubic_spline";
   double smoothing_ratio = 1.3;     // h / dx, > 0
   std::string density = "summation";             // summation | normalised_summation (Niedoba 2012, eq 2.58) | continuity (Niedoba 2012, eq 2.61)
+  // density: continuity only: "mass" (Niedoba 2012, eq 2.61) or "volume" (rho_i sum_j m_j / rho_j ...,
+  // Colagrossi & Landrini 2003), the weights of the continuity sum (physics/continuity_density.hpp).
+  std::string continuity = "mass";
   std::string momentum = "symmetric_117";          // symmetric_117 (Vukčević 2012, eq 117) | symmetric_116 (Vukčević 2012, eq 116)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (Vukčević 2012, eqs 117/122) | none (inviscid)
   // Morris viscosity only: "none", or "moment" (each row divided by its discrete second moment, which

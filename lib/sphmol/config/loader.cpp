@@ -221,7 +221,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                 "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
                                 "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting",
-                                "position_noise", "density_diffusion"});
+                                "position_noise", "density_diffusion", "continuity"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -403,6 +403,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.density_diffusion > 0 && d.density != "continuity")
       disc.fail("density_diffusion", "diffuses the continuity density; needs discretization.density: continuity (got '" +
                                          d.density + "')");
+    if (const auto v = disc.string("continuity")) d.continuity = disc.choice("continuity", *v, {"mass", "volume"});
+    if (d.continuity != "mass" && d.density != "continuity")
+      disc.fail("continuity", "'" + d.continuity + "' weights the continuity density; needs discretization.density: "
+                              "continuity (got '" + d.density + "')");
+    if (d.continuity != "mass" && d.wall_pressure == "dynamic")
+      disc.fail("continuity", "'" + d.continuity + "' is for the fluid's density; dynamic wall particles (wall_pressure: "
+                              "dynamic) evolve theirs by the mass-weighted sum: use continuity: mass");
     if (d.wall_pressure == "dynamic" && d.density != "continuity")
       disc.fail("wall_pressure", "'dynamic' evolves wall densities by continuity; needs discretization.density: "
                                  "continuity (got '" + d.density + "')");

@@ -127,14 +127,17 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   // formulation), equal to the four separate terms to round-off.
   const bool signal_velocity = av.form == "monaghan_1997";
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
-                      av.enabled && !signal_velocity && !disc.energy;
+                      av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass";
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
     if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
     else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
   }
-  if (disc.density == "continuity" && !wc_row) add("discretization.density", std::make_unique<ContinuityDensity<D>>());
+  if (disc.density == "continuity" && !wc_row) {
+    if (disc.continuity == "volume") add("discretization.continuity", std::make_unique<ContinuityDensity<D, true>>());
+    else add("discretization.density", std::make_unique<ContinuityDensity<D>>());
+  }
   if (dynamic_walls)
     add("discretization.wall_pressure",
         std::make_unique<DynamicWallDensity<D>>(particles.treatment_mask(WallTreatment::dynamic, global_walls)));
