@@ -5,7 +5,7 @@
 // without the background pressure c^2 rho0, which the symmetric SPH gradient (Vukčević 2012, eq
 // 117) turns into a spurious force wherever the particle arrangement is not symmetric (e.g. fluid
 // rows sliding over a wall). Relative, fluids of several rest densities (Particles::rest_density)
-// take p = c^2 (rho - rho0_i), each phase at p = 0 at its own rest density (Colagrossi & Landrieu 2003).
+// take p = c^2 (rho - rho0_i), each phase at p = 0 at its own rest density (Colagrossi & Landrini 2003).
 #include <algorithm>
 #include <cmath>
 

@@ -4,7 +4,7 @@
 // so that dp/drho = c0^2 at rho = rho0. c0 is chosen ~10x the largest flow speed (e.g. sqrt(g H)
 // for a water column), which keeps density variations near 1 %. Fluids of several rest densities
 // (a scene's fluid bodies with their own `density`, Particles::rest_density) take the multiphase form
-// of Colagrossi & Landrieu (2003, J. Comput. Phys. 191:448): each particle its own rho0_i and
+// of Colagrossi & Landrini (2003, J. Comput. Phys. 191:448): each particle its own rho0_i and
 // B_i = c0^2 rho0_i / gamma, with one c0, so that every phase is at p = 0 at its own rest density.
 #include <algorithm>
 #include <cmath>
