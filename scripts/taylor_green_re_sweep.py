@@ -88,11 +88,11 @@ def main():
     if not gnuplot:
         print("gnuplot not found: wrote re_sweep.csv only")
         return
-    script = ("""set terminal pngcairo size 1100,450
+    script = ("""set terminal pngcairo size 1100,560
 set output 're_sweep.png'
 set datafile separator ','
 set key autotitle columnhead
-set key top left font ',9'
+set key below font ',9'
 set logscale xy
 set xrange [5:5000]
 set grid
@@ -104,14 +104,14 @@ plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $5 : 1/0) with 
      '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $5 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
      '' using 1:(strcol(2) eq 'particle_shifting' ? $5 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
      '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $5 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction', \\
-     '' using 1:(strcol(2) eq 'auto' ? $5 : 1/0) with lines lw 3 lc rgb 'black' dt 2 title 'default: position\\_correction auto'
+     '' using 1:(strcol(2) eq 'auto' ? $5 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto'
 set title 'L1 velocity error / (U e^{bt})'
 set ylabel 'L1'
 plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $7 : 1/0) with linespoints pt 7 title 'transport velocity', \\
      '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $7 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
      '' using 1:(strcol(2) eq 'particle_shifting' ? $7 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
      '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $7 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction', \\
-     '' using 1:(strcol(2) eq 'auto' ? $7 : 1/0) with lines lw 3 lc rgb 'black' dt 2 title 'default: position\\_correction auto'
+     '' using 1:(strcol(2) eq 'auto' ? $7 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto'
 unset multiplot
 """ % (a.across, a.across))
     with open(os.path.join(out, "re_sweep.gp"), "w") as f:
