@@ -1,4 +1,5 @@
-// Taylor-Green beyond the shipped Re 100: Re 1000 with particle shifting, Re 10 to t = 5 s, and the
+// Taylor-Green beyond the shipped Re 100: Re 1000 by default (position_correction: auto takes particle
+// shifting there), Re 10 to t = 5 s, and the
 // same accuracy at U = 0.1 as at U = 1 once the sound speed follows U (c = 10 U by default). CI grids
 // (20-40 particles across, a few seconds each in Release); the 50 x 50 numbers are in
 // docs/verification.md.
@@ -22,18 +23,27 @@ nlohmann::json run(const std::vector<std::string>& overrides) {
 }
 }  // namespace
 
-TEST_CASE("taylor_green Re 1000: particle shifting keeps the decay rate within 5 % (40 x 40, t = 2 s)",
-          "[integration][taylor_green]") {
-  // Measured at 40 x 40: shifting (A = 4) 2.3 % (L1 0.046), the transport velocity of the shipped file
-  // 19 % (L1 0.055): its shift damps the vortex by ~0.01 1/s, which is 11 % of b at Re 1000 (50 x 50).
-  const auto s = run({"discretization.particles_across=40", "fluid.kinematic_viscosity=0.001",
-                      "discretization.transport_velocity.enabled=false",
-                      "discretization.particle_shifting={coefficient: 4}"});
+TEST_CASE("taylor_green Re 1000 by default: position_correction auto keeps the decay rate within 5 % (40 x 40, t = 2 s)",
+          "[integration][taylor_green][position_correction]") {
+  // The user changes only the viscosity. Re_h = U h / nu = 1 * 0.05 / 0.001 = 50 is above the threshold,
+  // so auto takes particle shifting (A = 4). Measured at 40 x 40: 2.3 % (L1 0.046); the transport
+  // velocity, the default before auto, 19 % (L1 0.055): its shift damps the vortex by ~0.01 1/s, which
+  // is 11 % of b at Re 1000 (50 x 50).
+  const std::vector<std::string> re1000{"discretization.particles_across=40", "fluid.kinematic_viscosity=0.001"};
+  const auto s = run(re1000);
   const auto& f = s["final_errors"];
-  INFO(f.dump());
+  INFO(f.dump() << "\n" << s["position_correction"].dump());
   CHECK(s["status"] == "completed");
+  CHECK(s["position_correction"]["chosen"] == "particle_shifting");
+  CHECK(s["position_correction"]["cell_reynolds_number"].get<double>() == Approx(50.0));
   CHECK(f["decay_rate_rel_error"].get<double>() < 0.05);
   CHECK(f["L1_velocity"].get<double>() < 0.07);
+  // The old default fails the same target here: the rule is what meets it.
+  auto old = re1000;
+  old.push_back("discretization.position_correction=transport_velocity");
+  const auto t = run(old);
+  INFO(t["final_errors"].dump());
+  CHECK(t["final_errors"]["decay_rate_rel_error"].get<double>() > 0.1);
 }
 
 TEST_CASE("taylor_green Re 10: stable to t = 5 s, decay rate right while the vortex is above the noise (30 x 30)",

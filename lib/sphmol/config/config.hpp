@@ -87,6 +87,17 @@ struct ParticleShiftingConfig {
   bool correction = true;    // Taylor correction of v (and of rho in the state) to the shifted positions
 };
 
+// discretization.position_correction: which of the two corrections above runs. Absent (setting ""):
+// the maps select as they always did (a map given is on unless it says enabled: false). Given, it
+// selects, and the maps hold only their parameters; an `enabled` they state must agree with it.
+// "auto" picks by the cell Reynolds number Re_h = U h / nu (config/position_correction.hpp).
+struct PositionCorrectionConfig {
+  std::string setting;          // "" (absent) | auto | transport_velocity | particle_shifting | none
+  std::string chosen = "none";  // what runs: transport_velocity | particle_shifting | none
+  double cell_reynolds = -1.0;  // auto by the rule: Re_h = U h / nu it used (inf for nu = 0); else < 0
+  std::string reason;           // auto: one line on why (the Re_h and the threshold, or the key that decided)
+};
+
 struct DiscretizationConfig {
   int particles_across = 0;         // fluid particles across the channel height (> 0); or spacing
   double spacing = 0.0;             // particle spacing dx [m]; exactly one of the two is given
@@ -130,6 +141,7 @@ struct DiscretizationConfig {
   ArtificialConductivityConfig artificial_conductivity;
   TransportVelocityConfig transport_velocity;
   ParticleShiftingConfig particle_shifting;
+  PositionCorrectionConfig position_correction;
   bool energy = false;              // energy equation (Niedoba 2012, eq 2.66/2.65), e in the state
   std::string smoothing_length = "constant";  // constant | density (Niedoba 2012, eq 2.67) | ode (Niedoba 2012, eq 2.68)
 };

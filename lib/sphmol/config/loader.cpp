@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
@@ -13,6 +14,7 @@
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/ark_pairs.hpp"
 #include "sphmol/config/erk_tables.hpp"
+#include "sphmol/config/position_correction.hpp"
 #include "sphmol/config/scene_checks.hpp"
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/core/join.hpp"
@@ -95,6 +97,14 @@ void check_kernel(const MapReader& r, const std::string& name) {
   }
 }
 
+// The scene's velocity scale U from the config alone (Case::velocity_scale), or 0 when the case gives none.
+double config_velocity_scale(const Config& c, const CaseModule& module) {
+  if (!module.velocity_scale_from_config) return 0.0;
+  const double U = c.dimension == 1 ? make_case<1>(c)->velocity_scale(c)
+                   : c.dimension == 2 ? make_case<2>(c)->velocity_scale(c) : make_case<3>(c)->velocity_scale(c);
+  return std::isfinite(U) && U > 0.0 ? U : 0.0;
+}
+
 // Defaults derived from the scene's velocity scale U (Case::velocity_scale), for the cases that know
 // it from the config alone: the artificial sound speed c = 10 U (Mach 0.1, density variations ~ Ma^2
 // = 1 %; Monaghan 1994) and the particle-shifting velocity. Without U, both must be given.
@@ -103,13 +113,8 @@ void resolve_velocity_defaults(Config& c, const CaseModule& module, MapReader& f
   auto& ps = c.discretization.particle_shifting;
   const bool need_u = ps.enabled && !(ps.velocity > 0.0);
   if (!need_c && !need_u) return;
-  double U = 0.0;
-  if (module.velocity_scale_from_config) {
-    if (c.dimension == 1) U = make_case<1>(c)->velocity_scale(c);
-    else if (c.dimension == 2) U = make_case<2>(c)->velocity_scale(c);
-    else U = make_case<3>(c)->velocity_scale(c);
-  }
-  const bool known = std::isfinite(U) && U > 0.0;
+  const double U = config_velocity_scale(c, module);
+  const bool known = U > 0.0;
   if (need_c) {
     MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
     if (!known)
@@ -125,6 +130,109 @@ void resolve_velocity_defaults(Config& c, const CaseModule& module, MapReader& f
       sh.fail_missing("velocity", "U in m/s, > 0 (case '" + c.case_name + "' gives no velocity scale)");
     ps.velocity = U;
   }
+}
+
+void set_position_correction(DiscretizationConfig& d, const std::string& scheme, std::string reason) {
+  d.position_correction.chosen = scheme;
+  d.position_correction.reason = std::move(reason);
+  d.transport_velocity.enabled = scheme == "transport_velocity";
+  d.particle_shifting.enabled = scheme == "particle_shifting";
+}
+
+// Selects the position correction from discretization.position_correction and the `enabled` the two
+// maps state (tv_on, ps_on; nullopt where not stated). Explicit settings win over auto; a combination
+// that selects two things, or contradicts the selection, is an error at the key that contradicts.
+// Returns false when auto is left to the cell-Reynolds rule (resolve_position_correction).
+bool select_position_correction(DiscretizationConfig& d, std::optional<bool> tv_on, std::optional<bool> ps_on,
+                                MapReader& disc) {
+  auto& pc = d.position_correction;
+  const auto fail_enabled = [&](const std::string& map, bool on, const std::string& why) {
+    const std::vector<std::string> keys = map == "transport_velocity"
+                                              ? std::vector<std::string>{"enabled", "background_pressure", "step_factor", "extra_stress"}
+                                              : std::vector<std::string>{"enabled", "coefficient", "velocity", "correction"};
+    disc.section(map, keys).fail("enabled", std::string(on ? "true " : "false ") + why);
+  };
+  const std::string other_tv = "transport_velocity", other_ps = "particle_shifting";
+  if (pc.setting.empty()) {  // the maps select, as before position_correction existed (both: check_position_correction)
+    pc.chosen = d.transport_velocity.enabled ? other_tv : d.particle_shifting.enabled ? other_ps : "none";
+    return true;
+  }
+  const std::string said = "conflicts with discretization.position_correction: " + pc.setting;
+  if (pc.setting == "none") {
+    if (tv_on == true) fail_enabled("transport_velocity", true, said);
+    if (ps_on == true) fail_enabled("particle_shifting", true, said);
+    set_position_correction(d, "none", "");
+    return true;
+  }
+  if (pc.setting == other_tv || pc.setting == other_ps) {
+    const bool tv = pc.setting == other_tv;
+    if ((tv ? tv_on : ps_on) == false) fail_enabled(tv ? "transport_velocity" : "particle_shifting", false, said);
+    if ((tv ? ps_on : tv_on) == true)
+      fail_enabled(tv ? "particle_shifting" : "transport_velocity", true, said + " (the two are alternatives)");
+    set_position_correction(d, pc.setting, "");
+    return true;
+  }
+  // auto: an `enabled` a map states is an explicit choice and wins over the rule.
+  if (tv_on == true && ps_on == true)
+    fail_enabled("particle_shifting", true, "together with discretization.transport_velocity.enabled: true: the two are "
+                                            "alternatives, give one of the two (or neither, for position_correction: auto)");
+  if (tv_on == false && ps_on == false)
+    disc.fail("position_correction", "auto has nothing to choose from: transport_velocity and particle_shifting both say "
+                                     "enabled: false (use position_correction: none)");
+  if (tv_on == true) set_position_correction(d, other_tv, "discretization.transport_velocity.enabled: true was given");
+  else if (ps_on == true) set_position_correction(d, other_ps, "discretization.particle_shifting.enabled: true was given");
+  else if (tv_on == false) set_position_correction(d, other_ps, "discretization.transport_velocity.enabled: false was given");
+  else if (ps_on == false) set_position_correction(d, other_tv, "discretization.particle_shifting.enabled: false was given");
+  else {
+    // Neither on until the rule has chosen: nothing read before then may see a map as switched on.
+    d.transport_velocity.enabled = d.particle_shifting.enabled = false;
+    return false;
+  }
+  return true;
+}
+
+// What the chosen correction needs of the flow. The messages name the key that selected it.
+void check_position_correction(const Config& c, const CaseModule& module, MapReader& disc) {
+  const auto& d = c.discretization;
+  const auto& pc = d.position_correction;
+  const bool by_key = !pc.setting.empty();
+  const std::string via = pc.setting == "auto" ? " (position_correction: auto chose it: " + pc.reason + ")" : "";
+  // Its background pressure would pull a free surface inward, and it needs one constant c.
+  if (d.transport_velocity.enabled && (module.free_surface || c.fluid.eos.type == "ideal_gas"))
+    disc.fail(by_key ? "position_correction" : "transport_velocity",
+              std::string(by_key ? "'" + pc.setting + "': the transport velocity " : "") +
+                  "needs a confined liquid with a constant sound speed (no free surface, not ideal_gas); case '" +
+                  c.case_name + "' has " + (module.free_surface ? "a free surface" : "a gas") + via);
+  // Grad C does not vanish at a free surface, so the shift would pull the surface particles inward.
+  if (d.particle_shifting.enabled && module.free_surface)
+    disc.fail(by_key ? "position_correction" : "particle_shifting",
+              std::string(by_key ? "'" + pc.setting + "': particle shifting " : "") +
+                  "needs a flow without a free surface; case '" + c.case_name + "' has one" + via);
+  if (d.particle_shifting.enabled && d.transport_velocity.enabled)  // only the maps, without position_correction
+    disc.fail("particle_shifting", "is an alternative to discretization.transport_velocity: give one of the two");
+}
+
+// position_correction: auto left to the rule: the transport velocity below the cell Reynolds number
+// kPositionCorrectionCellReynolds, particle shifting at or above it (config/position_correction.hpp),
+// with Re_h = U h / nu from the velocity scale that also gives c = 10 U and h = smoothing_ratio dx of
+// the scene's spacing. Reports the choice as a notice.
+void resolve_position_correction(Config& c, const CaseModule& module, MapReader& disc, double spacing) {
+  auto& d = c.discretization;
+  auto& pc = d.position_correction;
+  if (pc.setting != "auto" || !pc.reason.empty()) return;
+  const double U = config_velocity_scale(c, module);
+  if (!(U > 0.0))
+    disc.fail("position_correction", "auto chooses by the cell Reynolds number U h / nu, and case '" + c.case_name +
+                                         "' gives no velocity scale U from its config (choose transport_velocity, "
+                                         "particle_shifting or none)");
+  const double h = d.smoothing_ratio * spacing, nu = c.fluid.kinematic_viscosity;
+  pc.cell_reynolds = cell_reynolds_number(U, h, nu);
+  const std::string scheme = position_correction_for(pc.cell_reynolds);
+  set_position_correction(d, scheme,
+                          "Re_h = U h / nu = " + number_text(U) + " * " + number_text(h) + " / " + number_text(nu) + " = " +
+                              number_text(pc.cell_reynolds) + (scheme == "transport_velocity" ? " < " : " >= ") +
+                              number_text(kPositionCorrectionCellReynolds));
+  check_position_correction(c, module, disc);
 }
 
 Config validate(const YAML::Node& root, const YamlOrigin& origin) {
@@ -220,7 +328,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
-                                "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting",
+                                "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting", "position_correction",
                                 "position_noise", "density_diffusion", "continuity"});
   {
     auto& d = c.discretization;
@@ -347,25 +455,29 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       if (const auto v = ac.real("alpha")) a.alpha = *v;
       ac.check("alpha", a.alpha >= 0, a.alpha, ">= 0");
     }
+    // The position correction: the transport velocity or particle shifting (or neither). Without
+    // discretization.position_correction the maps select, as they always did; with it, it selects and
+    // the maps hold the parameters (select_position_correction). Read here, checked once chosen.
+    std::optional<bool> tv_on, ps_on;  // `enabled` as the maps state it (nullopt: not stated)
+    if (const auto v = disc.string("position_correction"))
+      d.position_correction.setting =
+          disc.choice("position_correction", *v, {"auto", "transport_velocity", "particle_shifting", "none"});
     if (disc.has("transport_velocity")) {
       MapReader tv = disc.section("transport_velocity", {"enabled", "background_pressure", "step_factor", "extra_stress"});
       auto& t = d.transport_velocity;
-      t.enabled = tv.boolean("enabled").value_or(true);
+      tv_on = tv.boolean("enabled");
+      t.enabled = tv_on.value_or(true);
       if (const auto v = tv.real("background_pressure")) t.background_pressure = *v;
       tv.check("background_pressure", t.background_pressure >= 0, t.background_pressure, ">= 0 Pa; 0 = rho0 c^2");
       if (const auto v = tv.real("step_factor")) t.step_factor = *v;
       tv.check("step_factor", t.step_factor > 0, t.step_factor, "> 0 (tau = step_factor h / c)");
       if (const auto v = tv.boolean("extra_stress")) t.extra_stress = *v;
-      // Its background pressure would pull a free surface inward, and it needs one constant c.
-      if (t.enabled && (module.free_surface || c.fluid.eos.type == "ideal_gas"))
-        disc.fail("transport_velocity", "needs a confined liquid with a constant sound speed (no free surface, not "
-                                        "ideal_gas); case '" + c.case_name + "' has " +
-                                        (module.free_surface ? "a free surface" : "a gas"));
     }
     if (disc.has("particle_shifting")) {
       MapReader sh = disc.section("particle_shifting", {"enabled", "coefficient", "velocity", "correction"});
       auto& p = d.particle_shifting;
-      p.enabled = sh.boolean("enabled").value_or(true);
+      ps_on = sh.boolean("enabled");
+      p.enabled = ps_on.value_or(true);
       if (const auto v = sh.real("coefficient")) p.coefficient = *v;
       sh.check("coefficient", p.coefficient > 0, p.coefficient, "> 0 (du = -A h U grad C)");
       if (const auto v = sh.real("velocity")) {
@@ -373,12 +485,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
         sh.check("velocity", p.velocity > 0, p.velocity, "> 0 m/s; absent = the scene's velocity scale");
       }
       if (const auto v = sh.boolean("correction")) p.correction = *v;
-      // Grad C does not vanish at a free surface, so the shift would pull the surface particles inward.
-      if (p.enabled && module.free_surface)
-        disc.fail("particle_shifting", "needs a flow without a free surface; case '" + c.case_name + "' has one");
-      if (p.enabled && d.transport_velocity.enabled)
-        disc.fail("particle_shifting", "is an alternative to discretization.transport_velocity: give one of the two");
     }
+    // auto by the rule waits for the scene's spacing (resolve_position_correction, after the case).
+    if (select_position_correction(d, tv_on, ps_on, disc)) check_position_correction(c, module, disc);
     if (const auto v = disc.boolean("energy")) d.energy = *v;
     if (d.energy && !module.provides_energy)
       disc.fail("energy", "case '" + c.case_name + "' provides no initial internal energy for the energy equation");
@@ -571,6 +680,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
+  resolve_position_correction(c, module, disc, own.size.spacing);
+  if (c.discretization.position_correction.setting == "auto")
+    c.notices.push_back(disc.where("position_correction") + ": auto: " + c.discretization.position_correction.chosen +
+                        " (" + c.discretization.position_correction.reason + ")");
   resolve_velocity_defaults(c, module, fluid, disc);
   // Probes (probes/probe_config.hpp) after the case: a force probe names one of its wall bodies.
   c.probes = read_probes(top, c, c.case_settings->wall_bodies());

@@ -87,6 +87,11 @@ std::string to_yaml(const Config& c) {
   if (d.artificial_conductivity.enabled)
     y << "  artificial_conductivity: {alpha: " << num(d.artificial_conductivity.alpha) << "}\n";
   if (d.position_noise > 0) y << "  position_noise: " << num(d.position_noise) << "\n";
+  // The choice written out, not `auto`: the run's config.yaml (and a restart from it) keeps the
+  // correction the run took whatever the rule says later.
+  if (d.position_correction.setting == "auto" && d.position_correction.cell_reynolds >= 0.0)  // by the rule
+    y << "  # position_correction: auto chose " << d.position_correction.chosen << ": " << d.position_correction.reason << "\n";
+  if (!d.position_correction.setting.empty()) y << "  position_correction: " << d.position_correction.chosen << "\n";
   if (d.particle_shifting.enabled)
     y << "  particle_shifting: {coefficient: " << num(d.particle_shifting.coefficient)
       << ", velocity: " << num(d.particle_shifting.velocity)

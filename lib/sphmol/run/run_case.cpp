@@ -15,6 +15,7 @@
 #include "sphmol/run/last_good_state.hpp"
 #include <stdexcept>
 
+#include "sphmol/config/position_correction.hpp"
 #include "sphmol/core/version.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/cases/case_module.hpp"
@@ -387,6 +388,16 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;
+  if (const auto& pc = config.discretization.position_correction; !pc.setting.empty()) {
+    // discretization.position_correction: what ran, and for auto why (config/position_correction.hpp).
+    nlohmann::json j{{"setting", pc.setting}, {"chosen", pc.chosen}};
+    if (!pc.reason.empty()) j["reason"] = pc.reason;
+    if (pc.cell_reynolds >= 0.0) {
+      j["cell_reynolds_number"] = std::isfinite(pc.cell_reynolds) ? nlohmann::json(pc.cell_reynolds) : nlohmann::json("inf");
+      j["cell_reynolds_threshold"] = kPositionCorrectionCellReynolds;
+    }
+    summary["position_correction"] = j;
+  }
   summary["version"] = version();
   summary["git_commit"] = git_commit();
   if (out.enabled) {
