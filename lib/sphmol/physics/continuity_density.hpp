@@ -19,32 +19,31 @@
 
 namespace sphmol {
 
-// The sum of Niedoba 2012, eq 2.61 over one row (also used for dynamic wall particles).
-template <int D>
-inline double continuity_rate(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
+// Sum_j w_j v_ij . grad_i W_ij over one row, w_j = m_j (Volume = false) or m_j / rho_j.
+template <int D, bool Volume>
+inline double weighted_divergence_sum(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
   const auto& m = w.particles->mass;
   double s = 0.0;
   for (std::uint32_t k = 0; k < r.n; ++k) {
     const std::uint32_t j = r.j[k];
     double vdx = 0.0;
     for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
-    s += m[j] * vdx * r.F[k];
+    const double wj = Volume ? m[j] / w.rho[j] : m[j];
+    s += wj * vdx * r.F[k];
   }
   return s;
+}
+
+// The sum of Niedoba 2012, eq 2.61 over one row (also used for dynamic wall particles).
+template <int D>
+inline double continuity_rate(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
+  return weighted_divergence_sum<D, false>(w, i, r);
 }
 
 // The sum of the volume-weighted form (Colagrossi & Landrini 2003) over one row.
 template <int D>
 inline double continuity_rate_volume(const Workspace<D>& w, std::size_t i, const PairRow<D>& r) {
-  const auto& m = w.particles->mass;
-  double s = 0.0;
-  for (std::uint32_t k = 0; k < r.n; ++k) {
-    const std::uint32_t j = r.j[k];
-    double vdx = 0.0;
-    for (int d = 0; d < D; ++d) vdx += (w.v[d][i] - w.v[d][j]) * r.dx[d][k];
-    s += m[j] / w.rho[j] * vdx * r.F[k];
-  }
-  return w.rho[i] * s;
+  return w.rho[i] * weighted_divergence_sum<D, true>(w, i, r);
 }
 
 // Volume = true: the Colagrossi & Landrini (2003) weights (discretization.continuity: volume).
