@@ -37,14 +37,21 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 bool finite_number(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
+// Runs `sph-mol compare` on the Couette case into `out` with the further arguments `args`, and reads
+// the comparison it writes.
+nlohmann::json compare_couette(const std::string& out, const std::string& args) {
+  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out + " " + args,
+              out + ".log") == 0);
+  return read_json(out + "/comparison.json");
+}
 }  // namespace
 
 TEST_CASE("sph-mol stability separates stable and blown-up runs on a coarse Poiseuille channel", "[integration][stability]") {
   // Leapfrog at 10 particles across: dt = 2e-3 s runs, 4e-3 s exceeds the viscous limit (measured).
   const std::string out = "reports/stability_poiseuille";
   REQUIRE(run("stability --config " SPHMOL_SOURCE_DIR "/verification/poiseuille.yaml --output " + out +
-                  " --set discretization.particles_across=10 --set geometry.channel_length=1.0e-3 --set time.t_end=0.5"
-                  " --set output.times=[0.5] --set time.integrator=leapfrog --set time.dt=2e-3"
+                                      " --set discretization.particles_across=10 --set geometry.channel_length=1.0e-3 --set time.t_end=0.5"
+                                      " --set output.times=[0.5] --set time.integrator=leapfrog --set time.dt=2e-3"
                   " --sound-speed-factors 1 --step-factors 1,2",
               out + ".log") == 0);
   const auto j = read_json(out + "/stability.json");
@@ -57,11 +64,8 @@ TEST_CASE("sph-mol stability separates stable and blown-up runs on a coarse Pois
 
 TEST_CASE("sph-mol compare writes one row per integrator setting and names the fastest", "[integration][compare]") {
   const std::string out = "reports/compare_couette";
-  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
-                  " --integrators leapfrog_kdk,cvode_adams --set discretization.particles_across=20 --set time.t_end=0.01"
-                  " --set output.times=[0.01]",
-              out + ".log") == 0);
-  const auto j = read_json(out + "/comparison.json");
+  const auto j = compare_couette(out, "--integrators leapfrog_kdk,cvode_adams --set discretization.particles_across=20"
+                                      " --set time.t_end=0.01 --set output.times=[0.01]");
   CHECK(j["runs"].size() == 4 + 5);  // 4 CFL factors, 5 tolerances
   for (const auto& r : j["runs"]) CHECK(r["status"] == "completed");
   CHECK_FALSE(j["fastest"][0]["fastest"].is_null());
@@ -75,11 +79,9 @@ TEST_CASE("sph-mol compare reports the implicit solves' Krylov iterations, 0 for
   // Couette at 20 across to t = 0.02 s: leapfrog_imex solves the viscous kick once per step,
   // arkode_imex once per implicit stage; the explicit leapfrog and Dormand-Prince solve nothing.
   const std::string out = "reports/compare_couette_krylov";
-  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
-                  " --integrators leapfrog,leapfrog_imex,arkode_imex,arkode_erk --step-factors 1 --rtols 1e-5"
-                  " --set discretization.particles_across=20 --set time.t_end=0.02 --set output.times=[0.02]",
-              out + ".log") == 0);
-  const auto j = read_json(out + "/comparison.json");
+  const auto j = compare_couette(out, "--integrators leapfrog,leapfrog_imex,arkode_imex,arkode_erk --step-factors 1"
+                                      " --rtols 1e-5 --set discretization.particles_across=20"
+                                      " --set time.t_end=0.02 --set output.times=[0.02]");
   REQUIRE(j["runs"].size() == 4);
   for (const auto& r : j["runs"]) {
     INFO(r.dump());
@@ -154,12 +156,9 @@ TEST_CASE("sph-mol compare reports the implicit solves' Krylov iterations, 0 for
 TEST_CASE("sph-mol compare --reference-dt measures the time error: second order for the leapfrog", "[integration][compare]") {
   // Couette at 20 across to t = 0.01 s; CFL steps x 1, 1/2, 1/4; reference Verner 6 at dt = 1e-5.
   const std::string out = "reports/compare_couette_reference";
-  REQUIRE(run("compare --config " SPHMOL_SOURCE_DIR "/verification/couette.yaml --output " + out +
-                  " --integrators leapfrog --reference-dt 1e-5 --step-factors 1,0.5,0.25 --targets 1e-4"
-                  " --set discretization.particles_across=20"
-                  " --set time.t_end=0.01 --set output.times=[0.01]",
-              out + ".log") == 0);
-  const auto j = read_json(out + "/comparison.json");
+  const auto j = compare_couette(out, "--integrators leapfrog --reference-dt 1e-5 --step-factors 1,0.5,0.25 --targets 1e-4"
+                                      " --set discretization.particles_across=20"
+                                      " --set time.t_end=0.01 --set output.times=[0.01]");
   REQUIRE(j["runs"].size() == 3);
   std::vector<double> e;
   for (const auto& r : j["runs"]) e.push_back(r["error"].get<double>());
@@ -185,8 +184,8 @@ TEST_CASE("sph-mol stability finds the slow symmetric oscillation of a long Pois
   // studies", measured 3 swings past 0.2 % after the start-up). Bounded: |e_signed| stays ~1 %.
   const std::string out = "reports/stability_poiseuille_oscillating";
   REQUIRE(run("stability --config " SPHMOL_SOURCE_DIR "/verification/poiseuille.yaml --output " + out +
-                  " --set discretization.particles_across=10 --set geometry.channel_length=1.0e-3 --set time.t_end=60"
-                  " --set output.plots=false --set time.integrator=leapfrog --set time.dt=2e-3"
+                                      " --set discretization.particles_across=10 --set geometry.channel_length=1.0e-3 --set time.t_end=60"
+                                      " --set output.plots=false --set time.integrator=leapfrog --set time.dt=2e-3"
                   " --sound-speed-factors 4 --step-factors 1 --samples 60",
               out + ".log") == 0);
   const auto j = read_json(out + "/stability.json");
