@@ -13,8 +13,9 @@ namespace sphmol::parallel {
 
 namespace {
 
-// Integrator checkpoint arrays of the positions' length (D values per fluid particle).
-constexpr const char* kPositionLength[] = {"c", "v_previous"};
+// Integrator checkpoint arrays of the positions' length (D values per fluid particle): the leapfrogs'
+// position correction c, and leapfrog_imex's previous velocities and its f_I = L v + b.
+constexpr const char* kPositionLength[] = {"c", "v_previous", "f_implicit"};
 
 template <int D>
 class MpiRun final : public PartitionedRun<D> {
