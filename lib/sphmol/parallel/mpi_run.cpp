@@ -13,8 +13,9 @@ namespace sphmol::parallel {
 
 namespace {
 
-// Integrator checkpoint arrays of the positions' length (D values per fluid particle).
-constexpr const char* kPositionLength[] = {"c", "v_previous"};
+// Integrator checkpoint arrays of the positions' length (D values per fluid particle): the leapfrogs'
+// position correction c, and leapfrog_imex's previous velocities and its f_I = L v + b.
+constexpr const char* kPositionLength[] = {"c", "v_previous", "f_implicit"};
 
 template <int D>
 class MpiRun final : public PartitionedRun<D> {
@@ -59,33 +60,37 @@ class MpiRun final : public PartitionedRun<D> {
   void rebalance(Integrator& integrator, double t) override {
     if (!sys_.imbalanced()) return;
     // The leapfrogs carry, beyond y, their last evaluation f (the state's length) and the XSPH
-    // correction c (the positions' length): both travel through the integrator's checkpoint state,
-    // which is restored after the integrator is started on the new share (its first evaluation
-    // there is replaced by the restored f: the steps go on bit for bit).
+    // correction c (the positions' length), leapfrog_imex also its previous velocities and
+    // f_I = L v + b of the operator recorded at the step's own (predicted) state (both of the
+    // positions' length): all travel through the integrator's checkpoint state, which is restored
+    // after the integrator is started on the new share (its first evaluation there, and the operator
+    // recorded by it, are replaced by the restored arrays: the steps go on bit for bit).
     nlohmann::json js = integrator.save_state();
     // ARKODE and CVODE keep their step history (error controller, Adams history) inside SUNDIALS;
     // starting them again on a new share would change the steps from the serial run's, so their
     // particles stay where they are (counted in the summary).
-    // leapfrog_imex likewise: started again, it would record its viscous operator at the state
-    // instead of keeping the one of the step's evaluation (at the predicted state).
-    if (!js.contains("f") || js.contains("v_previous")) {
+    if (!js.contains("f")) {
       ++declined_;
       return;
     }
-    std::vector<double> f = decode_doubles(js.at("f").get<std::string>()), c;
+    std::vector<double> f = decode_doubles(js.at("f").get<std::string>());
+    std::vector<std::vector<double>> carried;
+    std::vector<const char*> carried_keys;
+    for (const char* key : kPositionLength)
+      if (js.contains(key)) {
+        carried.push_back(decode_doubles(js.at(key).get<std::string>()));
+        carried_keys.push_back(key);
+      }
     std::vector<std::vector<double>*> positions;
-    if (js.contains("c")) {
-      c = decode_doubles(js.at("c").get<std::string>());
-      positions.push_back(&c);
-    }
+    for (auto& a : carried) positions.push_back(&a);
     sys_.repartition(t, y_, {&f}, positions);
     js["f"] = encode_doubles(f);
-    if (js.contains("c")) js["c"] = encode_doubles(c);
+    for (std::size_t i = 0; i < carried.size(); ++i) js[carried_keys[i]] = encode_doubles(carried[i]);
     integrator.initialize(sys_, t, y_.data());
     integrator.restore_state(js);
   }
-  // The leapfrogs' per-particle arrays: f of the state's length, and c and leapfrog_imex's previous
-  // velocities v_previous of the positions' (carried in the position blocks of a state-length array).
+  // The leapfrogs' per-particle arrays: f of the state's length, and those of kPositionLength (carried
+  // in the position blocks of a state-length array).
   nlohmann::json whole_integrator_state(const nlohmann::json& state) override {
     nlohmann::json js = state;
     if (!js.contains("f")) return js;  // ARKODE, CVODE: no per-particle arrays (a step size, counters)

@@ -36,6 +36,7 @@ void LeapfrogImex::initialized() {
   imex_->rhs_explicit(t_, y_, f_.data(), op_);
   evaluated();
   if (op_.size() != nv) throw std::logic_error("leapfrog_imex: the implicit operator does not match the velocity block");
+  op_.apply_affine(y_ + sys_->velocities_begin(), w_.data());  // f_I,0 = L_0 v_0 + b_0
 }
 
 void LeapfrogImex::step(double dt) {
@@ -46,7 +47,7 @@ void LeapfrogImex::step(double dt) {
   double* const c = c_.data();
   const double* const f = f_.data();
   const std::size_t L = sys_->block_length();
-  op_.apply_affine(y + vb, w);  // f_I,n = L_n v_n + b_n
+  // w = f_I,n = L_n v_n + b_n, applied at the end of the previous step (or in initialized()).
   const bool extrapolate = dt_prev_ > 0.0;
   const double ratio = extrapolate ? dt / dt_prev_ : 0.0;
 #pragma omp parallel
@@ -86,11 +87,15 @@ void LeapfrogImex::step(double dt) {
   }
   f_.swap(fnew_);
   dt_prev_ = dt;
+  // f_I,n+1 = L_n+1 v_n+1 + b_n+1 for the next step, kept as state: L_n+1 was recorded at the
+  // predicted state, which a restart or a migration cannot record again.
+  op_.apply_affine(y + vb, w);
 }
 
 void LeapfrogImex::save_extra(nlohmann::json& j) const {
   j["v_previous"] = encode_doubles(vprev_);
   j["dt_previous"] = encode_doubles({dt_prev_});
+  j["f_implicit"] = encode_doubles(w_);
 }
 
 void LeapfrogImex::restore_extra(const nlohmann::json& j) {
@@ -98,6 +103,12 @@ void LeapfrogImex::restore_extra(const nlohmann::json& j) {
   if (v.size() != vprev_.size()) throw std::runtime_error("leapfrog_imex: checkpoint state does not match this system (sizes differ)");
   vprev_ = v;
   dt_prev_ = decode_doubles(j.at("dt_previous").get<std::string>()).at(0);
+  // Without it (a checkpoint of an older sph-mol) initialized() applied L, b recorded at the state.
+  if (j.contains("f_implicit")) {
+    const auto w = decode_doubles(j.at("f_implicit").get<std::string>());
+    if (w.size() != w_.size()) throw std::runtime_error("leapfrog_imex: checkpoint state does not match this system (sizes differ)");
+    w_ = w;
+  }
 }
 
 }  // namespace sphmol

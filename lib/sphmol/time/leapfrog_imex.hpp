@@ -12,8 +12,10 @@
 // the explicit predictor v_{n+1/2} + dt/2 a_n would amplify the stiff viscous modes. The first step
 // predicts with a_n. The linear system is solved by ViscousSolve (PCG or GMRES with a Jacobi
 // preconditioner), warm started from the prediction.
-// A restart rebuilds L and b at the checkpoint's state (the step's own evaluation was at the predicted
-// state), so it agrees with the uninterrupted run to the Krylov tolerance, not bit for bit.
+// The step starts from f_I,n = L_n v_n + b_n, applied at the end of the step before with the operator
+// of that step's evaluation (at the predicted state); it is kept as state and checkpointed, with the
+// previous velocities, so that a restart, or a start on a new share of particles over MPI ranks,
+// goes on bit for bit (recording L and b again at the state would change them).
 #include <vector>
 
 #include "sphmol/time/imex_system.hpp"
@@ -41,7 +43,8 @@ class LeapfrogImex final : public LeapfrogBase {
   ViscousSolve solve_;
   ImexSystem* imex_ = nullptr;
   ViscousOperator op_;  // L and b of the latest evaluation
-  std::vector<double> ypred_, fnew_, w_, vprev_, rhs_, guess_;
+  std::vector<double> ypred_, fnew_, vprev_, rhs_, guess_;
+  std::vector<double> w_;  // f_I,n = L_n v_n + b_n, which starts the next step
   double dt_prev_ = 0.0;  // 0: no previous step (predict with a_n)
   long steps_ = 0;
 };
