@@ -126,6 +126,16 @@ double abs_force(const Fixture<2>& f) {
   return s;
 }
 
+// An open line of 41 particles at spacing 0.1 and density 2 (h = 0.13), in the uniform strain u = a x.
+void open_line_in_uniform_strain(Fixture<1>& g, double a) {
+  g.domain.lo = {-10.0};
+  g.domain.hi = {10.0};
+  g.domain.periodic = {false};
+  for (int i = 0; i < 41; ++i) g.P.add(Kind::Fluid, {(i - 20) * 0.1}, {0.0}, 2.0 * 0.1, 2.0);
+  g.finish(0.13);
+  for (std::size_t i = 0; i < g.P.size(); ++i) g.w.v[0][i] = a * g.w.x[0][i];
+}
+
 }  // namespace
 
 TEST_CASE("state layout holds only the configured blocks, in order", "[state]") {
@@ -154,13 +164,8 @@ TEST_CASE("continuity density: zero for uniform motion, -rho div v for a linear 
 
   // Open line, u = a x: interior particles see drho/dt = -rho a (compression for a < 0 raises rho).
   Fixture<1> g;
-  g.domain.lo = {-10.0};
-  g.domain.hi = {10.0};
-  g.domain.periodic = {false};
-  for (int i = 0; i < 41; ++i) g.P.add(Kind::Fluid, {(i - 20) * 0.1}, {0.0}, 2.0 * 0.1, 2.0);
-  g.finish(0.13);
   const double a = -0.7;
-  for (std::size_t i = 0; i < g.P.size(); ++i) g.w.v[0][i] = a * g.w.x[0][i];
+  open_line_in_uniform_strain(g, a);
   ContinuityDensity<1>{}.apply(g.w);
   CHECK(g.drho[20] > 0.0);
   CHECK(g.drho[20] == Approx(-2.0 * a).epsilon(5e-2));  // lattice quadrature error of the kernel moment ~2 %
@@ -433,12 +438,7 @@ TEST_CASE("continuity density with volume weights: equal to the mass form at one
           "[physics]") {
   // Uniform density, u = a x: both forms agree to round-off.
   Fixture<1> g;
-  g.domain.lo = {-10.0};
-  g.domain.hi = {10.0};
-  g.domain.periodic = {false};
-  for (int i = 0; i < 41; ++i) g.P.add(Kind::Fluid, {(i - 20) * 0.1}, {0.0}, 2.0 * 0.1, 2.0);
-  g.finish(0.13);
-  for (std::size_t i = 0; i < g.P.size(); ++i) g.w.v[0][i] = -0.7 * g.w.x[0][i];
+  open_line_in_uniform_strain(g, -0.7);
   ContinuityDensity<1>{}.apply(g.w);
   const std::vector<double> mass_form = g.drho;
   std::fill(g.drho.begin(), g.drho.end(), 0.0);
