@@ -76,7 +76,7 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     std::vector<std::size_t> cells;
     std::vector<std::uint32_t> cand;            // candidate neighbours of the cell, ascending
     std::array<std::vector<double>, D> cand_x;  // their coordinates, contiguous
-    std::vector<std::uint8_t> cand_fluid;
+    std::vector<std::uint8_t> cand_fluid, cand_on;  // 1: a fluid particle; 1: listed in the row at hand
     for (std::size_t c = c_lo; c < c_hi; ++c) {
       if (cell_start_[c] == cell_start_[c + 1]) continue;
       std::array<int, D> cc;
@@ -118,7 +118,8 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         for (std::size_t k = 0; k < m; ++k) cand_x[d][k] = in.x[d][cand[k]];
       }
       cand_fluid.resize(m);
-      for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid;
+      cand_on.resize(m);
+      for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid ? 1 : 0;
       for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
         const std::uint32_t i = cell_items_[q];
         const bool fluid_i = in.kind[i] == Kind::Fluid;
@@ -127,14 +128,21 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         // A row holds at most m entries (room for them per row, not per cell: one crowded cell
         // could otherwise ask for m^2).
         if (local.size() < used + m) local.resize(std::max(local.size() + local.size() / 4, used + m));
-        // pd.is_pair(in, i, cand[k]) on the copied coordinates, written without branches.
-        std::uint32_t* const row = local.data() + used;
-        std::size_t len = 0;
+        // pd.is_pair(in, i, cand[k]) on the copied coordinates, in two loops: the tests into a mask
+        // over contiguous arrays, with no store that depends on the outcome, which vectorises; then
+        // the listed candidates moved to the row (the one serial dependency, len).
+        const std::uint8_t fi = fluid_i ? 1 : 0;
+        std::uint8_t* const on = cand_on.data();
         for (std::size_t k = 0; k < m; ++k) {
           std::array<double, D> dx;
           for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
+          on[k] = static_cast<std::uint8_t>(pd.within(dx) & (cand[k] != i) & (fi | cand_fluid[k]));
+        }
+        std::uint32_t* const row = local.data() + used;
+        std::size_t len = 0;
+        for (std::size_t k = 0; k < m; ++k) {
           row[len] = cand[k];
-          len += static_cast<std::size_t>(pd.within(dx) & (cand[k] != i) & (fluid_i | (cand_fluid[k] != 0)));
+          len += on[k];
         }
         row_at_[i] = static_cast<std::uint32_t>(used);
         out.offset[i + 1] = static_cast<std::uint32_t>(len);  // length; offsets below
