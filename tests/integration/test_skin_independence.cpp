@@ -5,41 +5,22 @@
 // the skin that is cheapest per step (docs/performance.md).
 #include <catch2/catch.hpp>
 
-#include <omp.h>
 #include <string>
-#include <vector>
 
-#include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/config.hpp"
-#include "sphmol/time/integrator.hpp"
+#include "support/stepped_run.hpp"
 
 using namespace sphmol;
 
 namespace {
 
-struct Run {
-  std::vector<double> y;
-  long rebuilds = 0;
-};
+using test_support::differing;
+using Run = test_support::SteppedRun;
 
 Run run_dam_break(const std::string& skin, int steps, int threads) {
-  omp_set_num_threads(threads);
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                {"discretization.spacing=0.04", "time.t_end=1.0", "discretization.skin=" + skin});
-  auto sys = make_case<2>(c)->build(c);
-  Run r;
-  r.y = sys->initial_state();
-  auto integ = make_integrator(c.time);
-  integ->initialize(*sys, 0.0, r.y.data());
-  for (int s = 0; s < steps; ++s) integ->step_toward(c.time.t_end);
-  r.rebuilds = sys->pair_list().rebuilds();
-  return r;
-}
-
-std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i] ? 1 : 0;
-  return n;
+  return test_support::run_steps<2>(c, steps, threads, [](auto&) {});
 }
 
 }  // namespace

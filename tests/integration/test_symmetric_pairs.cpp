@@ -14,36 +14,18 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/time/integrator.hpp"
 #include "support/files.hpp"
+#include "support/stepped_run.hpp"
 
 using namespace sphmol;
 
 namespace {
 
-struct Run {
-  std::vector<double> y;
-  long evaluations = 0, symmetric = 0, rebuilds = 0;
-};
+using test_support::differing;
+using Run = test_support::SteppedRun;
 
 template <int D>
 Run run(const Config& c, int steps, bool symmetric, int threads) {
-  omp_set_num_threads(threads);
-  auto sys = make_case<D>(c)->build(c);
-  sys->set_symmetric_pairs(symmetric);
-  Run r;
-  r.y = sys->initial_state();
-  auto integ = make_integrator(c.time);
-  integ->initialize(*sys, 0.0, r.y.data());
-  for (int s = 0; s < steps; ++s) integ->step_toward(c.time.t_end);
-  r.evaluations = sys->rhs_evaluations();
-  r.symmetric = sys->symmetric_evaluations();
-  r.rebuilds = sys->pair_list().rebuilds();
-  return r;
-}
-
-std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i] ? 1 : 0;
-  return n;
+  return test_support::run_steps<D>(c, steps, threads, [&](auto& sys) { sys.set_symmetric_pairs(symmetric); });
 }
 
 template <int D>
