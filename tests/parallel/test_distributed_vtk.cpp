@@ -1,9 +1,9 @@
 // VTK output over ranks (run/vtk_observer.hpp, at_output_pieces): each rank writes the particles it
 // owns as a piece, rank 0 a .pvtp naming the pieces, and the collection lists the .pvtp files. On
 // every rank count the pieces of each output together hold exactly the particles of the serial
-// run's .vtp (fluid and walls), with the same arrays and values to the bit, and no particle twice;
-// the collection lists the same times and groups; the summary lists every piece. Rank 0 runs the
-// serial reference.
+// run's .vtp (fluid, walls and ghost images), with the same arrays and values to the bit, and no
+// particle twice (ghost images, all with id -1, as sorted multisets); the collection lists the same
+// times and groups; the summary lists every piece. Rank 0 runs the serial reference.
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -34,14 +34,18 @@ nlohmann::json run_into(const Config& c, const RunPartitioner* partitioner, cons
   return run_case(c, opt);
 }
 
+// Which groups the serial run wrote files of (known on rank 0).
+struct Groups {
+  bool walls = false, ghosts = false;
+};
+
 // The pieces of the run over ranks against the serial files, output by output and group by group.
-// Returns (on rank 0) whether the serial run wrote wall files.
-bool check_pieces_equal_serial(const Config& c, const std::string& name, double rebalance = 1.2) {
+Groups check_pieces_equal_serial(const Config& c, const std::string& name, double rebalance = 1.2) {
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, rebalance);
   const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
   const fs::path dir = fs::temp_directory_path() / ("sphmol-vtk-" + name + "-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
-  bool walls = false;
+  Groups groups;
   const nlohmann::json split = run_into(c, &partitioner, dir / "split");
   CHECK(split["status"] == "completed");
   comm.barrier();
@@ -62,7 +66,8 @@ bool check_pieces_equal_serial(const Config& c, const std::string& name, double 
       CHECK(a.at("timestep") == b.at("timestep"));
       CHECK(a.at("part") == b.at("part"));
       CHECK(a.at("name") == b.at("name"));
-      walls = walls || b.at("name") == "walls";
+      groups.walls = groups.walls || b.at("name") == "walls";
+      groups.ghosts = groups.ghosts || b.at("name") == "ghosts";
       // fluid_0001.vtp over ranks: fluid_0001.pvtp, with the pieces fluid_0001_r<rank>.vtp.
       const std::string stem = b.at("file").substr(0, b.at("file").size() - 4);
       CHECK(a.at("file") == stem + ".pvtp");
@@ -73,13 +78,13 @@ bool check_pieces_equal_serial(const Config& c, const std::string& name, double 
       const vtk_pieces::Particles whole = vtk_pieces::read_vtp(dir / "serial" / b.at("file"));
       INFO(comm.size() << " ranks, " << a.at("file"));
       CHECK(pieces.pieces == static_cast<std::size_t>(comm.size()));
-      CHECK(whole.values.size() > 0);
+      CHECK(whole.values.size() + whole.unkeyed.size() > 0);
       CHECK(vtk_pieces::difference(pieces, whole) == "");
     }
   }
   comm.barrier();
   if (comm.rank() == 0) fs::remove_all(dir);
-  return walls;
+  return groups;
 }
 
 }  // namespace
@@ -91,9 +96,9 @@ TEST_CASE("distributed run: the VTK pieces of every rank are the serial run's .v
                                  {"discretization.spacing=0.04", "time.t_end=0.06", "output.times=[0.03,0.06]",
                                   "output.plots=false", "output.vtk=true"});
   const bool root = Communicator().rank() == 0;
-  SECTION("the dam break") { CHECK((check_pieces_equal_serial(dam, "dam") || !root)); }
+  SECTION("the dam break") { CHECK((check_pieces_equal_serial(dam, "dam").walls || !root)); }
   SECTION("the dam break, partitioned again at every re-plan") {
-    CHECK((check_pieces_equal_serial(dam, "dam-rebalanced", 1.0) || !root));
+    CHECK((check_pieces_equal_serial(dam, "dam-rebalanced", 1.0).walls || !root));
   }
   // Summation density (a two-radius halo) and wall velocities.
   SECTION("Couette") {
@@ -101,11 +106,28 @@ TEST_CASE("distributed run: the VTK pieces of every rank are the serial run's .v
         load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml",
                     {"discretization.particles_across=20", "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false",
                      "output.vtk=true"}),
-        "couette");
+        "couette").walls;
     CHECK((walls || !root));
   }
   // Further state blocks (energy, smoothing length) as point arrays of the fluid pieces.
   SECTION("a shock tube with the energy equation and variable h") {
     check_pieces_equal_serial(short_shock_tube("sod_1d.yaml", {"output.vtk=true"}), "sod");
+  }
+}
+
+TEST_CASE("distributed run: the ghost pieces of every rank hold the serial run's ghost images", "[parallel][run][vtk][ghost]") {
+  // No-slip mirrors on all four sides, a moving lid, three images at each corner particle: each rank
+  // writes the images of the fluid it owns (not of its halo copies), so the pieces hold every image
+  // of the serial file once. Ghost images carry no id, so they are compared as sorted multisets.
+  const auto cavity = [](const std::string& integrator) {
+    return load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/cavity.yaml",
+                       {"discretization.boundary=ghost", "discretization.wall_model=prescribed",
+                        "discretization.particles_across=20", "time.integrator=" + integrator, "time.t_end=0.1",
+                        "output.times=[0.05,0.1]", "output.plots=false", "output.vtk=true", "output.vtk_ghosts=true"});
+  };
+  const bool root = Communicator().rank() == 0;
+  SECTION("leapfrog") { CHECK((check_pieces_equal_serial(cavity("leapfrog"), "cavity-ghosts").ghosts || !root)); }
+  SECTION("leapfrog, partitioned again at every re-plan") {
+    CHECK((check_pieces_equal_serial(cavity("leapfrog"), "cavity-ghosts-rebalanced", 1.0).ghosts || !root));
   }
 }

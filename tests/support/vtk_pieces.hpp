@@ -2,7 +2,9 @@
 // The particles of a VTK PolyData file (.vtp) or of a parallel one (.pvtp and its pieces), read
 // with the tests' own reader (unit/vtk_appended.hpp), keyed by the `id` array, so that a run's
 // per-rank pieces can be compared with a serial file: the same arrays (names, types, components,
-// in order) and, for every particle, the same values to the bit.
+// in order) and, for every particle, the same values to the bit. Ghost images (id -1) have no key:
+// their rows are compared as a multiset (the pieces split the serial order by owner).
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -24,6 +26,8 @@ struct Declaration {
 struct Particles {
   std::vector<Declaration> arrays;                     // point data, then the points
   std::map<std::int64_t, std::vector<double>> values;  // by id: every array's components in order
+  // Particles with id -1 (ghost images, made anew at every evaluation): compared as a multiset.
+  std::vector<std::vector<double>> unkeyed;
   std::vector<double> time;                            // each file's TimeValue
   std::size_t pieces = 0;
 };
@@ -59,7 +63,8 @@ inline void read_vtp(const std::filesystem::path& file, Particles& into) {
       if (v.size() != n * c) throw std::runtime_error(file.string() + ": array " + a->attr.at("Name") + " has the wrong length");
       row.insert(row.end(), v.begin() + static_cast<long>(k * c), v.begin() + static_cast<long>((k + 1) * c));
     }
-    if (!into.values.emplace(static_cast<std::int64_t>(id[k]), std::move(row)).second)
+    if (id[k] == -1) into.unkeyed.push_back(std::move(row));
+    else if (!into.values.emplace(static_cast<std::int64_t>(id[k]), std::move(row)).second)
       throw std::runtime_error(file.string() + ": particle " + std::to_string(static_cast<long long>(id[k])) + " written twice");
   }
 }
@@ -91,12 +96,32 @@ inline Particles read_pvtp(const std::filesystem::path& file) {
   return p;
 }
 
+// The rows sorted by their values' bits (a total order, so equal multisets sort alike).
+inline std::vector<std::vector<double>> sorted_bits(std::vector<std::vector<double>> rows) {
+  const auto bits = [](const std::vector<double>& r) {
+    std::vector<std::uint64_t> b(r.size());
+    std::memcpy(b.data(), r.data(), r.size() * sizeof(double));
+    return b;
+  };
+  std::sort(rows.begin(), rows.end(), [&](const auto& x, const auto& y) { return bits(x) < bits(y); });
+  return rows;
+}
+
 // "" when a and b hold the same arrays and the same particles with the same values (bits), else
 // what differs first.
 inline std::string difference(const Particles& a, const Particles& b) {
   if (a.arrays != b.arrays) return "other arrays";
   if (a.values.size() != b.values.size())
     return std::to_string(a.values.size()) + " particles against " + std::to_string(b.values.size());
+  if (a.unkeyed.size() != b.unkeyed.size())
+    return std::to_string(a.unkeyed.size()) + " particles with id -1 against " + std::to_string(b.unkeyed.size());
+  const auto ua = sorted_bits(a.unkeyed), ub = sorted_bits(b.unkeyed);
+  std::size_t unkeyed_differing = 0;
+  for (std::size_t k = 0; k < ua.size(); ++k)
+    unkeyed_differing += ua[k].size() != ub[k].size() ||
+                         std::memcmp(ua[k].data(), ub[k].data(), ua[k].size() * sizeof(double)) != 0;
+  if (unkeyed_differing > 0)
+    return std::to_string(unkeyed_differing) + " of the particles with id -1 differ (as sorted multisets)";
   std::size_t differing = 0;
   std::string first;
   for (auto ia = a.values.begin(), ib = b.values.begin(); ia != a.values.end(); ++ia, ++ib) {

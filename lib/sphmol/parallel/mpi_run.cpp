@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
 #include "sphmol/io/double_codec.hpp"
@@ -51,9 +52,18 @@ class MpiRun final : public PartitionedRun<D> {
       p.wall_rows.push_back(row);
       p.wall_ids.push_back(id);
     }
+    // Ghost walls: the images of owned sources (the generator's sources are local fluid rows).
+    if (const auto* ghosts = dynamic_cast<const GhostGenerator<D>*>(p.system->generator())) {
+      std::vector<bool> owned_fluid(p.system->particles().n_fluid, false);
+      for (const std::size_t row : p.fluid_rows) owned_fluid[row] = true;
+      const auto& sources = ghosts->sources();
+      for (std::size_t g = 0; g < sources.size(); ++g)
+        if (sources[g] < owned_fluid.size() && owned_fluid[sources[g]]) p.ghost_rows.push_back(ghosts->base() + g);
+    }
     p.rank = comm_.rank();
     p.ranks = comm_.size();
     p.barrier = [this] { comm_.barrier(); };
+    p.sum = [this](std::uint64_t v) { return comm_.sum(v); };
     return p;
   }
   void barrier() override { comm_.barrier(); }
@@ -186,8 +196,6 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
     why.push_back("discretization.boundary: '" + disc.boundary + "' (wall_particles and ghost run over ranks)");
   if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
   if (disc.reorder) why.push_back("discretization.reorder: true");
-  // The ranks' VTK pieces hold their own fluid particles and walls (run/pvtp_file.hpp), no images.
-  if (config.output.vtk_ghosts) why.push_back("output.vtk_ghosts: true (the ranks' VTK pieces hold fluid and walls only)");
   // Ghost walls are the one generated set the local systems rebuild (distributed_system.hpp).
   if (whole.has_generator() && !dynamic_cast<const GhostGenerator<D>*>(whole.generator()))
     why.push_back("generated particles other than ghost walls");

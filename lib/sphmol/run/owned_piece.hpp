@@ -21,10 +21,16 @@ struct OwnedPiece {
   // index in the whole scene, as the serial output's `id`).
   std::vector<std::size_t> fluid_rows, wall_rows;
   std::vector<std::int64_t> fluid_ids, wall_ids;
+  // The generated ghost images of `system` whose sources are owned rows (in the system's order:
+  // by source, then by mirror set). A rank mirrors its halo fluid too; those images are written by
+  // the halo particles' owners, so every image is written once.
+  std::vector<std::size_t> ghost_rows;
   int rank = 0, ranks = 1;
   // Collective: returns on a rank once every rank has called it (a piece on disk before the
   // collection that names it).
   std::function<void()> barrier;
+  // Collective: the sum of `v` over the ranks (whether any rank has ghost images to write).
+  std::function<std::uint64_t(std::uint64_t)> sum;
 };
 
 }  // namespace sphmol

@@ -257,20 +257,24 @@ void VtkObserver<D>::write_collection(const OutputSink& out) const {
 template <int D>
 void VtkObserver<D>::at_output_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
   if (!out.enabled) return;  // the same on every rank
-  // The groups of the serial output, decided on the whole scene (a rank may own no wall); ghost
-  // walls do not run over ranks.
+  // The groups of the serial output, decided on the whole scene (a rank may own no wall), and for
+  // the ghosts on every rank's images of its own sources (the whole system is not evaluated here).
   std::vector<VtkPart> parts{VtkPart::fluid};
   if (walls_ && vtk_part_size(whole, VtkPart::walls) > 0) parts.push_back(VtkPart::walls);
+  if (ghosts_ && piece.sum(piece.ghost_rows.size()) > 0) parts.push_back(VtkPart::ghosts);
   const auto stem = [&](VtkPart part) {
     char name[48];
     std::snprintf(name, sizeof name, "%s_%04zu", kPartName[static_cast<int>(part)], outputs_);
     return std::string(name);
   };
+  // Ghosts are -1, as in the serial file: they are made anew at every evaluation.
+  const std::vector<std::int64_t> ghost_ids(piece.ghost_rows.size(), -1);
   for (const VtkPart part : parts) {
-    const bool fluid = part == VtkPart::fluid;
+    const bool fluid = part == VtkPart::fluid, ghosts = part == VtkPart::ghosts;
     out.write(vtp_piece_name(stem(part), piece.rank),
-              vtp_piece_file(*piece.system, piece.y, t, part, fluid ? piece.fluid_rows : piece.wall_rows,
-                             fluid ? piece.fluid_ids : piece.wall_ids));
+              vtp_piece_file(*piece.system, piece.y, t, part,
+                             fluid ? piece.fluid_rows : ghosts ? piece.ghost_rows : piece.wall_rows,
+                             fluid ? piece.fluid_ids : ghosts ? ghost_ids : piece.wall_ids));
   }
   // Every piece is on disk before a collection names it.
   piece.barrier();

@@ -17,7 +17,9 @@
 // state first). Each file carries its time as the FieldData array `TimeValue`, which ParaView reads.
 // Over several ranks (at_output_pieces) each rank writes the particles it owns as a piece,
 // `fluid_NNNN_r<rank>.vtp`, and rank 0 a `fluid_NNNN.pvtp` naming the pieces (run/pvtp_file.hpp),
-// which the collection then lists: the same particles and values as the serial file, split.
+// which the collection then lists: the same particles and values as the serial file, split. A
+// rank's ghost piece holds the images of the fluid particles it owns (not of its halo copies), so
+// the pieces hold every serial image once, each piece in the serial order of its sources.
 #include <cstdint>
 #include <string>
 #include <vector>
