@@ -161,3 +161,53 @@ TEST_CASE("fixed-point dot product replaces a serial vector's and its clones'", 
   N_VDestroy(a);
   SUNContext_Free(&ctx);
 }
+
+namespace {
+
+// The grid sum as the definition states it: each term scaled by ldexp, truncated to a 128-bit
+// integer, summed modulo 2^128, cut into the three 48-bit chunks.
+FixedPointChunks reference_grid_sum(const std::vector<double>& terms, int shift) {
+  unsigned __int128 sum = 0;
+  for (const double t : terms) sum += static_cast<unsigned __int128>(static_cast<__int128>(std::ldexp(t, shift)));
+  const std::uint64_t chunk = (std::uint64_t{1} << 48) - 1;
+  return {static_cast<std::uint64_t>(sum) & chunk, static_cast<std::uint64_t>(sum >> 48) & chunk,
+          static_cast<std::uint64_t>(sum >> 96)};
+}
+
+}  // namespace
+
+TEST_CASE("fixed-point sums equal the ldexp and 128-bit definition at every scale", "[time][norm]") {
+  // The terms are x_i y_i with y_i = 1 (and squares (x_i w_i)^2 with w_i = 1): decades from the
+  // subnormals to the top of the double range, signs mixed, more terms than one 64-bit block holds.
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> mantissa(1.0, 2.0);
+  std::uniform_int_distribution<int> sign(0, 1);
+  const std::size_t n = 40000;
+  for (const int top : {1000, 300, 95, 40, 0, -60, -500, -900, -1000, -1070}) {
+    // Exponents within 120 of the top (some terms fall below the grid) and a few far below.
+    std::uniform_int_distribution<int> e(std::max(top - 120, -1074), top);
+    std::vector<double> x(n), ones(n, 1.0), terms(n), squares(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int k = i % 97 == 0 ? std::max(top - 400, -1074) : e(rng);
+      x[i] = (sign(rng) ? 1.0 : -1.0) * std::ldexp(mantissa(rng), k);
+      if (x[i] == 0.0 || !std::isfinite(x[i])) x[i] = std::ldexp(1.0, top);
+      terms[i] = x[i] * ones[i];
+    }
+    // Blocks full of the largest value with one sign: the 64-bit block sums are at their widest (more
+    // than 2^15 such terms would overflow one 64-bit sum).
+    for (std::size_t i = 0; i < 36000; ++i) x[i] = terms[i] = std::ldexp(1.999, top);
+    const double largest = largest_product(x.data(), ones.data(), n);
+    const int shift = fixed_point_shift(largest);
+    INFO("top exponent " << top << ", shift " << shift);
+    CHECK(fixed_point_products(x.data(), ones.data(), n, shift) == reference_grid_sum(terms, shift));
+    if (top <= 500 && top >= -500) {
+      std::vector<double> r(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        r[i] = std::sqrt(std::abs(x[i]));
+        squares[i] = r[i] * r[i];
+      }
+      const int s2 = fixed_point_shift(largest_weighted_square(r.data(), ones.data(), n));
+      CHECK(fixed_point_squares(r.data(), ones.data(), n, s2) == reference_grid_sum(squares, s2));
+    }
+  }
+}

@@ -1,5 +1,6 @@
 #include "sphmol/time/fixed_point_norm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -31,13 +32,41 @@ void check_length(std::size_t n) {
   if (static_cast<double>(n) >= kMaxLength) throw std::length_error("fixed-point sum: more than 2^31 entries");
 }
 
-// The terms term(i) on the grid of `shift`, truncated toward zero and summed modulo 2^128: ldexp by a
-// power of two is exact (but for terms that fall below the smallest double), so the same term gives
-// the same integer wherever it is added.
+// The terms term(i) on the grid of `shift`, truncated toward zero and summed modulo 2^128.
+//
+// Each scaled term v = term(i) 2^shift (|v| < 2^96) is formed by one or two multiplications by powers
+// of two, exact as ldexp is (scaling up never rounds below the overflow the grid excludes; scaling
+// down rounds only results below the smallest normal double, which truncate to 0 as ldexp's do).
+// Its integer part is then split exactly in doubles, trunc(v) = a 2^48 + b with a = trunc(v 2^-48)
+// and b = trunc(v - a 2^48): v 2^-48 and a 2^48 are exact, and v - a 2^48 is a multiple of v's ulp
+// (at most 2^43) below 2^48 in magnitude, so it is exact too. |a|, |b| < 2^48 convert to 64-bit
+// integers in one instruction each, where a double -> 128-bit conversion and ldexp are library calls
+// (they were a third of the instructions of arkode_imex on Couette, docs/performance.md). a and b are
+// summed in 64-bit integers over blocks of 2^14 terms (below 2^62 in magnitude, so their modular sums
+// are the exact sums) and the blocks in 128 bits: the same integer, modulo 2^128, as summing
+// trunc(ldexp(term(i), shift)) one by one.
 template <class Term>
 FixedPointChunks grid_sum(std::size_t n, int shift, Term term) {
-  unsigned __int128 sum = 0;
-  for (std::size_t i = 0; i < n; ++i) sum += static_cast<unsigned __int128>(static_cast<__int128>(std::ldexp(term(i), shift)));
+  // shift lies in [-928, 1169] (fixed_point_shift of a finite positive double): at most 2^1000 at once.
+  const int first = std::min(shift, 1000);
+  const double s1 = std::ldexp(1.0, first), s2 = std::ldexp(1.0, shift - first);
+  constexpr double kDown = 0x1p-48, kUp = 0x1p48;
+  constexpr std::size_t kBlock = std::size_t{1} << 14;
+  __int128 high = 0, low = 0;
+  for (std::size_t start = 0; start < n; start += kBlock) {
+    const std::size_t end = std::min(n, start + kBlock);
+    std::uint64_t h = 0, l = 0;  // modular sums of the block's a and b (exact: below 2^62)
+    for (std::size_t i = start; i < end; ++i) {
+      const double v = term(i) * s1 * s2;
+      const double a = std::trunc(v * kDown);
+      const double b = std::trunc(v - a * kUp);
+      h += static_cast<std::uint64_t>(static_cast<std::int64_t>(a));
+      l += static_cast<std::uint64_t>(static_cast<std::int64_t>(b));
+    }
+    high += static_cast<std::int64_t>(h);
+    low += static_cast<std::int64_t>(l);
+  }
+  const unsigned __int128 sum = (static_cast<unsigned __int128>(high) << 48) + static_cast<unsigned __int128>(low);
   return {static_cast<std::uint64_t>(sum) & kChunk, static_cast<std::uint64_t>(sum >> 48) & kChunk,
           static_cast<std::uint64_t>(sum >> 96)};
 }
@@ -49,15 +78,29 @@ unsigned __int128 joined(const FixedPointChunks& c) {
 
 }  // namespace
 
-double largest_weighted_square(const double* x, const double* w, std::size_t n) {
+namespace {
+
+// The largest term and whether every term is finite, without an early exit, so that the loop
+// vectorises (a NaN fails t <= max).
+template <class Term>
+double largest_term(std::size_t n, Term term) {
   double largest = 0.0;
+  bool finite = true;
   for (std::size_t i = 0; i < n; ++i) {
-    const double p = x[i] * w[i];
-    const double t = p * p;
-    if (!(t <= std::numeric_limits<double>::max())) return std::numeric_limits<double>::infinity();
-    largest = std::max(largest, t);
+    const double t = term(i);
+    finite &= t <= std::numeric_limits<double>::max();
+    largest = t > largest ? t : largest;
   }
-  return largest;
+  return finite ? largest : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+double largest_weighted_square(const double* x, const double* w, std::size_t n) {
+  return largest_term(n, [&](std::size_t i) {
+    const double p = x[i] * w[i];
+    return p * p;
+  });
 }
 
 int fixed_point_shift(double largest) { return kGridBits - 1 - std::ilogb(largest); }
@@ -83,13 +126,7 @@ double fixed_point_wrms(const double* x, const double* w, std::size_t n) {
 }
 
 double largest_product(const double* x, const double* y, std::size_t n) {
-  double largest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = std::abs(x[i] * y[i]);
-    if (!(t <= std::numeric_limits<double>::max())) return std::numeric_limits<double>::infinity();
-    largest = std::max(largest, t);
-  }
-  return largest;
+  return largest_term(n, [&](std::size_t i) { return std::abs(x[i] * y[i]); });
 }
 
 FixedPointChunks fixed_point_products(const double* x, const double* y, std::size_t n, int shift) {

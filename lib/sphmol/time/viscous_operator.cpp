@@ -85,18 +85,32 @@ void ViscousOperator::apply(const double* v, double* out) const {
     v = ext_.data();
     stride = stride_;
   }
+  if (n == 0) return;
+  switch (D) {
+    case 1: apply_rows<1>(v, stride, out); break;
+    case 2: apply_rows<2>(v, stride, out); break;
+    case 3: apply_rows<3>(v, stride, out); break;
+    default: throw std::logic_error("ViscousOperator: 1 to 3 components");
+  }
+}
+
+// The D components' sums of a row advance together: each keeps its own order of additions (the
+// same bits as one component at a time), but the D chains of dependent additions overlap, and each
+// entry's column and coefficient are loaded once.
+template <int D>
+void ViscousOperator::apply_rows(const double* v, std::size_t stride, double* out) const {
+  const std::size_t n = n_;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t s = state_[i];
     const std::uint32_t* c = col_.data() + start_[i];
     const double* a = coef_.data() + start_[i];
     const std::uint32_t m = count_[i];
-    for (int d = 0; d < D; ++d) {
-      const double* vd = v + static_cast<std::size_t>(d) * stride;
-      double sum = 0.0;
-      for (std::uint32_t k = 0; k < m; ++k) sum += a[k] * vd[c[k]];
-      out[static_cast<std::size_t>(d) * n + s] = diag_[i] * vd[s] - sum;
-    }
+    double sum[D] = {};
+    for (std::uint32_t k = 0; k < m; ++k)
+      for (int d = 0; d < D; ++d) sum[d] += a[k] * v[static_cast<std::size_t>(d) * stride + c[k]];
+    for (int d = 0; d < D; ++d)
+      out[static_cast<std::size_t>(d) * n + s] = diag_[i] * v[static_cast<std::size_t>(d) * stride + s] - sum[d];
   }
 }
 

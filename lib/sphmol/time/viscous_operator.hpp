@@ -66,6 +66,9 @@ class ViscousOperator {
   std::size_t off_diagonal_entries() const;
 
  private:
+  template <int D>
+  void apply_rows(const double* v, std::size_t stride, double* out) const;
+
   std::size_t n_ = 0;
   int dims_ = 0;
   std::vector<std::uint32_t> start_, count_, state_;  // per workspace row: first entry, entries, state index
