@@ -1,6 +1,7 @@
 #include "sphmol/time/fixed_point_norm.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -40,7 +41,7 @@ void check_length(std::size_t n) {
 // Its integer part is then split exactly in doubles, trunc(v) = a 2^48 + b with a = trunc(v 2^-48)
 // and b = trunc(v - a 2^48): v 2^-48 and a 2^48 are exact, and v - a 2^48 is a multiple of v's ulp
 // (at most 2^43) below 2^48 in magnitude, so it is exact too. |a|, |b| < 2^48 convert to 64-bit
-// integers in one instruction each, where a double -> 128-bit conversion and ldexp are library calls
+// integers exactly (below), where a double -> 128-bit conversion and ldexp are library calls
 // (they were a third of the instructions of arkode_imex on Couette, docs/performance.md). a and b are
 // summed in 64-bit integers over blocks of 2^14 terms (below 2^62 in magnitude, so their modular sums
 // are the exact sums) and the blocks in 128 bits: the same integer, modulo 2^128, as summing
@@ -50,7 +51,8 @@ FixedPointChunks grid_sum(std::size_t n, int shift, Term term) {
   // shift lies in [-928, 1169] (fixed_point_shift of a finite positive double): at most 2^1000 at once.
   const int first = std::min(shift, 1000);
   const double s1 = std::ldexp(1.0, first), s2 = std::ldexp(1.0, shift - first);
-  constexpr double kDown = 0x1p-48, kUp = 0x1p48;
+  constexpr double kDown = 0x1p-48, kUp = 0x1p48, kMagic = 0x1.8p52;
+  constexpr std::uint64_t kMagicBits = std::bit_cast<std::uint64_t>(kMagic);
   constexpr std::size_t kBlock = std::size_t{1} << 14;
   __int128 high = 0, low = 0;
   for (std::size_t start = 0; start < n; start += kBlock) {
@@ -60,8 +62,11 @@ FixedPointChunks grid_sum(std::size_t n, int shift, Term term) {
       const double v = term(i) * s1 * s2;
       const double a = std::trunc(v * kDown);
       const double b = std::trunc(v - a * kUp);
-      h += static_cast<std::uint64_t>(static_cast<std::int64_t>(a));
-      l += static_cast<std::uint64_t>(static_cast<std::int64_t>(b));
+      // a + 1.5 2^52 is exact for an integer |a| < 2^51 and lies in [2^52, 2^53), where the bit
+      // pattern counts in units of 1: its pattern minus the constant's is a, modulo 2^64. Unlike a
+      // double -> int64 conversion this vectorises with AVX2.
+      h += std::bit_cast<std::uint64_t>(a + kMagic) - kMagicBits;
+      l += std::bit_cast<std::uint64_t>(b + kMagic) - kMagicBits;
     }
     high += static_cast<std::int64_t>(h);
     low += static_cast<std::int64_t>(l);
@@ -80,24 +85,28 @@ unsigned __int128 joined(const FixedPointChunks& c) {
 
 namespace {
 
-// The largest term and whether every term is finite, without an early exit, so that the loop
-// vectorises (a NaN fails t <= max).
+// The largest term (every term is +0, positive or NaN), and +infinity if any is not finite. The
+// terms' bit patterns as signed 64-bit integers order as the values do, and every pattern from
+// +infinity up, or with the sign bit set (a NaN's may be), is not finite: an integer maximum and an
+// OR of the patterns, which vectorise where a maximum of doubles (NaN-aware) does not.
 template <class Term>
 double largest_term(std::size_t n, Term term) {
-  double largest = 0.0;
-  bool finite = true;
+  std::int64_t largest = 0;
+  std::uint64_t any = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double t = term(i);
-    finite &= t <= std::numeric_limits<double>::max();
-    largest = t > largest ? t : largest;
+    const std::int64_t bits = std::bit_cast<std::int64_t>(term(i));
+    largest = bits > largest ? bits : largest;
+    any |= static_cast<std::uint64_t>(bits);
   }
-  return finite ? largest : std::numeric_limits<double>::infinity();
+  constexpr std::int64_t kMaxFinite = std::bit_cast<std::int64_t>(std::numeric_limits<double>::max());
+  if ((any >> 63) != 0 || largest > kMaxFinite) return std::numeric_limits<double>::infinity();
+  return std::bit_cast<double>(largest);
 }
 
 }  // namespace
 
 double largest_weighted_square(const double* x, const double* w, std::size_t n) {
-  return largest_term(n, [&](std::size_t i) {
+  return largest_term(n, [x, w](std::size_t i) {
     const double p = x[i] * w[i];
     return p * p;
   });
@@ -106,7 +115,7 @@ double largest_weighted_square(const double* x, const double* w, std::size_t n) 
 int fixed_point_shift(double largest) { return kGridBits - 1 - std::ilogb(largest); }
 
 FixedPointChunks fixed_point_squares(const double* x, const double* w, std::size_t n, int shift) {
-  return grid_sum(n, shift, [&](std::size_t i) {
+  return grid_sum(n, shift, [x, w](std::size_t i) {
     const double p = x[i] * w[i];
     return p * p;
   });
@@ -126,11 +135,11 @@ double fixed_point_wrms(const double* x, const double* w, std::size_t n) {
 }
 
 double largest_product(const double* x, const double* y, std::size_t n) {
-  return largest_term(n, [&](std::size_t i) { return std::abs(x[i] * y[i]); });
+  return largest_term(n, [x, y](std::size_t i) { return std::abs(x[i] * y[i]); });
 }
 
 FixedPointChunks fixed_point_products(const double* x, const double* y, std::size_t n, int shift) {
-  return grid_sum(n, shift, [&](std::size_t i) { return x[i] * y[i]; });
+  return grid_sum(n, shift, [x, y](std::size_t i) { return x[i] * y[i]; });
 }
 
 double fixed_point_sum(const FixedPointChunks& c, int shift) {

@@ -5,6 +5,7 @@
 
 #include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/ode_system.hpp"
+#include "sphmol/time/vector_ops.hpp"
 
 namespace sphmol {
 
@@ -13,6 +14,7 @@ N_Vector make_state_vector(const OdeSystem& sys, double* y, int threads, SUNCont
   const auto n = static_cast<sunindextype>(sys.size());
   N_Vector v = threads > 1 ? N_VMake_OpenMP(n, y, threads, ctx) : N_VMake_Serial(n, y, ctx);
   use_fixed_point_norm(v);
+  if (threads <= 1) use_compiled_linear_ops(v);
   return v;
 }
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "sphmol/time/fixed_point_norm.hpp"
+#include "sphmol/time/vector_ops.hpp"
 
 namespace sphmol {
 
@@ -47,6 +48,7 @@ void ViscousSolve::resize(const ViscousOperator& op) {
   } else {
     x_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
     use_fixed_point_dot(x_);
+    use_compiled_linear_ops(x_);
   }
   b_ = N_VClone(x_);
   w_ = N_VClone(x_);
