@@ -95,12 +95,17 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   // numbers, so in 2D each row adds one 256-bit load per pair into four running sums at once.
   std::size_t pair_record_size() const override { return kRecord; }
   bool pair_records_now() const override { return (uniform() & kMassUniform) != 0; }
-  void pair_records(Workspace<D>& w, std::size_t i, const std::uint32_t* j, std::uint32_t n, const KernelPass<D>& kernel,
-                    double* rec) const override {
-    const PairGeometry<D>& g = kernel.geometry();
+  void pair_records(Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off, const std::uint32_t* up,
+                    const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel,
+                    double* out) const override {
     const bool same_h = (uniform() & kSmoothingUniform) != 0;
-    if (g.periodic) same_h ? records<true, true>(w, i, j, n, kernel, rec) : records<false, true>(w, i, j, n, kernel, rec);
-    else same_h ? records<true, false>(w, i, j, n, kernel, rec) : records<false, false>(w, i, j, n, kernel, rec);
+    if (kernel.geometry().periodic) {
+      if (same_h) record_rows<true, true>(w, i0, i1, off, up, vj, first, kernel, out);
+      else record_rows<false, true>(w, i0, i1, off, up, vj, first, kernel, out);
+    } else {
+      if (same_h) record_rows<true, false>(w, i0, i1, off, up, vj, first, kernel, out);
+      else record_rows<false, false>(w, i0, i1, off, up, vj, first, kernel, out);
+    }
   }
   void sum_pair_records(Workspace<D>& w, std::size_t i, const std::uint32_t* twin, std::uint32_t n_lower,
                         const double* upper, std::uint32_t n_upper, const double* all) const override {
@@ -227,6 +232,14 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     }
   }
 
+  template <bool SameH, bool Periodic>
+  void record_rows(const Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off, const std::uint32_t* up,
+                   const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel, double* out) const {
+    const PairGeometry<D>& g = kernel.geometry();
+    for (std::size_t i = i0; i < i1; ++i)
+      records<SameH, Periodic>(w, i, vj + up[i], off[i + 1] - up[i], kernel, g, out + static_cast<std::size_t>(first[i]) * kRecord);
+  }
+
   // Row i's upper pairs j[0 .. n) into records, in blocks: the neighbours' data (gather_neighbours),
   // their separations (Periodic: minimum image; the arithmetic of PairGeometry::separation) and F from
   // the kernel, then the arithmetic for both directions, then the stores. The loops run over whole
@@ -234,8 +247,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   // vectorised loops need no scalar remainder: a row has about ten upper pairs.
   template <bool SameH, bool Periodic>
   void records(const Workspace<D>& w, std::size_t i, const std::uint32_t* j, std::uint32_t n, const KernelPass<D>& kernel,
-               double* rec) const {
-    const PairGeometry<D>& g = kernel.geometry();
+               const PairGeometry<D>& g, double* rec) const {
     // The records were last touched an evaluation ago and have left the cache, and the stores at the
     // end waited for their lines. Rows' records follow each other in memory, so ask for the lines of
     // the rows a few ahead now (a row writes about 10 lines): they arrive while this row computes.
