@@ -66,8 +66,8 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   }
   // The packed neighbour data of this evaluation, one per particle (after prepare()).
   const std::vector<PackedNeighbour<D>>& packed() const { return pack_; }
-  // The row in blocks of pairs, each in three stages: (1) gather the neighbours' data into contiguous
-  // arrays (indexed loads, which do not vectorise), (2) every pair's arithmetic over those arrays with
+  // The row in blocks of pairs, each in three stages: (1) gather the neighbours' packed data into
+  // contiguous arrays (physics/packed_neighbours.hpp), (2) every pair's arithmetic over those arrays with
   // no index and no branch, which vectorises (at x86-64-v3 one vdivpd serves four pairs' Pi_ij),
   // (3) the sums, in pair order. The arithmetic and the order of the additions are those of a single
   // loop over the pairs, so the result is the same bit for bit.
@@ -163,9 +163,9 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
 
   // Stage (2), every pair's arithmetic for pairs [0, n) of row i, over contiguous arrays with no index
   // and no branch, which vectorises (at x86-64-v3 one vdivpd serves four pairs' Pi_ij): the neighbour
-  // data in nb (stage (1), gather_neighbours: indexed loads, which do not vectorise), with mj (hj) the
-  // neighbours' masses (smoothing lengths) unless SameMass (SameH), into pc (continuity), ps
-  // (momentum, before x_ij), pd (diffusion i<-j) and, with Reverse, pr (diffusion j<-i).
+  // data in nb (stage (1), gather_neighbours), with mj (hj) the neighbours' masses (smoothing lengths)
+  // unless SameMass (SameH), into pc (continuity), ps (momentum, before x_ij), pd (diffusion i<-j)
+  // and, with Reverse, pr (diffusion j<-i).
   template <bool SameMass, bool SameH, bool Reverse>
   void arithmetic(const Workspace<D>& w, std::size_t i, const Block& nb, const double* mj, const double* hj,
                   const double* const (&dx)[D], const double* F, std::uint32_t n, double* pc, double* ps, double* pd,
@@ -197,7 +197,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     for (std::uint32_t k = 0, lanes = gathered_lanes(n); k < lanes; ++k) out[k] = a[j[k < n ? k : n - 1]];
   }
 
-  // The row in blocks of pairs (block() above), then (3) the sums, in pair order. The arithmetic and
+  // The row in blocks of pairs (arithmetic() above), then (3) the sums, in pair order. The arithmetic and
   // the order of the additions are those of a single loop over the pairs, so the result is the same
   // bit for bit.
   // When every particle has the same mass (or the same h), the row reads m_i (h_i) for each pair
