@@ -10,6 +10,7 @@
 // order differs from running them apart (round-off; tests/integration/test_fused_pair_passes.cpp).
 // Chosen by the assembly when exactly these terms meet (discretization.combine_terms).
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +18,7 @@
 
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/physics/density_diffusion.hpp"
+#include "sphmol/physics/packed_neighbours.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
@@ -37,26 +39,35 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   void prepare(Workspace<D>& w) const override {
 #pragma omp single
     {
-      q_.resize(w.n);
-      if constexpr (WithDiffusion) vol_.resize(w.n);
+      pack_.resize(w.n);
       uniform_.assign(static_cast<std::size_t>(omp_get_num_threads()), kMassUniform | kSmoothingUniform);
     }
     const auto& m = w.particles->mass;
     const std::size_t nf = w.n_fluid;
     const double m0 = w.n > 0 ? m[0] : 0.0, h0 = w.n > 0 ? w.hs[0] : 0.0;
     bool same_m = true, same_h = true;
+    PackedNeighbour<D>* const pk = pack_.data();
 #pragma omp for schedule(static) nowait
     for (std::size_t i = 0; i < w.n; ++i) {
-      q_[i] = w.p[i] / (w.rho[i] * w.rho[i]);
-      if constexpr (WithDiffusion) vol_[i] = i < nf ? m[i] / w.rho[i] : 0.0;  // delta-SPH: fluid neighbours only
+      PackedNeighbour<D>& p = pk[i];
+      for (int d = 0; d < D; ++d) {
+        p.x[d] = w.x[d][i];
+        p.v[d] = w.v[d][i];
+      }
+      p.rho = w.rho[i];
+      p.q = w.p[i] / (w.rho[i] * w.rho[i]);
+      p.c = w.c[i];
+      p.vol = WithDiffusion && i < nf ? m[i] / w.rho[i] : 0.0;  // delta-SPH: fluid neighbours only
       same_m = same_m && m[i] == m0;
       same_h = same_h && w.hs[i] == h0;
     }
     uniform_[static_cast<std::size_t>(omp_get_thread_num())] = (same_m ? kMassUniform : 0u) | (same_h ? kSmoothingUniform : 0u);
 #pragma omp barrier
   }
-  // The row in blocks of pairs, each in three stages: (1) gather the neighbours' data into contiguous
-  // arrays (indexed loads, which do not vectorise), (2) every pair's arithmetic over those arrays with
+  // The packed neighbour data of this evaluation, one per particle (after prepare()).
+  const std::vector<PackedNeighbour<D>>& packed() const { return pack_; }
+  // The row in blocks of pairs, each in three stages: (1) gather the neighbours' packed data into
+  // contiguous arrays (physics/packed_neighbours.hpp), (2) every pair's arithmetic over those arrays with
   // no index and no branch, which vectorises (at x86-64-v3 one vdivpd serves four pairs' Pi_ij),
   // (3) the sums, in pair order. The arithmetic and the order of the additions are those of a single
   // loop over the pairs, so the result is the same bit for bit.
@@ -78,37 +89,67 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   // sums q_i + q_j, c_i + c_j, rho_i + rho_j does not matter, and v_ji.x_ji, r^2 and F are the same
   // numbers as v_ij.x_ij, r^2 and F) are the same for both directions up to the sign of x_ij, exactly;
   // the diffusion term 2 (rho_i - rho_j) F V_j is not symmetric and is recorded both ways.
-  // Record: [m v.x F, m (q_i + q_j + Pi) F x_ij (D), diffusion i<-j, diffusion j<-i].
+  // Record of the pair i-j, i < j, written by row i: [diffusion j<-i, m v.x F, m (q_i + q_j + Pi) F x_ij
+  // (D), diffusion i<-j] (without diffusion: [m v.x F, m (..) F x_ij (D)]). The order puts what row j
+  // adds (its diffusion first) and what row i adds (its diffusion last) each in D + 2 consecutive
+  // numbers, so in 2D each row adds one 256-bit load per pair into four running sums at once.
   std::size_t pair_record_size() const override { return kRecord; }
   bool pair_records_now() const override { return (uniform() & kMassUniform) != 0; }
-  void pair_records(Workspace<D>& w, std::size_t i, const std::uint32_t* j, std::uint32_t n, const KernelPass<D>& kernel,
-                    double* rec) const override {
-    const PairGeometry<D>& g = kernel.geometry();
+  void pair_records(Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off, const std::uint32_t* up,
+                    const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel,
+                    double* out) const override {
     const bool same_h = (uniform() & kSmoothingUniform) != 0;
-    if (g.periodic) same_h ? records<true, true>(w, i, j, n, kernel, rec) : records<false, true>(w, i, j, n, kernel, rec);
-    else same_h ? records<true, false>(w, i, j, n, kernel, rec) : records<false, false>(w, i, j, n, kernel, rec);
+    if (kernel.geometry().periodic) {
+      if (same_h) record_rows<true, true>(w, i0, i1, off, up, vj, first, kernel, out);
+      else record_rows<false, true>(w, i0, i1, off, up, vj, first, kernel, out);
+    } else {
+      if (same_h) record_rows<true, false>(w, i0, i1, off, up, vj, first, kernel, out);
+      else record_rows<false, false>(w, i0, i1, off, up, vj, first, kernel, out);
+    }
   }
   void sum_pair_records(Workspace<D>& w, std::size_t i, const std::uint32_t* twin, std::uint32_t n_lower,
                         const double* upper, std::uint32_t n_upper, const double* all) const override {
+#if defined(__AVX2__)
+    if constexpr (D == 2 && WithDiffusion) {
+      // The four sums of the scalar loops below in the lanes of one vector, each lane adding the same
+      // numbers in the same order (a - r is a + (-r) exactly, and the sign flip is exact). Lower pairs
+      // add [diffusion j<-i, cont, a_0, a_1] = record[0, 4); upper pairs [cont, a_0, a_1, diffusion]
+      // = record[1, 5) with the momentum lanes negated; the lanes are rotated in between.
+      __m256d s = _mm256_setzero_pd();
+      for (std::uint32_t k = 0; k < n_lower; ++k) s = _mm256_add_pd(s, _mm256_loadu_pd(all + static_cast<std::size_t>(twin[k]) * kRecord));
+      s = _mm256_permute4x64_pd(s, 0x39);  // (diff, cont, a0, a1) -> (cont, a0, a1, diff)
+      const __m256d flip = _mm256_set_pd(0.0, -0.0, -0.0, 0.0);
+      for (std::uint32_t k = 0; k < n_upper; ++k)
+        s = _mm256_add_pd(s, _mm256_xor_pd(_mm256_loadu_pd(upper + static_cast<std::size_t>(k) * kRecord + 1), flip));
+      alignas(32) double lane[4];
+      _mm256_store_pd(lane, s);
+      const double a[D] = {lane[1], lane[2]};
+      return finish(w, i, lane[0], lane[3], a);
+    }
+#endif
     double cont = 0.0, diff = 0.0, a[D] = {};
     // Lower pairs, recorded by the other particle: x_ji = -x_ij, so a - (-m(..)F x_ij) = a + record.
     for (std::uint32_t k = 0; k < n_lower; ++k) {
       const double* rk = all + static_cast<std::size_t>(twin[k]) * kRecord;
-      cont += rk[0];
-      for (int d = 0; d < D; ++d) a[d] += rk[1 + d];
-      if constexpr (WithDiffusion) diff += rk[2 + D];
+      cont += rk[kCont];
+      for (int d = 0; d < D; ++d) a[d] += rk[kMomentum + d];
+      if constexpr (WithDiffusion) diff += rk[kDiffusionLower];
     }
     for (std::uint32_t k = 0; k < n_upper; ++k) {
       const double* rk = upper + static_cast<std::size_t>(k) * kRecord;
-      cont += rk[0];
-      for (int d = 0; d < D; ++d) a[d] -= rk[1 + d];
-      if constexpr (WithDiffusion) diff += rk[1 + D];
+      cont += rk[kCont];
+      for (int d = 0; d < D; ++d) a[d] -= rk[kMomentum + d];
+      if constexpr (WithDiffusion) diff += rk[kDiffusionUpper];
     }
     finish(w, i, cont, diff, a);
   }
 
  private:
   static constexpr std::size_t kRecord = WithDiffusion ? 3 + D : 1 + D;
+  // Where each number sits in a record (the layout above): the diffusion the larger index receives,
+  // the continuity term, the momentum term, the diffusion the smaller index receives.
+  static constexpr std::size_t kDiffusionLower = 0, kCont = WithDiffusion ? 1 : 0, kMomentum = kCont + 1,
+                               kDiffusionUpper = kMomentum + D;
   static constexpr std::size_t kPrefetchAhead = 2048;  // bytes of records ahead of the row being written
 
   unsigned uniform() const {
@@ -117,54 +158,46 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     return u;
   }
 
-  // The per-pair numbers of pairs [k0, k0 + nb) of row i into pc (continuity), ps (momentum, before
-  // x_ij), pd (diffusion i<-j) and, with Reverse, pr (diffusion j<-i): stage (1) gathers the
-  // neighbours' data into contiguous arrays (indexed loads, which do not vectorise), stage (2) does
-  // every pair's arithmetic over those arrays with no index and no branch, which vectorises (at
-  // x86-64-v3 one vdivpd serves four pairs' Pi_ij).
+  static constexpr std::uint32_t kBlock = 64;  // pairs per block: the block's arrays stay in L1
+  using Block = NeighbourBlock<D, kBlock>;
+
+  // Stage (2), every pair's arithmetic for pairs [0, n) of row i, over contiguous arrays with no index
+  // and no branch, which vectorises (at x86-64-v3 one vdivpd serves four pairs' Pi_ij): the neighbour
+  // data in nb (stage (1), gather_neighbours), with mj (hj) the neighbours' masses (smoothing lengths)
+  // unless SameMass (SameH), into pc (continuity), ps (momentum, before x_ij), pd (diffusion i<-j)
+  // and, with Reverse, pr (diffusion j<-i).
   template <bool SameMass, bool SameH, bool Reverse>
-  void block(const Workspace<D>& w, std::size_t i, const PairRow<D>& r, std::uint32_t k0, std::uint32_t nb, double* pc,
-             double* ps, double* pd, double* pr) const {
-    const double* m = w.particles->mass.data();
-    const double* q = q_.data();
-    const double* vol = vol_.data();
-    const double ri = w.rho[i], qi = q[i], hi = w.hs[i], ci = w.c[i], mi = m[i];
-    const double voli = WithDiffusion && Reverse ? vol[i] : 0.0;
+  void arithmetic(const Workspace<D>& w, std::size_t i, const Block& nb, const double* mj, const double* hj,
+                  const double* const (&dx)[D], const double* F, std::uint32_t n, double* pc, double* ps, double* pd,
+                  double* pr) const {
+    const PackedNeighbour<D>& pi = pack_[i];
+    const double ri = pi.rho, qi = pi.q, hi = w.hs[i], ci = pi.c, mi = w.particles->mass[i];
+    const double voli = WithDiffusion && Reverse ? pi.vol : 0.0;
     double vi[D];
-    for (int d = 0; d < D; ++d) vi[d] = w.v[d][i];
-    const std::uint32_t* jk = r.j + k0;
-    const double* F = r.F + k0;
-    const double* dx[D];
-    for (int d = 0; d < D; ++d) dx[d] = r.dx[d] + k0;
-    alignas(32) double mj[kBlock], rj[kBlock], qj[kBlock], hj[kBlock], cj[kBlock], volj[kBlock], vj[D][kBlock];
-    for (std::uint32_t k = 0; k < nb; ++k) {
-      const std::uint32_t j = jk[k];
-      if constexpr (!SameMass) mj[k] = m[j];
-      rj[k] = w.rho[j];
-      qj[k] = q[j];
-      if constexpr (!SameH) hj[k] = w.hs[j];
-      cj[k] = w.c[j];
-      if constexpr (WithDiffusion) volj[k] = vol[j];
-      for (int d = 0; d < D; ++d) vj[d][k] = w.v[d][j];
-    }
-    for (std::uint32_t k = 0; k < nb; ++k) {
+    for (int d = 0; d < D; ++d) vi[d] = pi.v[d];
+    for (std::uint32_t k = 0; k < n; ++k) {
       double vx = 0.0, r2 = 0.0;
       for (int d = 0; d < D; ++d) {
-        vx += (vi[d] - vj[d][k]) * dx[d][k];
+        vx += (vi[d] - nb.v[d][k]) * dx[d][k];
         r2 += dx[d][k] * dx[d][k];
       }
       const double mk = SameMass ? mi : mj[k], hij = SameH ? hi : 0.5 * (hi + hj[k]);
       pc[k] = mk * vx * F[k];
       if constexpr (WithDiffusion) {
-        pd[k] = density_diffusion_pair(ri, rj[k], F[k], volj[k]);
-        if constexpr (Reverse) pr[k] = density_diffusion_pair(rj[k], ri, F[k], voli);
+        pd[k] = density_diffusion_pair(ri, nb.rho[k], F[k], nb.vol[k]);
+        if constexpr (Reverse) pr[k] = density_diffusion_pair(nb.rho[k], ri, F[k], voli);
       }
-      const double pij = pi_(vx, r2, hij, 0.5 * (ci + cj[k]), 0.5 * (ri + rj[k]));
-      ps[k] = mk * (qi + qj[k] + pij) * F[k];
+      const double pij = pi_(vx, r2, hij, 0.5 * (ci + nb.c[k]), 0.5 * (ri + nb.rho[k]));
+      ps[k] = mk * (qi + nb.q[k] + pij) * F[k];
     }
   }
+  // The neighbours' values of a per-particle array for lanes [0, gathered_lanes(n)) (padded as
+  // gather_neighbours).
+  static void gather_values(const double* a, const std::uint32_t* j, std::uint32_t n, double* out) {
+    for (std::uint32_t k = 0, lanes = gathered_lanes(n); k < lanes; ++k) out[k] = a[j[k < n ? k : n - 1]];
+  }
 
-  // The row in blocks of pairs (block() above), then (3) the sums, in pair order. The arithmetic and
+  // The row in blocks of pairs (arithmetic() above), then (3) the sums, in pair order. The arithmetic and
   // the order of the additions are those of a single loop over the pairs, so the result is the same
   // bit for bit.
   // When every particle has the same mass (or the same h), the row reads m_i (h_i) for each pair
@@ -182,8 +215,15 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   void add_row(const Workspace<D>& w, std::size_t i, const PairRow<D>& r, double& cont, double& diff, double (&a)[D]) const {
     for (std::uint32_t k0 = 0; k0 < r.n; k0 += kBlock) {
       const std::uint32_t nb = std::min(kBlock, r.n - k0);
+      Block blk;
+      alignas(32) double mj[kBlock], hj[kBlock];
+      gather_neighbours(pack_.data(), r.j + k0, nb, blk);
+      if constexpr (!SameMass) gather_values(w.particles->mass.data(), r.j + k0, nb, mj);
+      if constexpr (!SameH) gather_values(w.hs.data(), r.j + k0, nb, hj);
+      const double* dx[D];
+      for (int d = 0; d < D; ++d) dx[d] = r.dx[d] + k0;
       alignas(32) double pc[kBlock], pd[kBlock], ps[kBlock];
-      block<SameMass, SameH, false>(w, i, r, k0, nb, pc, ps, pd, nullptr);
+      arithmetic<SameMass, SameH, false>(w, i, blk, mj, hj, dx, r.F + k0, nb, pc, ps, pd, nullptr);
       for (std::uint32_t k = 0; k < nb; ++k) {
         cont += pc[k];
         if constexpr (WithDiffusion) diff += pd[k];
@@ -192,43 +232,90 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     }
   }
 
-  // Row i's upper pairs j[0 .. n) into records, in blocks: their separations (Periodic: minimum
-  // image) and F from the kernel, then block()'s arithmetic for both directions, then the stores.
+  template <bool SameH, bool Periodic>
+  void record_rows(const Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off, const std::uint32_t* up,
+                   const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel, double* out) const {
+    const PairGeometry<D>& g = kernel.geometry();
+    for (std::size_t i = i0; i < i1; ++i)
+      records<SameH, Periodic>(w, i, vj + up[i], off[i + 1] - up[i], kernel, g, out + static_cast<std::size_t>(first[i]) * kRecord);
+  }
+
+  // Row i's upper pairs j[0 .. n) into records, in blocks: the neighbours' data (gather_neighbours),
+  // their separations (Periodic: minimum image; the arithmetic of PairGeometry::separation) and F from
+  // the kernel, then the arithmetic for both directions, then the stores. The loops run over whole
+  // groups of four lanes (the padding lanes repeat the block's last pair and are not stored), so the
+  // vectorised loops need no scalar remainder: a row has about ten upper pairs.
   template <bool SameH, bool Periodic>
   void records(const Workspace<D>& w, std::size_t i, const std::uint32_t* j, std::uint32_t n, const KernelPass<D>& kernel,
-               double* rec) const {
-    const PairGeometry<D>& g = kernel.geometry();
+               const PairGeometry<D>& g, double* rec) const {
     // The records were last touched an evaluation ago and have left the cache, and the stores at the
     // end waited for their lines. Rows' records follow each other in memory, so ask for the lines of
     // the rows a few ahead now (a row writes about 10 lines): they arrive while this row computes.
     const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
     for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
+    double xi[D];
+    for (int d = 0; d < D; ++d) xi[d] = pack_[i].x[d];
     for (std::uint32_t k0 = 0; k0 < n; k0 += kBlock) {
-      const std::uint32_t nb = std::min(kBlock, n - k0);
+      const std::uint32_t nb = std::min(kBlock, n - k0), lanes = gathered_lanes(nb);
+      Block blk;
+      alignas(32) double hj[kBlock];
+      gather_neighbours(pack_.data(), j + k0, nb, blk);
+      if constexpr (!SameH) gather_values(w.hs.data(), j + k0, nb, hj);
       alignas(32) double dx[D][kBlock], r2[kBlock], F[kBlock];
-      for (std::uint32_t k = 0; k < nb; ++k) {
-        double s[D];
-        r2[k] = g.template separation<Periodic>(i, j[k0 + k], s);
-        for (int d = 0; d < D; ++d) dx[d][k] = s[d];
-      }
-      kernel.gradient_factors(r2, F, nb);
-      PairRow<D> r;
-      r.n = nb;
-      r.j = j + k0;
-      for (int d = 0; d < D; ++d) r.dx[d] = dx[d];
-      r.F = F;
-      alignas(32) double pc[kBlock], pd[kBlock], pr[kBlock], ps[kBlock], sx[D][kBlock];
-      block<true, SameH, true>(w, i, r, 0, nb, pc, ps, pd, pr);
-      for (int d = 0; d < D; ++d)
-        for (std::uint32_t k = 0; k < nb; ++k) sx[d][k] = ps[k] * dx[d][k];
-      for (std::uint32_t k = 0; k < nb; ++k) {
-        double* out = rec + static_cast<std::size_t>(k0 + k) * kRecord;
-        out[0] = pc[k];
-        for (int d = 0; d < D; ++d) out[1 + d] = sx[d][k];
-        if constexpr (WithDiffusion) {
-          out[1 + D] = pd[k];
-          out[2 + D] = pr[k];
+      for (std::uint32_t k = 0; k < lanes; ++k) {
+        double s2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          double s = xi[d] - blk.x[d][k];
+          if constexpr (Periodic) s -= g.period[d] * std::nearbyint(s * g.inv_period[d]);
+          dx[d][k] = s;
+          s2 += s * s;
         }
+        r2[k] = s2;
+      }
+      kernel.gradient_factors(r2, F, lanes);
+      const double* pdx[D];
+      for (int d = 0; d < D; ++d) pdx[d] = dx[d];
+      alignas(32) double pc[kBlock], pd[kBlock], pr[kBlock], ps[kBlock], sx[D][kBlock];
+      arithmetic<true, SameH, true>(w, i, blk, nullptr, hj, pdx, F, lanes, pc, ps, pd, pr);
+      for (int d = 0; d < D; ++d)
+        for (std::uint32_t k = 0; k < lanes; ++k) sx[d][k] = ps[k] * dx[d][k];
+      store_records(pc, sx, pd, pr, nb, rec + static_cast<std::size_t>(k0) * kRecord);
+    }
+  }
+
+  // Pairs [0, n)'s records (layout at pair_record_size) from the per-pair arrays. Only lanes below n
+  // are stored: past them lie the next row's records.
+  static void store_records(const double* pc, const double (&sx)[D][kBlock], const double* pd, const double* pr,
+                            std::uint32_t n, double* rec) {
+    std::uint32_t k = 0;
+#if defined(__AVX__)
+    if constexpr (D == 2 && WithDiffusion) {
+      // Four pairs at a time: a 4x4 transpose of (pr, pc, sx_0, sx_1) gives each pair's first four
+      // numbers, then its fifth.
+      for (; k + 4 <= n; k += 4) {
+        const __m256d a0 = _mm256_loadu_pd(pr + k), a1 = _mm256_loadu_pd(pc + k);
+        const __m256d a2 = _mm256_loadu_pd(sx[0] + k), a3 = _mm256_loadu_pd(sx[1] + k);
+        const __m256d t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
+        const __m256d t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
+        double* out = rec + static_cast<std::size_t>(k) * kRecord;
+        _mm256_storeu_pd(out, _mm256_permute2f128_pd(t0, t2, 0x20));
+        out[4] = pd[k];
+        _mm256_storeu_pd(out + kRecord, _mm256_permute2f128_pd(t1, t3, 0x20));
+        out[kRecord + 4] = pd[k + 1];
+        _mm256_storeu_pd(out + 2 * kRecord, _mm256_permute2f128_pd(t0, t2, 0x31));
+        out[2 * kRecord + 4] = pd[k + 2];
+        _mm256_storeu_pd(out + 3 * kRecord, _mm256_permute2f128_pd(t1, t3, 0x31));
+        out[3 * kRecord + 4] = pd[k + 3];
+      }
+    }
+#endif
+    for (; k < n; ++k) {
+      double* out = rec + static_cast<std::size_t>(k) * kRecord;
+      out[kCont] = pc[k];
+      for (int d = 0; d < D; ++d) out[kMomentum + d] = sx[d][k];
+      if constexpr (WithDiffusion) {
+        out[kDiffusionUpper] = pd[k];
+        out[kDiffusionLower] = pr[k];
       }
     }
   }
@@ -242,9 +329,9 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   static constexpr unsigned kMassUniform = 1u, kSmoothingUniform = 2u;
   double diff_;  // delta h c0
   MonaghanPi pi_;
-  mutable std::vector<double> q_, vol_;  // p / rho^2 and (fluid) m / rho per particle, this evaluation
+  // Per particle, this evaluation: the data a pair reads of its neighbour, p / rho^2 and (fluid) m / rho included.
+  mutable std::vector<PackedNeighbour<D>> pack_;
   mutable std::vector<unsigned> uniform_;  // per thread of prepare(): its particles' uniformity flags
-  static constexpr std::uint32_t kBlock = 64;  // pairs per block: the block's arrays stay in L1
 };
 
 }  // namespace sphmol

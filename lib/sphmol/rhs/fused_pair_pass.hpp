@@ -216,8 +216,7 @@ class FusedPairPass final : public Term<D> {
     later.clear();
     schedule_.run(thread, [&, off, vj, up, rec, twin, n_deps, deps, records, ready, epoch, R, term](int set, std::size_t i0, std::size_t i1) {
       if (set != 0) return wall_rows(w, buf, i0, i1);
-      for (std::size_t i = i0; i < i1; ++i)
-        term->pair_records(w, i, vj + up[i], off[i + 1] - up[i], *kernel_, records + static_cast<std::size_t>(rec[i]) * R);
+      term->pair_records(w, i0, i1, off, up, vj, rec, *kernel_, records);
       assert(i0 % C == 0 && "a fluid chunk is one aligned block (RowSchedule::place)");
       const std::size_t b = i0 / C;
       ready[b].store(epoch, std::memory_order_release);

@@ -56,12 +56,15 @@ class PairTerm : public Term<D> {
   virtual std::size_t pair_record_size() const { return 0; }
   // Whether this evaluation may use the records (read after prepare()'s barrier).
   virtual bool pair_records_now() const { return false; }
-  // The records of fluid row i's upper part (its n Verlet entries j[k] > i, in order, skin pairs
-  // included, whose F is 0), into rec[k * pair_record_size()]: the term forms the separations with
+  // The records of fluid rows [i0, i1): row i's upper part (its Verlet entries j[k] > i, in order,
+  // skin pairs included, whose F is 0) is vj[up[i] .. off[i + 1]), and its records go to
+  // records[(first[i] + k) * pair_record_size()]. The term forms the separations with
   // kernel.geometry() and F with kernel.gradient_factors (a kernel pass with uniform_h()), in blocks,
-  // so that no per-pair buffer is written and read back between the kernel and the term.
-  virtual void pair_records(Workspace<D>&, std::size_t, const std::uint32_t*, std::uint32_t, const KernelPass<D>&,
-                            double*) const {}
+  // so that no per-pair buffer is written and read back between the kernel and the term. A range of
+  // rows per call, so that the term's choices for this evaluation are made once, not per row.
+  virtual void pair_records(Workspace<D>&, std::size_t /*i0*/, std::size_t /*i1*/, const std::uint32_t* /*off*/,
+                            const std::uint32_t* /*up*/, const std::uint32_t* /*vj*/, const std::uint32_t* /*first*/,
+                            const KernelPass<D>&, double* /*records*/) const {}
   // Fluid row i from records: its n_lower lower pairs through twin[k] (record indices into `all`),
   // then its n_upper own records `upper`, in row order.
   virtual void sum_pair_records(Workspace<D>&, std::size_t, const std::uint32_t* /*twin*/, std::uint32_t /*n_lower*/,
