@@ -52,12 +52,12 @@ int run(const sphmol::Config& config, const sphmol::app::RunCommand& cmd, const 
     opt.restart_from = cmd.restart;
     opt.force_physics_change = cmd.force_physics_change;
     opt.overwrite = cmd.overwrite;
-    // Over ranks a signal reaches each rank at its own step: they would stop apart. mpirun's own
-    // handling (it ends every rank) applies instead.
-    opt.handle_signals = partitioner == nullptr;
+    // Over ranks every rank handles them, and the ranks stop at the step where they agree
+    // (docs/parallel.md: what mpirun does with a signal it receives).
+    opt.handle_signals = true;
     opt.partitioner = partitioner;
     const auto s = sphmol::run_case(config, opt);
-    if (!root) return s["status"] == "blown_up" ? 3 : 0;
+    if (!root) return s["status"] == "blown_up" ? 3 : sphmol::interrupted_exit_code(s);
     if (s.contains("warnings"))
       for (const auto& w : s["warnings"]) std::cerr << "sph-mol: warning: " << w.get<std::string>() << '\n';
     const std::string dir = s.value("output_directory", output.empty() ? config.output.directory : output);
@@ -156,7 +156,11 @@ int main(int argc, char** argv) {
 #ifdef SPHMOL_HAVE_MPI
     std::optional<sphmol::parallel::MpiRunPartitioner> partitioner;
     if (ranks > 1) partitioner.emplace(*world, sphmol::parallel::MpiRunPartitioner::default_tolerance, cmd.rebalance_threshold);
-    return run(*config, cmd, partitioner ? &*partitioner : nullptr);
+    const int code = run(*config, cmd, partitioner ? &*partitioner : nullptr);
+    // The ranks end together: mpirun ends the whole job as soon as one rank exits with a code other
+    // than 0 (3, 130, 143), which must not cut rank 0's checkpoint or summary short.
+    if (partitioner) world->barrier();
+    return code;
 #else
     return run(*config, cmd, nullptr);
 #endif

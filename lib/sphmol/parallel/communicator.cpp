@@ -36,6 +36,12 @@ double Communicator::max(double v) const {
   return out;
 }
 
+int Communicator::max(int v) const {
+  int out = 0;
+  MPI_Allreduce(&v, &out, 1, MPI_INT, MPI_MAX, comm_);
+  return out;
+}
+
 double Communicator::min(double v) const {
   double out = 0.0;
   MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MIN, comm_);

@@ -23,6 +23,7 @@ class Communicator {
   double sum(double v) const;
   std::uint64_t sum(std::uint64_t v) const;
   double max(double v) const;
+  int max(int v) const;
   double min(double v) const;
   bool all(bool v) const;  // true on every rank
   void barrier() const;

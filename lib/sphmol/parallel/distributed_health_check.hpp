@@ -5,7 +5,10 @@
 // and the CFL step collapsing; one verdict for all ranks, so every rank throws the same BlowUp (the
 // first failing rank's first failure, naming the particle by its global id) and none is left
 // waiting in a collective. The physical bounds of run/health_limits.hpp (speeds, densities and
-// energy against the scene's scales) are not checked over ranks.
+// energy against the scene's scales) are not checked over ranks. The same all-gather carries each
+// rank's pending signal (run/signals.hpp), so that the ranks agree at every step on whether to stop
+// (the largest signal of all) at no extra collective.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -23,12 +26,13 @@ class DistributedHealthCheck {
   DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, double t0)
       : comm_(comm), sys_(sys), last_good_t_(t0) {}
 
-  void operator()(double t, const double* y) {
+  // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.
+  int operator()(double t, const double* y, int signal) {
     long particle = -1;
     const std::string cause = first_failure(y, particle);
-    const std::vector<int> bad = comm_.all_gather(static_cast<int>(!cause.empty()));
-    for (std::size_t r = 0; r < bad.size(); ++r) {
-      if (!bad[r]) continue;
+    const std::vector<Verdict> verdicts = comm_.all_gather(Verdict{!cause.empty(), signal});
+    for (std::size_t r = 0; r < verdicts.size(); ++r) {
+      if (!verdicts[r].failed) continue;
       // The failing rank's message, on every rank.
       const std::vector<long> particles = comm_.all_gather(particle);
       const std::vector<int> lengths = comm_.all_gather(static_cast<int>(cause.size()));
@@ -43,11 +47,19 @@ class DistributedHealthCheck {
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial) + " s to " +
                               std::to_string(cfl) + " s");
     last_good_t_ = t;
+    int largest = 0;
+    for (const Verdict& v : verdicts) largest = std::max(largest, v.signal);
+    return largest;
   }
 
   double last_good_time() const { return last_good_t_; }
 
  private:
+  struct Verdict {
+    int failed;  // 0 or 1
+    int signal;
+  };
+
   // This rank's first failure in the serial check's order ("" when none), and its particle.
   std::string first_failure(const double* y, long& particle) const {
     const auto& L = sys_.layout();

@@ -29,7 +29,8 @@ class MpiRun final : public PartitionedRun<D> {
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
-  void check(double t, double) override { health_(t, y_.data()); }
+  int check(double t, double, int signal) override { return health_(t, y_.data(), signal); }
+  int largest_signal(int signal) override { return comm_.max(signal); }
   OwnedPiece<D> owned_piece(double t) override {
     sys_.refresh_local(t, y_.data());
     OwnedPiece<D> p;

@@ -34,8 +34,12 @@ class PartitionedRun {
   // Collective: returns once every rank has called it.
   virtual void barrier() = 0;
   // Collective, after each accepted step: throws BlowUp on every rank when any rank's part fails a
-  // check (the same BlowUp everywhere).
-  virtual void check(double t, double h) = 0;
+  // check (the same BlowUp everywhere). `signal`: the signal this rank has received (0: none);
+  // returns the largest of all ranks', the same on every rank, so that the ranks stop at the same
+  // step whichever of them a signal reached, and when (it travels in the check's own collective).
+  virtual int check(double t, double h, int signal) = 0;
+  // Collective: the largest of the ranks' `signal` (0: none), where no step is taken (after the last).
+  virtual int largest_signal(int signal) = 0;
   // Collective, between steps (t: the time reached): moves particles between ranks when the load
   // has drifted out of balance, with the integrator's own state, and starts the integrator again
   // on the new share (state() changes then).

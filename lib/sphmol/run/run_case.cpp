@@ -85,8 +85,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // Blow-up detection after every accepted step (run/health_check.hpp; over ranks, the partition's
   // own checks), and conservation diagnostics.
   std::optional<HealthCheck<D>> health;
+  // Over ranks, SIGINT/SIGTERM as the ranks agree at the last step's check: the largest signal any
+  // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
+  int agreed_signal = 0;
   if (part) {
-    integrator->set_step_hook([&part](double tt, const double*, double hh) { part->check(tt, hh); });
+    integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
+      agreed_signal = part->check(tt, hh, pending_signal());
+    });
   } else {
     health.emplace(*sys, y.data(), t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
     integrator->set_step_hook([&health](double tt, const double* yy, double hh) { (*health)(tt, yy, hh); });
@@ -168,6 +173,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
 
   std::optional<SignalGuard> guard;
   if (opt.handle_signals) guard.emplace();
+  const auto signal_seen = [&] { return part ? agreed_signal : pending_signal(); };
   ProgressLine progress(opt.progress, t_first, config.time.t_end);
   int signal = 0;
   nlohmann::json blow_up;
@@ -213,9 +219,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   while (next_out < times.size()) {
     const double stop = std::min({times[next_out], next_cp, next_observer_time()});
-    while (t < stop && !(signal = pending_signal())) {
+    while (t < stop && !(signal = signal_seen())) {
       t = integrator->step_toward(stop);
       if (part) part->rebalance(*integrator, t);
+      if (opt.after_step) opt.after_step(t);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
     }
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
@@ -316,21 +323,25 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
   // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
-  // the end of the run (and the plots).
+  // the end of the run (and the plots). Over ranks they agree here too (a collective, on every rank).
   const auto signal_after_end = [&] {
-    if (signal || !opt.handle_signals || !blow_up.is_null() || !(signal = pending_signal())) return;
+    if (signal || !opt.handle_signals || !blow_up.is_null()) return;
+    signal = part ? part->largest_signal(pending_signal()) : pending_signal();
+    if (!signal) return;
     checkpoint();
     if (opt.log) *opt.log << "interrupted by signal " << signal << " after t = " << t << " s; checkpoint written\n";
   };
   signal_after_end();
-  if (!signal && blow_up.is_null() && config.output.plots && out.enabled) {
-    const auto interrupted = [&] { return opt.handle_signals && pending_signal() != 0; };
-    std::vector<PlotScript> scripts = c.plots(out);
-    for (const auto& o : observers)
-      for (auto& p : o->plots(out)) scripts.push_back(std::move(p));
-    const PlotResult plots = make_plots(scripts, out, interrupted);
-    j["plots"] = plots.written;
-    for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
+  if (!signal && blow_up.is_null() && config.output.plots) {
+    if (out.enabled) {  // over ranks, rank 0 plots while the others wait for it in signal_after_end
+      const auto interrupted = [&] { return opt.handle_signals && pending_signal() != 0; };
+      std::vector<PlotScript> scripts = c.plots(out);
+      for (const auto& o : observers)
+        for (auto& p : o->plots(out)) scripts.push_back(std::move(p));
+      const PlotResult plots = make_plots(scripts, out, interrupted);
+      j["plots"] = plots.written;
+      for (const auto& w : plots.warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
+    }
     signal_after_end();
   }
   j["status"] = signal ? "interrupted" : blow_up.is_null() ? "completed" : "blown_up";

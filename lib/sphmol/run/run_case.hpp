@@ -2,6 +2,7 @@
 // Runs one verification case from a validated config: builds the scene, assembles the RHS,
 // integrates to every output time, measures the error against the case's reference and writes
 // DIR/summary.json , DIR/config.yaml (the resolved config) and profile CSVs.
+#include <functional>
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -21,7 +22,11 @@ struct RunOptions {
   std::ostream* progress = nullptr;  // live progress line (a terminal's stderr); null = none
   std::string restart_from;     // a checkpoint-<t> directory to continue from (run/checkpoint.hpp)
   bool force_physics_change = false;  // restart even if the config changes the physics (run/restart_check.hpp)
-  bool handle_signals = false;  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted"
+  // SIGINT/SIGTERM -> checkpoint + summary with "status": "interrupted" (over ranks: set on every rank).
+  bool handle_signals = false;
+  // If set: called on this rank after each step of the run loop with the time reached (tests raise
+  // a signal at a chosen step with it).
+  std::function<void(double t)> after_step;
   // The output folder may hold another run's summary: delete that run's files first (--overwrite).
   bool overwrite = false;
   // Set by run_case: a restart into the folder of its checkpoint continues that run's file list.

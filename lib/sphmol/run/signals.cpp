@@ -23,6 +23,7 @@ SignalGuard::SignalGuard() {
 SignalGuard::~SignalGuard() {
   sigaction(SIGINT, &g_old_int, nullptr);
   sigaction(SIGTERM, &g_old_term, nullptr);
+  g_signal = 0;  // a later run in this process without a guard must not see it
 }
 
 int pending_signal() { return g_signal; }
