@@ -217,3 +217,30 @@ TEST_CASE("leapfrog_kdk and cvode_adams agree with ARKODE on a short Couette run
     else CHECK(std::abs(e - e_ref) < 0.05 * e_ref);
   }
 }
+
+TEST_CASE("a fixed time.dt above the CFL step at the start is warned about", "[integration][blowup][health]") {
+  // hydrostatic_3d.yaml fixes dt = 0.15 h / c0 for its 8 particles across; refined to 64 across the
+  // same dt is 1.2 h / c0 and the run blew up at t = 0.031 s with nothing saying why.
+  SECTION("the hydrostatic tank refined with its file's fixed step: the summary and stderr say it") {
+    const std::string dir = "reports/dt_warning_refined";
+    const auto r = sph_mol(dir, {"--config", verification("hydrostatic"), "--set", "discretization.particles_across=80", "--set",
+                                 "time.t_end=0.001", "--set", "output.times=[0.001]", "--set", "output.plots=false"});
+    INFO(r.err);
+    CHECK(r.code == 0);
+    const auto s = summary_of(dir);
+    REQUIRE(s.is_object());
+    REQUIRE(s.contains("warnings"));
+    const std::string w = s["warnings"][0];
+    CHECK(w.find("time.dt = 0.00025 s is 1.18") == 0);
+    CHECK(w.find("times the CFL step at t = 0") != std::string::npos);
+    CHECK(r.err.find("sph-mol: warning: time.dt") != std::string::npos);
+  }
+  SECTION("the shipped file's step is below the bound: no warning") {
+    const std::string dir = "reports/dt_warning_shipped";
+    const auto r = sph_mol(dir, {"--config", verification("hydrostatic"), "--set", "time.t_end=0.001", "--set",
+                                 "output.times=[0.001]", "--set", "output.plots=false"});
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(summary_of(dir).value("warnings", nlohmann::json::array()).empty());
+  }
+}

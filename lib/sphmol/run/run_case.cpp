@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include "sphmol/run/conservation.hpp"
 #include "sphmol/run/health_check.hpp"
 #include "sphmol/run/last_good_state.hpp"
@@ -82,6 +83,21 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
   integrator->initialize(ode, t, y_step);
+  // A fixed time.dt runs as set even above the CFL bound (the stability studies rely on it), but a
+  // step above the bound at the start is said: refining a file that fixes dt keeps the old step,
+  // and the blow-up the health checks report later would not say why.
+  std::vector<std::string> warnings;
+  if (config.time.dt) {
+    const double bound = ode.stable_step();  // of the initialising evaluation (over ranks: global)
+    if (bound > 0.0 && std::isfinite(bound) && *config.time.dt > bound) {
+      std::ostringstream w;
+      w << "time.dt = " << *config.time.dt << " s is " << *config.time.dt / bound << " times the CFL step at t = " << t
+        << " (" << bound << " s from time.cfl); the run may blow up: set a smaller time.dt, or remove it to step at "
+        << "the CFL bound";
+      warnings.push_back(w.str());
+      if (opt.log) *opt.log << "warning: " << warnings.back() << '\n';
+    }
+  }
   // Blow-up detection after every accepted step (run/health_check.hpp; over ranks, the partition's
   // own checks), and conservation diagnostics.
   std::optional<HealthCheck<D>> health;
@@ -284,6 +300,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
 
   j["integrator"] = integrator->describe();
+  for (const auto& w : warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
   j["rejected_steps"] = st.rejected_steps;
