@@ -150,6 +150,9 @@ struct CflConfig {
   double acoustic = 0.25;  // dt <= acoustic * h / (c + |v|max)
   double force = 0.25;     // dt <= force * sqrt(h / |a|max)
   double viscous = 0.125;  // dt <= viscous * h^2 / nu
+  // The top of each coefficient's range, where the explicit integrators stay stable (config/README.md,
+  // "CFL coefficients"): the loader refuses larger coefficients.
+  static constexpr double kMaxAcoustic = 1.0, kMaxForce = 1.0, kMaxViscous = 0.125;
 };
 
 // The Krylov solver of the implicit viscous step (leapfrog_imex, arkode_imex).

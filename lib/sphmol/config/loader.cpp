@@ -580,13 +580,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     // Stability ranges of the explicit schemes (config/README.md, "CFL coefficients"): a larger
     // coefficient lets the integrator take steps past the limit of its own stability region.
     if (const auto v = cfl.real("acoustic")) t.cfl.acoustic = *v;
-    cfl.check("acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= 1, t.cfl.acoustic,
+    cfl.check("acoustic", t.cfl.acoustic > 0 && t.cfl.acoustic <= CflConfig::kMaxAcoustic, t.cfl.acoustic,
           "(0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4)");
     if (const auto v = cfl.real("force")) t.cfl.force = *v;
-    cfl.check("force", t.cfl.force > 0 && t.cfl.force <= 1, t.cfl.force,
+    cfl.check("force", t.cfl.force > 0 && t.cfl.force <= CflConfig::kMaxForce, t.cfl.force,
           "(0, 1]: the leapfrog is stable for omega dt < 2 with omega^2 ~ |a|/h; 1 keeps a factor 2 (Monaghan 1992 uses 0.25)");
     if (const auto v = cfl.real("viscous")) t.cfl.viscous = *v;
-    cfl.check("viscous", t.cfl.viscous > 0 && t.cfl.viscous <= 0.125, t.cfl.viscous,
+    cfl.check("viscous", t.cfl.viscous > 0 && t.cfl.viscous <= CflConfig::kMaxViscous, t.cfl.viscous,
           "(0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; "
           "the leapfrog Couette flow diverges at 0.15");
     if (const auto v = time.real("dt")) {

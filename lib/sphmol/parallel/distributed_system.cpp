@@ -463,6 +463,7 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MIN, comm_.handle());
   // As SphSystem: no viscous limit for the explicit part of an IMEX split.
   stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], op == nullptr);
+  widest_step_ = cfl_step(cfl.widest(), all[0], -all[1], all[2], op == nullptr);
   if (rhs_evals_ == 1) first_stable_step_ = stable_step_;
   const double t_end = omp_get_wtime();
   stats_.exchange_seconds += t_end - t_reduce;

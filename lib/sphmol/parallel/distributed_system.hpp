@@ -92,6 +92,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // norm the fixed-point one of the serial run (fixed_point_norm_mpi.hpp).
   N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const override;
   double stable_step() const override { return stable_step_; }
+  double widest_stable_step() const override { return widest_step_; }
   double first_stable_step() const { return first_stable_step_; }  // of the first evaluation
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
@@ -209,7 +210,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_, f_local_;
-  double stable_step_ = 0.0, first_stable_step_ = 0.0;
+  double stable_step_ = 0.0, first_stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;
   Stats stats_;
 };

@@ -376,6 +376,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (record_) record_->end();
   // The viscous limit binds an explicit viscous term only: not the explicit part of an IMEX split.
   stable_step_ = cfl_step(cfl_, acoustic, amax2, hmin, !record_);
+  widest_step_ = cfl_step(cfl_.widest(), acoustic, amax2, hmin, !record_);
   rhs_seconds_ += omp_get_wtime() - t_start;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/config/config.hpp"
 #include "sphmol/core/state_layout.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
@@ -27,6 +28,14 @@ struct CflLimits {
   double acoustic = 0.25, force = 0.25, viscous = 0.125;
   double sound_speed = 0.0;
   double kinematic_viscosity = 0.0;
+  // The same limits with every coefficient at the top of its stable range.
+  CflLimits widest() const {
+    CflLimits w = *this;
+    w.acoustic = CflConfig::kMaxAcoustic;
+    w.force = CflConfig::kMaxForce;
+    w.viscous = CflConfig::kMaxViscous;
+    return w;
+  }
 };
 
 // The step the limits allow, from the per-particle extremes of an evaluation: the smallest h_i/(c_i+|v_i|)
@@ -60,6 +69,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   void rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) override;
   std::vector<std::string> implicit_terms() const override;
   double stable_step() const override { return stable_step_; }
+  double widest_stable_step() const override { return widest_step_; }
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
   std::size_t velocities_end() const override { return layout_.velocities_end(); }
   std::size_t block_length() const override { return layout_.n; }
@@ -69,11 +79,12 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // limit are restored, so output times change neither the step sizes nor the cost reported.
   void refresh_fields(double t, const double* y, std::vector<double>& scratch) {
     const long evals = rhs_evals_;
-    const double step = stable_step_, seconds = rhs_seconds_, search = search_seconds_;
+    const double step = stable_step_, widest = widest_step_, seconds = rhs_seconds_, search = search_seconds_;
     scratch.resize(size());
     rhs(t, y, scratch.data());
     rhs_evals_ = evals;
     stable_step_ = step;
+    widest_step_ = widest;
     rhs_seconds_ = seconds;
     search_seconds_ = search;
   }
@@ -172,7 +183,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   std::vector<double> h_ref_, rho_ref_;  // h(0), rho(0) per particle for SmoothingLengthMode::density
   double support_ = 0.0;                 // kernel support in units of h
   double spacing_ = 0.0;                 // set_spacing()
-  double stable_step_ = 0.0;
+  double stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
   ViscousOperator* record_ = nullptr;  // set during rhs_explicit

@@ -83,17 +83,18 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
   integrator->initialize(ode, t, y_step);
-  // A fixed time.dt runs as set even above the CFL bound (the stability studies rely on it), but a
-  // step above the bound at the start is said: refining a file that fixes dt keeps the old step,
-  // and the blow-up the health checks report later would not say why.
+  // A fixed time.dt runs as set even beyond the CFL bound (the stability studies rely on it), but a
+  // step beyond the widest stable CFL step at the start is said: refining a file that fixes dt
+  // keeps the old step, and the blow-up the health checks report later would not say why.
   std::vector<std::string> warnings;
   if (config.time.dt) {
-    const double bound = ode.stable_step();  // of the initialising evaluation (over ranks: global)
+    const double bound = ode.widest_stable_step();  // of the initialising evaluation (over ranks: global)
     if (bound > 0.0 && std::isfinite(bound) && *config.time.dt > bound) {
       std::ostringstream w;
-      w << "time.dt = " << *config.time.dt << " s is " << *config.time.dt / bound << " times the CFL step at t = " << t
-        << " (" << bound << " s from time.cfl); the run may blow up: set a smaller time.dt, or remove it to step at "
-        << "the CFL bound";
+      w << "time.dt = " << *config.time.dt << " s is " << *config.time.dt / bound << " times the largest stable step at t = "
+        << t << " (" << bound << " s: the CFL bound with the coefficients at the top of their stable ranges, acoustic "
+        << CflConfig::kMaxAcoustic << ", force " << CflConfig::kMaxForce << ", viscous " << CflConfig::kMaxViscous
+        << "); the run is likely to blow up: set a smaller time.dt, or remove it to step at the CFL bound";
       warnings.push_back(w.str());
       if (opt.log) *opt.log << "warning: " << warnings.back() << '\n';
     }

@@ -12,6 +12,9 @@ class OdeSystem {
   virtual void rhs(double t, const double* y, double* ydot) = 0;
   // Largest stable step for the state of the most recent rhs() call (CFL: acoustic, force, viscous).
   virtual double stable_step() const = 0;
+  // The same with every CFL coefficient at the top of its stable range (config/README.md, "CFL
+  // coefficients"): a fixed step above it is outside every measured stability limit.
+  virtual double widest_stable_step() const { return stable_step(); }
   virtual std::size_t velocities_begin() const = 0;
   virtual std::size_t velocities_end() const = 0;
   virtual long rhs_evaluations() const = 0;
