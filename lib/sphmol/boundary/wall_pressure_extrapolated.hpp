@@ -10,7 +10,8 @@
 // which under a hydrostatic column is a pressure jump at the wall: the symmetric gradient (Vukčević
 // 2012, eq 117) turns it into a force drawing the first fluid rows into the wall (the walls' p = 0
 // pushes less than the fluid they stand for would; tests/unit/test_boundaries_3d.cpp). Wall rows list only fluid
-// neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass. A scene
+// neighbours. Wall particles without fluid neighbours keep their pressure of the EOS pass, from the
+// density they were made with (reset at every evaluation, rhs/sph_system.cpp). A scene
 // whose wall bodies differ in treatment passes a per-body mask (Particles::treatment_mask): only the
 // walls it marks are extrapolated, the others keep the pressure of their own treatment.
 #include <array>

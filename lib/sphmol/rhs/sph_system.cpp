@@ -251,6 +251,13 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       const double floor = fields_.wall_density_floor;
 #pragma omp for schedule(static) nowait
       for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
+    } else {
+      // Walls without a density in the state start every evaluation from their own density: a term
+      // that overwrites it (the extrapolated wall pressure) leaves walls without fluid alone, and
+      // they must not keep a value from an earlier evaluation (the output reads them).
+      const double* rw = P.rho.data();
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = nf; i < nb; ++i) ws_.rho[i] = rw[ord ? ord[i] : i];
     }
     if (h_from_density) {  // Niedoba 2012, eq 2.67
 #pragma omp for schedule(static) nowait
