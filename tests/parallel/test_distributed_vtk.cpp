@@ -140,4 +140,11 @@ TEST_CASE("distributed run: the ghost pieces of every rank hold the serial run's
   SECTION("leapfrog, partitioned again at every re-plan") {
     CHECK((check_pieces_equal_serial(cavity("leapfrog"), "cavity-ghosts-rebalanced", 1.0).ghosts || !root));
   }
+  // A variable h (the 2D Sod tube, h by dh/dt): images are made within kappa times the largest h of
+  // all ranks, as in the serial run, not of each rank's own particles.
+  SECTION("the 2D Sod tube with free-slip ghost walls and a variable h") {
+    CHECK((check_pieces_equal_serial(short_shock_tube("sod.yaml", {"output.vtk=true", "output.vtk_ghosts=true"}), "sod-ghosts")
+               .ghosts ||
+           !root));
+  }
 }

@@ -102,9 +102,14 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
   }
 
+  // A lower bound for the largest h of the fluid: images are made within support * max(reach_h, the
+  // workspace's largest h) of a wall. A rank's local system holds only part of the fluid; given the
+  // largest h over all ranks it makes the images the whole system makes (distributed_system.cpp).
+  void set_reach_h(double reach_h) { reach_h_ = reach_h; }
+
   bool generate(std::size_t n_base, Particles<D>& pt, Workspace<D>& w) override {
     n_base_ = n_base;
-    double hmax = w.h;
+    double hmax = std::max(w.h, reach_h_);
     for (std::size_t i = 0; i < w.n_fluid && i < w.hs.size(); ++i) hmax = std::max(hmax, w.hs[i]);
     const double width = support_ * hmax;
     new_source_.clear();
@@ -270,6 +275,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
   std::vector<Mirror> mirrors_;
   std::vector<std::uint32_t> perpendicular_;  // per mirror: the mirrors at right angles to it
   double support_;
+  double reach_h_ = 0.0;
   std::size_t n_base_ = 0;
   std::vector<std::uint32_t> source_, new_source_;
   std::vector<std::uint32_t> mask_, new_mask_;

@@ -231,17 +231,21 @@ void DistributedSystem<D>::owned_positions(double t, const double* y) {
 }
 
 template <int D>
-double DistributedSystem<D>::largest_h(const double* y) const {
+double DistributedSystem<D>::largest_h(const double* y) {
   // As the serial evaluation sets h: from the state, or from the density (Niedoba 2012, eq 2.67);
   // walls keep h(0).
   const StateLayout<D>& L = layout_;
-  double hmax = 0.0;
+  double hmax = 0.0, hmax_fluid = 0.0;
   for (std::size_t o = 0; o < owned_.size(); ++o) {
     double h = h0_[gid_[o]];
     if (o < nfo_ && L.has_smoothing_length) h = y[L.smoothing_length() + o];
     else if (o < nfo_) h *= std::pow(owned_.rho[o] / y[L.density() + o], 1.0 / D);
     hmax = std::max(hmax, h);
+    if (o < nfo_) hmax_fluid = std::max(hmax_fluid, h);
   }
+  // The serial ghost generator makes images within kappa times the fluid's largest h (and the
+  // scene's h): every rank's local generator gets the largest over all ranks.
+  if (ghost_walls_) hmax_fluid_ = comm_.max(hmax_fluid);
   return comm_.max(hmax);
 }
 
@@ -386,6 +390,8 @@ void DistributedSystem<D>::prepare_local(double t, const double* y) {
     stats_.mirror_margin_max = std::max(stats_.mirror_margin_max, margin_);
   }
   if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
+  if (variable_h_ && ghost_walls_)
+    if (auto* g = dynamic_cast<GhostGenerator<D>*>(local_->generator())) g->set_reach_h(hmax_fluid_);
 }
 
 template <int D>

@@ -159,7 +159,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
   void prepare_local(double t, const double* y);
   void exchange_into_local(const double* y);  // collective: the owned and halo state into y_local_
-  double largest_h(const double* y) const;  // collective: the largest h of every rank's particles at y
+  // Collective: the largest h of every rank's particles at y, and (with ghost walls) of the fluid alone.
+  double largest_h(const double* y);
   // Collective, ghost walls only: how much farther than the support an image's source may lie (from the
   // owned positions now); the halo reaches that much farther per pass.
   double mirror_margin() const;
@@ -195,6 +196,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   bool variable_h_ = false;
   std::vector<double> h0_;
   double hmax_ = 0.0, hmax_plan_ = 0.0, support_ = 0.0;
+  double hmax_fluid_ = 0.0;  // the largest h of the fluid over all ranks (ghost walls with a variable h)
   Particles<D> owned_;
   std::vector<std::uint64_t> gid_;
   std::size_t nfo_ = 0;  // owned fluid particles

@@ -128,6 +128,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   std::size_t generated_particles() const { return generator_ ? generator_->count() : 0; }
   bool has_generator() const { return generator_ != nullptr; }
   const ParticleGenerator<D>* generator() const { return generator_.get(); }
+  ParticleGenerator<D>* generator() { return generator_.get(); }
   // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.
   std::size_t base_particles() const { return n_base_; }
   // Positions and velocities of all particles, generated ones included, at the most recent evaluation.
