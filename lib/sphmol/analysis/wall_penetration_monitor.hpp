@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -38,22 +39,32 @@ class WallPenetrationMonitor final : public Term<2> {
     std::uint8_t* const crossed = s.crossed.data();
     // Every evaluation: each thread one range of the particles, its count and minimum combined after
     // it. A count and a minimum do not depend on the thread count or the order of combining, so the
-    // range is a simd loop too: written without branches (the flag stored whether or not it
-    // changes), it vectorises.
+    // range's gap is a simd loop, written without branches, which also notes whether any particle is
+    // out; only then does a second loop over the range flag and count them (in a sound run, never).
     const double Lx = Lx_, Ly = Ly_;
     double gap = std::numeric_limits<double>::infinity();
     long count = 0;
     const long threads = omp_get_num_threads(), t = omp_get_thread_num();
-#pragma omp simd reduction(min : gap) reduction(+ : count)
-    for (long i = n * t / threads; i < n * (t + 1) / threads; ++i) {
+    const long lo = n * t / threads, hi = n * (t + 1) / threads;
+    std::int64_t any_out = 0;
+#pragma omp simd reduction(min : gap) reduction(| : any_out)
+    for (long i = lo; i < hi; ++i) {
       const double x = xs[i], y = ys[i];
       const bool beside = (x < 0.0) | (x > Lx);
       const bool out = (y < 0.0) | ((y < Ly) & beside);
-      count += out & (crossed[i] == 0);
-      crossed[i] = static_cast<std::uint8_t>(crossed[i] | out);
+      any_out |= static_cast<std::int64_t>(out);
       const double g = std::min({x, Lx - x, y});
       gap = !out & !beside ? std::min(gap, g) : gap;
     }
+    if (any_out != 0)
+      for (long i = lo; i < hi; ++i) {
+        const double x = xs[i], y = ys[i];
+        const bool out = y < 0.0 || (y < Ly && (x < 0.0 || x > Lx));
+        if (out && !crossed[i]) {
+          crossed[i] = 1;
+          ++count;
+        }
+      }
 #pragma omp critical(sphmol_wall_penetration_monitor)
     {
       s.count += count;
