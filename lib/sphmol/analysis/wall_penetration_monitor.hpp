@@ -42,7 +42,8 @@ class WallPenetrationMonitor final : public Term<2> {
     // range's gap is a simd loop, written without branches, which also notes whether any particle is
     // out; only then does a second loop over the range flag and count them (in a sound run, never).
     const double Lx = Lx_, Ly = Ly_;
-    double gap = std::numeric_limits<double>::infinity();
+    const double inf = std::numeric_limits<double>::infinity();
+    double gap = inf;
     long count = 0;
     const long threads = omp_get_num_threads(), t = omp_get_thread_num();
     const long lo = n * t / threads, hi = n * (t + 1) / threads;
@@ -53,8 +54,10 @@ class WallPenetrationMonitor final : public Term<2> {
       const bool beside = (x < 0.0) | (x > Lx);
       const bool out = (y < 0.0) | ((y < Ly) & beside);
       any_out |= static_cast<std::int64_t>(out);
-      const double g = std::min({x, Lx - x, y});
-      gap = !out & !beside ? std::min(gap, g) : gap;
+      // The gap of a particle inside the tank (std::min({x, Lx - x, y})); +inf, which leaves the
+      // minimum as it is, for the others.
+      const double g = std::min(std::min(x, Lx - x), y);
+      gap = std::min(gap, !out & !beside ? g : inf);
     }
     if (any_out != 0)
       for (long i = lo; i < hi; ++i) {
