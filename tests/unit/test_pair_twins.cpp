@@ -114,3 +114,63 @@ TEST_CASE("pair twins: each block lists every other block its rows' lower parts 
   for (const auto c : t.n_deps) overflow += c == PairTwins::kNoDeps ? 1 : 0;
   CHECK(overflow > 0);
 }
+
+TEST_CASE("pair twins: tables found in ranges of rows equal those of one range, for any split", "[unit][neighbors]") {
+  // The pass over the rows that reach a range starts below it (at the smallest lower neighbour of
+  // its rows) and stops at its end; splits into 2, 3 and 7 ranges (make_twins gives each thread one)
+  // must give the one-range tables, for a symmetric list and for one missing a reverse.
+  const std::size_t n = 140, nf = 120;
+  PairList sym = random_list(n, nf, 13);
+  PairList broken = sym;
+  // Row 70 loses its first upper entry; the pair stays in the lower part of a row above 70, which
+  // may lie in another range.
+  PairTwins probe;
+  probe.build(broken, nf);
+  REQUIRE(probe.upper[70] < broken.offset[71]);
+  broken.j.erase(broken.j.begin() + probe.upper[70]);
+  for (std::size_t i = 71; i < broken.offset.size(); ++i) --broken.offset[i];
+  for (const PairList* list : {&sym, &broken}) {
+    PairTwins whole;
+    whole.build(*list, nf);
+    CHECK(whole.complete == (list == &sym));
+    for (const std::size_t parts : {2u, 3u, 7u}) {
+      INFO("ranges " << parts);
+      PairTwins t;
+      t.size(nf, list->pairs());
+      for (std::size_t i = 0; i < nf; ++i) t.find_upper(*list, i);
+      t.place_records(*list);
+      bool complete = true;
+      for (std::size_t p = 0; p < parts; ++p) complete = t.find_twins(*list, nf * p / parts, nf * (p + 1) / parts) && complete;
+      CHECK(complete == whole.complete);
+      CHECK(t.upper == whole.upper);
+      CHECK(t.record == whole.record);
+      CHECK(t.twin == whole.twin);
+    }
+  }
+}
+
+TEST_CASE("pair twins: an upper entry whose reverse is missing leaves the tables complete", "[unit][neighbors]") {
+  // Its record is summed by its own row only, as that row's full evaluation would: the pass stays
+  // symmetric. The lower entries of the other rows keep their twins.
+  PairList list = random_list(30, 30, 5);
+  PairTwins t;
+  t.build(list, 30);
+  REQUIRE(t.complete);
+  // Row j loses the lower entry of its smallest neighbour i: i keeps j in its upper part.
+  std::size_t j = 29;
+  while (list.offset[j] == t.upper[j]) --j;
+  list.j.erase(list.j.begin() + list.offset[j]);
+  for (std::size_t k = j + 1; k < list.offset.size(); ++k) --list.offset[k];
+  PairTwins u;
+  u.build(list, 30);
+  CHECK(u.complete);
+  for (std::size_t i = 0; i < 30; ++i)
+    for (std::uint32_t q = list.offset[i]; q < u.upper[i]; ++q) {
+      const std::uint32_t r = u.twin[q];
+      REQUIRE(r < u.records());
+      const std::uint32_t other = list.j[q];  // row of the record, at its entry for i
+      REQUIRE(r >= u.record[other]);
+      REQUIRE(r < u.record[other + 1]);
+      CHECK(list.j[u.upper[other] + (r - u.record[other])] == i);
+    }
+}

@@ -5,7 +5,10 @@
 // Checked at every RHS evaluation (every step and stage); counts distinct particles, and records the
 // smallest distance of any fluid particle inside the tank to a wall surface. A term with no effect on
 // the RHS; the dam-break case appends it.
+#include <omp.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -34,20 +37,37 @@ class WallPenetrationMonitor final : public Term<2> {
     const long n = static_cast<long>(w.n_fluid);
     const double *const xs = w.x[0].data(), *const ys = w.x[1].data();
     std::uint8_t* const crossed = s.crossed.data();
-    // Every evaluation: one worksharing pass, each thread's count and minimum combined after it. A
-    // count and a minimum do not depend on the thread count or the order of combining.
-    double gap = std::numeric_limits<double>::infinity();
+    // Every evaluation: each thread one range of the particles, its count and minimum combined after
+    // it. A count and a minimum do not depend on the thread count or the order of combining, so the
+    // range's gap is a simd loop, written without branches, which also notes whether any particle is
+    // out; only then does a second loop over the range flag and count them (in a sound run, never).
+    const double Lx = Lx_, Ly = Ly_;
+    const double inf = std::numeric_limits<double>::infinity();
+    double gap = inf;
     long count = 0;
-#pragma omp for schedule(static) nowait
-    for (long i = 0; i < n; ++i) {
+    const long threads = omp_get_num_threads(), t = omp_get_thread_num();
+    const long lo = n * t / threads, hi = n * (t + 1) / threads;
+    std::int64_t any_out = 0;
+#pragma omp simd reduction(min : gap) reduction(| : any_out)
+    for (long i = lo; i < hi; ++i) {
       const double x = xs[i], y = ys[i];
-      const bool out = y < 0.0 || (y < Ly_ && (x < 0.0 || x > Lx_));
-      if (out && !crossed[i]) {
-        crossed[i] = 1;
-        ++count;
-      }
-      if (!out && x >= 0.0 && x <= Lx_) gap = std::min(gap, std::min({x, Lx_ - x, y}));
+      const bool beside = (x < 0.0) | (x > Lx);
+      const bool out = (y < 0.0) | ((y < Ly) & beside);
+      any_out |= static_cast<std::int64_t>(out);
+      // The gap of a particle inside the tank (std::min({x, Lx - x, y})); +inf, which leaves the
+      // minimum as it is, for the others.
+      const double g = std::min(std::min(x, Lx - x), y);
+      gap = std::min(gap, !out & !beside ? g : inf);
     }
+    if (any_out != 0)
+      for (long i = lo; i < hi; ++i) {
+        const double x = xs[i], y = ys[i];
+        const bool out = y < 0.0 || (y < Ly && (x < 0.0 || x > Lx));
+        if (out && !crossed[i]) {
+          crossed[i] = 1;
+          ++count;
+        }
+      }
 #pragma omp critical(sphmol_wall_penetration_monitor)
     {
       s.count += count;

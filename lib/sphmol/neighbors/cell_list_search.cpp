@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <omp.h>
 
 namespace sphmol {
@@ -21,25 +22,57 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     total *= static_cast<std::size_t>(ncell[d]);
   }
   const long n = static_cast<long>(in.n);
-  // Each particle's cell (index with direction 0 fastest), in parallel.
   cell_of_.resize(in.n);
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    std::size_t c = 0;
-    for (int d = D - 1; d >= 0; --d) {
-      const int cd = static_cast<int>(std::floor((in.x[d][i] - dom.lo[d]) * inv_size[d]));
-      c = c * ncell[d] + std::clamp(cd, 0, ncell[d] - 1);
-    }
-    cell_of_[i] = static_cast<std::uint32_t>(c);
-  }
-  // Counting sort by cell; stable, so every cell lists its particles in ascending order. Two passes
-  // of integer work, a small part of the build (sph-bench Search): left serial.
-  cell_start_.assign(total + 1, 0);
-  for (long i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
-  for (std::size_t c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_start_.resize(total + 1);
   cell_items_.resize(in.n);
-  fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  for (long i = 0; i < n; ++i) cell_items_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  // Counting sort by cell, in parallel and stable: thread t counts its static range of particles per
+  // cell, a cell's particles are placed thread by thread (each range ascending), so every cell lists
+  // its particles in ascending order, as a serial sort would, for any thread count.
+#pragma omp parallel
+  {
+    const int threads = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp single
+    count_.resize(static_cast<std::size_t>(threads));
+    std::vector<std::uint32_t>& count = count_[static_cast<std::size_t>(t)];
+    count.assign(total, 0);
+    const long lo = n * t / threads, hi = n * (t + 1) / threads;
+    // Each particle's cell (index with direction 0 fastest).
+    for (long i = lo; i < hi; ++i) {
+      std::size_t c = 0;
+      for (int d = D - 1; d >= 0; --d) {
+        const int cd = static_cast<int>(std::floor((in.x[d][i] - dom.lo[d]) * inv_size[d]));
+        c = c * ncell[d] + std::clamp(cd, 0, ncell[d] - 1);
+      }
+      cell_of_[i] = static_cast<std::uint32_t>(c);
+      ++count[c];
+    }
+#pragma omp barrier
+    // Per cell range: the cells' totals, then (after the ranges' sums are known) each thread's start
+    // in each cell, written over its count.
+    const std::size_t c_lo = total * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
+    const std::size_t c_hi = total * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
+    std::uint32_t range_sum = 0;
+    for (std::size_t c = c_lo; c < c_hi; ++c)
+      for (int u = 0; u < threads; ++u) range_sum += count_[static_cast<std::size_t>(u)][c];
+#pragma omp single
+    range_start_.assign(static_cast<std::size_t>(threads) + 1, 0);
+    range_start_[static_cast<std::size_t>(t) + 1] = range_sum;
+#pragma omp barrier
+    std::uint32_t at = 0;
+    for (int u = 0; u < t; ++u) at += range_start_[static_cast<std::size_t>(u) + 1];
+    for (std::size_t c = c_lo; c < c_hi; ++c) {
+      cell_start_[c] = at;
+      for (int u = 0; u < threads; ++u) {
+        std::uint32_t& k = count_[static_cast<std::size_t>(u)][c];
+        const std::uint32_t items = k;
+        k = at;
+        at += items;
+      }
+    }
+    if (t + 1 == threads) cell_start_[total] = at;
+#pragma omp barrier
+    for (long i = lo; i < hi; ++i) cell_items_[count[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  }
 
   // Rows cell by cell: the 3^D neighbour cells and their particles, merged into one ascending
   // candidate list, are found once per cell and shared by all its particles, so each row comes out
@@ -57,13 +90,13 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     const int threads = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
     {
-      local_.resize(static_cast<std::size_t>(threads));
       block_sum.assign(static_cast<std::size_t>(threads) + 1, 0);
     }
     // The thread's rows, back to back in local[0, used). Sized from the previous list (its share plus
     // 10 %), grown by a quarter when short: doubling made this buffer up to twice the list at the peak.
-    std::vector<std::uint32_t>& local = local_[t];
-    local.resize(out.j.size() / static_cast<std::size_t>(threads) * 11 / 10);
+    // Not zero-filled (make_unique_for_overwrite): every entry read back was written.
+    std::size_t capacity = out.j.size() / static_cast<std::size_t>(threads) * 11 / 10;
+    auto local = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
     std::size_t used = 0;
     const auto cell_at_or_after = [&](long particles) {
       const auto end = cell_start_.begin() + static_cast<std::ptrdiff_t>(total);
@@ -127,7 +160,12 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
         // A row holds at most m entries (room for them per row, not per cell: one crowded cell
         // could otherwise ask for m^2).
-        if (local.size() < used + m) local.resize(std::max(local.size() + local.size() / 4, used + m));
+        if (capacity < used + m) {
+          capacity = std::max(capacity + capacity / 4, used + m);
+          auto grown = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
+          std::copy(local.get(), local.get() + used, grown.get());
+          local = std::move(grown);
+        }
         // pd.is_pair(in, i, cand[k]) on the copied coordinates, in two loops: the tests into a mask
         // over contiguous arrays, with no store that depends on the outcome, which vectorises; then
         // the listed candidates moved to the row (the one serial dependency, len).
@@ -138,7 +176,7 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
           for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
           on[k] = static_cast<std::uint8_t>(pd.within(dx) & (cand[k] != i) & (fi | cand_fluid[k]));
         }
-        std::uint32_t* const row = local.data() + used;
+        std::uint32_t* const row = local.get() + used;
         std::size_t len = 0;
         for (std::size_t k = 0; k < m; ++k) {
           row[len] = cand[k];
@@ -167,12 +205,12 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     for (std::size_t c = c_lo; c < c_hi; ++c)
       for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
         const std::uint32_t i = cell_items_[q];
-        const auto from = local.begin() + row_at_[i];
+        const std::uint32_t* const from = local.get() + row_at_[i];
         std::copy(from, from + (out.offset[i + 1] - out.offset[i]), out.j.begin() + out.offset[i]);
       }
     // Released, not kept for the next build: with it the list existed twice between builds, which
     // made a quarter of the peak memory at 1e6 particles (sph-bench Memory).
-    std::vector<std::uint32_t>().swap(local);
+    local.reset();
   }
 }
 

@@ -16,9 +16,10 @@ class CellListSearch final : public NeighborSearch<D> {
 
  private:
   // Kept between builds so that a rebuild reuses their memory.
-  std::vector<std::uint32_t> cell_start_, cell_items_, cell_of_, fill_;
+  std::vector<std::uint32_t> cell_start_, cell_items_, cell_of_;
+  std::vector<std::vector<std::uint32_t>> count_;  // per thread: particles per cell, then its start in each cell
+  std::vector<std::uint32_t> range_start_;          // particles in each thread's range of cells
   std::vector<std::uint32_t> row_at_;               // start of row i in its thread's buffer
-  std::vector<std::vector<std::uint32_t>> local_;  // per-thread row buffers
 };
 
 extern template class CellListSearch<1>;

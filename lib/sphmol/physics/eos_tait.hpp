@@ -38,8 +38,12 @@ class TaitEos final : public Term<D> {
   void apply(Workspace<D>& w) const override {
     // A whole exponent (gamma = 7 for water) by repeated squaring: four multiplications instead of a
     // pow call, which was 4 % of a dam-break step (perf); within a few ulp of pow.
-    if (whole_gamma_ > 0) run(w, [n = whole_gamma_](double r) { return power(r, n); });
-    else run(w, [g = law_.gamma](double r) { return std::pow(r, g); });
+    if (whole_gamma_ > 0)
+      run(w, [n = whole_gamma_](const double* r, double* rg, std::size_t m) { power_run(r, rg, m, n); });
+    else
+      run(w, [g = law_.gamma](const double* r, double* rg, std::size_t m) {
+        for (std::size_t k = 0; k < m; ++k) rg[k] = std::pow(r[k], g);
+      });
   }
   bool runs_in_team() const override { return true; }  // worksharing loops only (Term::runs_in_team)
   const TaitLaw& law() const { return law_; }
@@ -52,28 +56,59 @@ class TaitEos final : public Term<D> {
     }
     return result;
   }
+  // power(x[k], n) for k in [0, m <= kRun): the same multiplications in the same order, one sweep over
+  // the run per bit of n, so that they vectorise.
+  static constexpr std::size_t kRun = 64;
+  static void power_run(const double* x, double* result, std::size_t m, unsigned n) {
+    double sq[kRun];
+    for (std::size_t k = 0; k < m; ++k) {
+      sq[k] = x[k];
+      result[k] = (n & 1u) ? x[k] : 1.0;
+    }
+    for (n >>= 1u; n > 0; n >>= 1u) {
+      for (std::size_t k = 0; k < m; ++k) sq[k] *= sq[k];
+      if (n & 1u)
+        for (std::size_t k = 0; k < m; ++k) result[k] *= sq[k];
+    }
+  }
 
  private:
-  template <class Pow>
-  void run(Workspace<D>& w, Pow pow_gamma) const {
+  // The particles in runs of kRun: rho / rho0_i, its power, then p and c, each a loop that vectorises.
+  template <class PowRun>
+  void run(Workspace<D>& w, PowRun pow_run) const {
     const double c0 = std::sqrt(law_.B * law_.gamma / law_.rho0);
     // The particles' own rest densities (Particles::rest_density), for [0, size); the rest (generated
     // particles) keep rho0. A workspace without particles (unit tests of the law alone) has no rest densities of its own.
     const double* own = w.particles ? w.particles->rest_density.data() : nullptr;
     const std::size_t n_own = w.particles ? std::min(w.particles->rest_density.size(), w.n) : 0;
     // B_i / rho0_i = B / rho0 for every phase (one c0).
-    const double b_per_rho0 = law_.B / law_.rho0;
+    const double b_per_rho0 = law_.B / law_.rho0, floor = floor_, rho0 = law_.rho0, B = law_.B;
+    const double* const rho = w.rho.data();
+    double* const p = w.p.data();
+    double* const c = w.c.data();
+    const std::size_t runs_own = (n_own + kRun - 1) / kRun;
 #pragma omp for schedule(static) nowait
-    for (std::size_t i = 0; i < n_own; ++i) {
-      const double r = w.rho[i] / own[i], rg = pow_gamma(r);
-      w.p[i] = std::max(floor_, b_per_rho0 * own[i] * (rg - 1.0));
-      w.c[i] = c0 * std::sqrt(rg / r);
+    for (std::size_t b = 0; b < runs_own; ++b) {
+      const std::size_t i0 = b * kRun, m = std::min(kRun, n_own - i0);
+      double r[kRun], rg[kRun];
+      for (std::size_t k = 0; k < m; ++k) r[k] = rho[i0 + k] / own[i0 + k];
+      pow_run(r, rg, m);
+      for (std::size_t k = 0; k < m; ++k) {
+        p[i0 + k] = std::max(floor, b_per_rho0 * own[i0 + k] * (rg[k] - 1.0));
+        c[i0 + k] = c0 * std::sqrt(rg[k] / r[k]);
+      }
     }
+    const std::size_t rest = w.n - n_own, runs_rest = (rest + kRun - 1) / kRun;
 #pragma omp for schedule(static)
-    for (std::size_t i = n_own; i < w.n; ++i) {
-      const double r = w.rho[i] / law_.rho0, rg = pow_gamma(r);
-      w.p[i] = std::max(floor_, law_.B * (rg - 1.0));
-      w.c[i] = c0 * std::sqrt(rg / r);
+    for (std::size_t b = 0; b < runs_rest; ++b) {
+      const std::size_t i0 = n_own + b * kRun, m = std::min(kRun, w.n - i0);
+      double r[kRun], rg[kRun];
+      for (std::size_t k = 0; k < m; ++k) r[k] = rho[i0 + k] / rho0;
+      pow_run(r, rg, m);
+      for (std::size_t k = 0; k < m; ++k) {
+        p[i0 + k] = std::max(floor, B * (rg[k] - 1.0));
+        c[i0 + k] = c0 * std::sqrt(rg[k] / r[k]);
+      }
     }
   }
 

@@ -151,10 +151,10 @@ class FusedPairPass final : public Term<D> {
     }
 #pragma omp for schedule(static) nowait
     for (std::size_t b = 0; b < twin_blocks_; ++b) twins_.find_block_deps(verlet, RowSchedule::kChunk, b);
-    bool found = true;
-#pragma omp for schedule(static) nowait
-    for (std::size_t i = 0; i < nf; ++i) found = twins_.find_twins(verlet, i) && found;
-    if (!found) twins_complete_.store(false, std::memory_order_relaxed);
+    // Each thread the twins of an equal range of rows (the tables do not depend on the split).
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads()), t = static_cast<std::size_t>(omp_get_thread_num());
+    if (!twins_.find_twins(verlet, nf * t / threads, nf * (t + 1) / threads))
+      twins_complete_.store(false, std::memory_order_relaxed);
 #pragma omp barrier
 #pragma omp single
     {

@@ -214,11 +214,22 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     for (int d = 0; d < D; ++d) {
       const double* xs = y + layout_.position(d);
       const double* vs = y + layout_.velocity(d);
+      double* const wx = ws_.x[d].data();
+      double* const wv = ws_.v[d].data();
+      if (!ord && !domain_.periodic[d]) {
+        // In storage order and not wrapped: plain copies, which vectorise (wrap is the identity).
 #pragma omp for schedule(static) nowait
-      for (std::size_t i = 0; i < nf; ++i) {
-        const std::size_t k = ord ? ord[i] : i;
-        ws_.x[d][i] = domain_.wrap(d, xs[k]);
-        ws_.v[d][i] = vs[k];
+        for (std::size_t i = 0; i < nf; ++i) {
+          wx[i] = xs[i];
+          wv[i] = vs[i];
+        }
+      } else {
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < nf; ++i) {
+          const std::size_t k = ord ? ord[i] : i;
+          wx[i] = domain_.wrap(d, xs[k]);
+          wv[i] = vs[k];
+        }
       }
     }
     if (moving_walls_) {

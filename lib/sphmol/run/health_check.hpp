@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -98,8 +99,18 @@ class HealthCheck {
       }
       s.vmax2 = std::max(s.vmax2, v2);
       s.ke += 0.5 * m[i] * w2;
-      if (i < in.nrho)
-        s.el += m[i] * limits_.elastic.per_mass(in.rho[i], static_cast<std::size_t>(i) < own.size() ? own[i] : 0.0);
+    }
+    // The elastic energy per unit mass of the block first (vectorised), then summed in order.
+    const long e_hi = std::min(hi, in.nrho);
+    if (e_hi > lo) {
+      double u[kSumBlock];
+      const auto own_n = static_cast<long>(own.size());
+      if (own_n == 0 || own_n >= e_hi) {
+        limits_.elastic.per_mass_block(in.rho + lo, own_n == 0 ? nullptr : own.data() + lo, e_hi - lo, u);
+      } else {
+        for (long i = lo; i < e_hi; ++i) u[i - lo] = limits_.elastic.per_mass(in.rho[i], i < own_n ? own[i] : 0.0);
+      }
+      for (long i = lo; i < e_hi; ++i) s.el += m[i] * u[i - lo];
     }
     return s;
   }
@@ -214,33 +225,55 @@ class HealthCheck {
     double* const keep = candidate_.data();
     bool bad = false;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    std::int64_t rho_ok = 1;
     const SumInputs in = sum_inputs(t, true);
     const long nb = sum_blocks();
     parts_.resize(static_cast<std::size_t>(nb));
     Sums* const part = parts_.data();
 #pragma omp parallel reduction(|| : bad)
     {
-      for (int d = 0; d < D; ++d) {
-        const double* x = y + L.position(d);
-        const double* v = y + L.velocity(d);
-        const bool bounded = !dom.periodic[d];
+      // Every test is an AND of comparisons without branches (into an integer as wide as a double,
+      // which GCC vectorises), so that the loops vectorise: a value is finite when |v| <= the
+      // largest double (false for NaN and Inf).
+      constexpr double big = std::numeric_limits<double>::max();
+      std::int64_t ok = 1;
+      // Positions and velocities by the sums' blocks: the tests, the copy and the block's sums.
 #pragma omp for schedule(static) nowait
-        for (long i = 0; i < n; ++i)
-          bad |= !std::isfinite(x[i]) || !std::isfinite(v[i]) || (bounded && (x[i] < dom.lo[d] || x[i] > dom.hi[d]));
+      for (long b = 0; b < nb; ++b) {
+        const long i0 = b * kSumBlock, i1 = std::min(n, i0 + kSumBlock);
+        for (int d = 0; d < D; ++d) {
+          const double* x = y + L.position(d);
+          const double* v = y + L.velocity(d);
+          double* kx = keep + L.position(d);
+          double* kv = keep + L.velocity(d);
+          const bool open = dom.periodic[d];
+          const double xlo = dom.lo[d], xhi = dom.hi[d];
+          for (long i = i0; i < i1; ++i) {
+            const double xi = x[i], vi = v[i];
+            ok &= static_cast<std::int64_t>((std::fabs(xi) <= big) & (std::fabs(vi) <= big) &
+                                            (open | ((xi >= xlo) & (xi <= xhi))));
+            kx[i] = xi;
+            kv[i] = vi;
+          }
+        }
+        part[b] = block_sums(y, in, b);
       }
-      for_each_by_particle(static_cast<std::size_t>(ve), static_cast<std::size_t>(size), L.n,
-                           [&](std::size_t k) { bad |= !std::isfinite(y[k]); });
-#pragma omp for schedule(static) nowait reduction(min : lo) reduction(max : hi)
+      for_each_by_particle(static_cast<std::size_t>(ve), static_cast<std::size_t>(size), L.n, [&](std::size_t k) {
+        ok &= static_cast<std::int64_t>(std::fabs(y[k]) <= big);
+        keep[k] = y[k];
+      });
+      // simd: the extremes of positive densities do not depend on the order (and are not used when
+      // some density is not positive).
+#pragma omp for simd schedule(static) nowait reduction(min : lo) reduction(max : hi) reduction(& : rho_ok)
       for (long i = 0; i < nrho; ++i) {
-        bad |= !(rho[i] > 0.0);
-        lo = std::min(lo, rho[i]);
-        hi = std::max(hi, rho[i]);
+        const double r = rho[i];
+        rho_ok &= static_cast<std::int64_t>(r > 0.0);
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
       }
-#pragma omp for schedule(static) nowait
-      for (long b = 0; b < nb; ++b) part[b] = block_sums(y, in, b);
-      for_each_by_particle(0, static_cast<std::size_t>(size), L.n, [&](std::size_t k) { keep[k] = y[k]; });
+      bad = ok == 0;
     }
-    Scan s{!bad, lo, hi, {}};
+    Scan s{!bad && rho_ok != 0, lo, hi, {}};
     for (long b = 0; b < nb; ++b) s.sums.add(part[b]);  // in block order
     return s;
   }
