@@ -37,9 +37,15 @@ namespace sphmol {
 struct MonaghanPi {
   double alpha, beta, eta;
   double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
-  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
-    const double t = hij * smooth_min0(vx, width * cbar * hij) / ((r2 + eta * eta * hij * hij) * rhobar);
+  // The band delta in v_ij . x_ij.
+  double band(double cbar, double hij) const { return width * cbar * hij; }
+  // Pi_ij from the switched sw = smooth_min0(vx, band) (<= 0).
+  double switched(double sw, double r2, double hij, double cbar, double rhobar) const {
+    const double t = hij * sw / ((r2 + eta * eta * hij * hij) * rhobar);
     return (beta * t * rhobar - alpha * cbar) * t;
+  }
+  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
+    return switched(smooth_min0(vx, band(cbar, hij)), r2, hij, cbar, rhobar);
   }
 };
 
