@@ -134,3 +134,39 @@ TEST_CASE("discretization.continuity: mass by default, volume for sod.yaml, roun
                        "discretization.smoothing_length=constant"}),
              Contains("discretization.continuity") && Contains("discretization.density: continuity"));
 }
+
+TEST_CASE("artificial viscosity switch and dynamic wall floor: defaults, round trip, bad values", "[config]") {
+  const Config c = load_config(shock);
+  CHECK(c.discretization.artificial_viscosity.switch_form == "smooth");
+  CHECK(c.discretization.artificial_viscosity.switch_width == 1e-4);
+  const Config s = load_config(shock, {"discretization.artificial_viscosity.switch=sharp"});
+  CHECK(s.discretization.artificial_viscosity.switch_form == "sharp");
+  const Config w = load_config(shock, {"discretization.artificial_viscosity.switch_width=0.03"});
+  for (const Config* x : {&s, &w}) {
+    const Config r = load_config_string(to_yaml(*x));
+    CHECK(r.discretization.artificial_viscosity.switch_form == x->discretization.artificial_viscosity.switch_form);
+    CHECK(r.discretization.artificial_viscosity.switch_width == x->discretization.artificial_viscosity.switch_width);
+  }
+  CHECK_THAT(error_of({"discretization.artificial_viscosity.switch=soft"}),
+             Contains("artificial_viscosity.switch") && Contains("soft") && Contains("smooth"));
+  CHECK_THAT(error_of({"discretization.artificial_viscosity={alpha: 1.0, switch: sharp, switch_width: 0.1}"}),
+             Contains("switch_width") && Contains("'smooth' only"));
+  for (const char* bad : {"0", "-1e-3", "1.5"})
+    CHECK_THAT(error_of({std::string("discretization.artificial_viscosity.switch_width=") + bad}),
+               Contains("artificial_viscosity.switch_width") && Contains("(0, 1]"));
+
+  const std::string dam = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
+  const Config d = load_config(dam);
+  CHECK(d.discretization.wall_density_floor_width == 1e-4);
+  const Config d0 = load_config(dam, {"discretization.wall_density_floor_width=0"});
+  CHECK(load_config_string(to_yaml(d0)).discretization.wall_density_floor_width == 0.0);
+  for (const char* bad : {"-1e-4", "1", "2"}) {
+    std::string e = "<no error>";
+    try {
+      (void)load_config(dam, {std::string("discretization.wall_density_floor_width=") + bad});
+    } catch (const ConfigError& x) {
+      e = x.what();
+    }
+    CHECK_THAT(e, Contains("wall_density_floor_width") && Contains("[0, 1)"));
+  }
+}

@@ -275,3 +275,44 @@ TEST_CASE("Tait EOS: p and c of every particle are the per-particle formulas bit
       }
     }
 }
+
+TEST_CASE("dynamic wall particles: the EOS floor rho0 is smooth, exact outside its band", "[boundary][dam_break]") {
+  // max(rho_wall, rho0) is a kink of f(t, y) that caps every fixed-step integrator at order 2; the EOS
+  // reads rho0 + g(rho - rho0), g(x) = x S(x / (width rho0)): rho0 at or below rho0, rho above
+  // rho0 (1 + width), in between strictly between (core/smooth_step.hpp).
+  const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
+  auto wall_pressures = [&](const std::string& width, const std::vector<double>& rho) {
+    const Config c = load_config(file, {"discretization.spacing=0.05", "discretization.wall_density_floor_width=" + width});
+    auto sys = make_case<2>(c)->build(c);
+    const auto& L = sys->layout();
+    std::vector<double> y = sys->initial_state(), f(y.size());
+    for (std::size_t k = 0; k < rho.size(); ++k) y[L.wall_density() + k] = rho[k];
+    sys->rhs(0.0, y.data(), f.data());
+    std::vector<double> p;
+    for (std::size_t k = 0; k < rho.size(); ++k) p.push_back(sys->pressure()[sys->particles().n_fluid + k]);
+    return p;
+  };
+  const double rho0 = 1000.0, w = 1e-4, band = w * rho0;
+  const std::vector<double> rho{rho0 - 1.0, rho0, rho0 + 0.1 * band, rho0 + 0.5 * band, rho0 + 0.9 * band,
+                                rho0 + band, rho0 + 2.0 * band, rho0 + 3.0};
+  const auto sharp = wall_pressures("0", rho), smooth = wall_pressures("1e-4", rho);
+  CHECK(sharp[0] == 0.0);
+  CHECK(smooth[0] == 0.0);
+  CHECK(smooth[1] == 0.0);
+  for (std::size_t k = 2; k < 5; ++k) {
+    INFO("rho - rho0 = " << rho[k] - rho0);
+    CHECK(smooth[k] > 0.0);
+    CHECK(smooth[k] < sharp[k]);
+  }
+  for (std::size_t k = 5; k < rho.size(); ++k) CHECK(smooth[k] == sharp[k]);
+  // Deep in the band the smooth floor is flat to every order (sharp: linear in rho - rho0).
+  CHECK(sharp[2] / sharp[3] == Approx(0.2).epsilon(1e-3));
+  CHECK(smooth[2] / smooth[3] < 1e-3);
+}
+
+TEST_CASE("wall_density_floor_width is refused where no wall is dynamic", "[config][dam_break]") {
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                               {"discretization.spacing=0.05", "discretization.wall_pressure=rest",
+                                "discretization.wall_density_floor_width=1e-3"});
+  CHECK_THROWS_WITH(make_case<2>(c)->build(c), Catch::Contains("wall_density_floor_width") && Catch::Contains("no wall is dynamic"));
+}

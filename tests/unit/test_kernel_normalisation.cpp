@@ -96,3 +96,25 @@ TEMPLATE_TEST_CASE("kernels are C1 at their support edge (no jump of W or dW/dr)
   CHECK(K::W(beyond, h) == 0.0);
   CHECK(K::dWdr(beyond, h) == 0.0);
 }
+
+TEMPLATE_TEST_CASE("the Gaussian kernels are flat to every order at q = 3 (C-infinity taper)", "[kernel][support]",
+                   sphmol::GaussianKernel<1>, sphmol::GaussianKernel<2>, sphmol::GaussianKernel<3>,
+                   sphmol::TruncatedExponentialKernel<1>, sphmol::TruncatedExponentialKernel<2>,
+                   sphmol::TruncatedExponentialKernel<3>) {
+  // A kernel that is C^m at its edge caps every fixed-step integrator at order m + 1 (each pair
+  // crossing the edge leaves O(dt^(m+2)); docs/verification.md). C^m means W(3 - e) ~ e^(m+1), i.e.
+  // W(3 - e) / W(3 - 2e) -> 2^-(m+1); the taper's ratio falls below any such power (the shifted-force
+  // cut-off, C1: 1/4).
+  using K = TestType;
+  const double h = 0.37;
+  INFO(K::name << " in " << K::dimension << "D");
+  for (double e : {0.025, 0.0125}) {
+    CHECK(K::W((3.0 - e) * h, h) / K::W((3.0 - 2 * e) * h, h) < std::pow(2.0, -12));
+    CHECK(K::dWdr((3.0 - e) * h, h) / K::dWdr((3.0 - 2 * e) * h, h) < std::pow(2.0, -11));
+    CHECK(K::W((3.0 - e) * h, h) > 0.0);
+  }
+  // Inside the taper's start the kernel is the source's Gaussian, up to the normalisation.
+  const double ratio = K::W(0.0, h);
+  for (double q : {0.5, 1.3, 2.0, 2.5})
+    CHECK(K::W(q * h, h) == Approx(ratio * std::exp(-q * q)).epsilon(1e-14));
+}

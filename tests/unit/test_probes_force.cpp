@@ -47,7 +47,8 @@ Tank make_tank(const Config& c, double speed) {
   t.model.morris_wall_velocity = d.wall_model == "morris";
   t.model.beta_max = d.wall_beta_max;
   t.model.artificial_viscosity = d.artificial_viscosity.enabled;
-  t.model.pi = {d.artificial_viscosity.alpha, d.artificial_viscosity.beta, d.artificial_viscosity.eta};
+  t.model.pi = {d.artificial_viscosity.alpha, d.artificial_viscosity.beta, d.artificial_viscosity.eta,
+                d.artificial_viscosity.switch_form == "smooth" ? d.artificial_viscosity.switch_width : 0.0};
   t.K = kernel_info<2>(d.kernel);
   return t;
 }

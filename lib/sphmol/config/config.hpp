@@ -63,6 +63,10 @@ struct ArtificialViscosityConfig {
   double alpha = 1.0;  // >= 0
   double beta = 1.0;   // >= 0 (monaghan_1997: default 2, Price 2008)
   double eta = 0.1;    // eta / h_ij, > 0 (monaghan_1992 only)
+  // The approaching-pair switch min(v_ij.x_ij, 0): "smooth" (C-infinity, band switch_width cbar h_ij;
+  // physics/artificial_viscosity.hpp) or "sharp".
+  std::string switch_form = "smooth";
+  double switch_width = 1e-4;  // in (0, 1], smooth only
 };
 
 // Artificial thermal conductivity (Price 2008; physics/artificial_conductivity.hpp); absent = off.
@@ -121,6 +125,10 @@ struct DiscretizationConfig {
   // "dynamic": dynamic boundary particles (Crespo et al. 2007): wall densities in the ODE state,
   // evolved by continuity with the fluid, pressure from the EOS (boundary/dynamic_wall_density.hpp).
   std::string wall_pressure = "rest";
+  // Width of the C-infinity floor max(rho_wall, rho0) of dynamic wall particles, in units of rho0 (>= 0;
+  // 0 = the plain max; rhs/sph_system.cpp).
+  double wall_density_floor_width = 1e-4;
+  bool wall_density_floor_width_given = false;  // for the check that some wall is dynamic (scenes: per body)
   double density_diffusion = 0.0;  // delta-SPH delta (Molteni & Colagrossi 2009), >= 0; 0 = off; needs continuity
   RepulsiveConfig repulsive;
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or

@@ -327,7 +327,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   MapReader disc = top.section("discretization",
                                {"particles_across", "spacing", "kernel", "smoothing_ratio", "density",
                                 "momentum", "viscosity", "laplacian_correction", "xsph", "boundary", "wall_model", "wall_beta_max", "wall_layers",
-                                "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure", "repulsive",
+                                "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure",
+                                "wall_density_floor_width", "repulsive",
                                 "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting", "position_correction",
                                 "position_noise", "density_diffusion", "continuity"});
   {
@@ -433,7 +434,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.reorder && d.boundary == "ghost")
       disc.fail("reorder", "not available with boundary 'ghost' (mirror images refer to the previous particle order)");
     if (disc.has("artificial_viscosity")) {
-      MapReader av = disc.section("artificial_viscosity", {"form", "alpha", "beta", "eta"});
+      MapReader av = disc.section("artificial_viscosity", {"form", "alpha", "beta", "eta", "switch", "switch_width"});
       auto& a = d.artificial_viscosity;
       a.enabled = true;
       if (const auto v = av.string("form")) a.form = av.choice("form", *v, {"monaghan_1992", "monaghan_1997"});
@@ -447,6 +448,12 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       av.check("beta", a.beta >= 0, a.beta, ">= 0");
       if (const auto v = av.real("eta")) a.eta = *v;
       av.check("eta", a.eta > 0, a.eta, "> 0 (eta / h_ij)");
+      if (const auto v = av.string("switch")) a.switch_form = av.choice("switch", *v, {"smooth", "sharp"});
+      if (a.switch_form == "sharp" && av.has("switch_width"))
+        av.fail("switch_width", "is the band of switch 'smooth' only (switch: sharp is min(v_ij.x_ij, 0))");
+      if (const auto v = av.real("switch_width")) a.switch_width = *v;
+      av.check("switch_width", a.switch_width > 0 && a.switch_width <= 1, a.switch_width,
+               "in (0, 1] (the band in cbar_ij h_ij)");
     }
     if (disc.has("artificial_conductivity")) {
       MapReader ac = disc.section("artificial_conductivity", {"alpha"});
@@ -519,6 +526,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.continuity != "mass" && d.wall_pressure == "dynamic")
       disc.fail("continuity", "'" + d.continuity + "' is for the fluid's density; dynamic wall particles (wall_pressure: "
                               "dynamic) evolve theirs by the mass-weighted sum: use continuity: mass");
+    // That some wall is dynamic (this key, or a scene body's treatment) is checked when the walls are
+    // built (rhs/assemble.cpp).
+    if (const auto v = disc.real("wall_density_floor_width")) {
+      d.wall_density_floor_width_given = true;
+      d.wall_density_floor_width = *v;
+    }
+    disc.check("wall_density_floor_width", d.wall_density_floor_width >= 0 && d.wall_density_floor_width < 1,
+               d.wall_density_floor_width, "in [0, 1) (units of fluid.density; 0 = max(rho_wall, rho0))");
     if (d.wall_pressure == "dynamic" && d.density != "continuity")
       disc.fail("wall_pressure", "'dynamic' evolves wall densities by continuity; needs discretization.density: "
                                  "continuity (got '" + d.density + "')");

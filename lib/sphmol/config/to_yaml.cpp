@@ -63,6 +63,7 @@ std::string to_yaml(const Config& c) {
     << "  xsph: " << num(d.xsph) << "\n"
     << "  boundary: " << d.boundary << "\n"
     << "  wall_pressure: " << d.wall_pressure << "\n";
+  if (d.wall_pressure == "dynamic" || d.wall_density_floor_width_given) y << "  wall_density_floor_width: " << num(d.wall_density_floor_width) << "\n";
   if (d.boundary == "ghost") y << "  wall_slip: " << d.wall_slip << "\n";
   if (d.boundary == "virtual_repulsive")
     y << "  repulsive:\n"
@@ -83,6 +84,8 @@ std::string to_yaml(const Config& c) {
     y << "  artificial_viscosity: {form: " << d.artificial_viscosity.form << ", alpha: " << num(d.artificial_viscosity.alpha)
       << ", beta: " << num(d.artificial_viscosity.beta)
       << (d.artificial_viscosity.form == "monaghan_1992" ? ", eta: " + num(d.artificial_viscosity.eta) : std::string())
+      << ", switch: " << d.artificial_viscosity.switch_form
+      << (d.artificial_viscosity.switch_form == "smooth" ? ", switch_width: " + num(d.artificial_viscosity.switch_width) : std::string())
       << "}\n";
   if (d.artificial_conductivity.enabled)
     y << "  artificial_conductivity: {alpha: " << num(d.artificial_conductivity.alpha) << "}\n";

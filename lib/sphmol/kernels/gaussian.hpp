@@ -5,21 +5,27 @@
 // family). Cut off plainly, W and dW/dr would jump at q = 3 (by e^-9 and 6 e^-9 of W(0)): the RHS
 // would be discontinuous in the positions, so every pair crossing the support (and every lattice
 // pair sitting on it, decided by round-off) leaves a time error that does not shrink with the step.
-// We use the shifted-force cut-off of molecular dynamics (Stoddard & Ford 1973; Toxvaerd & Dyre
-// 2011), U - U(r_c) - (r - r_c) U'(r_c), taken in s = q^2 so that W stays smooth at q = 0:
-//   g(q) = exp(-q^2) - e^-9 (10 - q^2),   g(3) = g'(3) = 0   (W is C1 at the support),
-// a shape change of at most 10 e^-9 = 1.2e-3 of W(0). We RENORMALISE over the ball q < 3, so that W
-// integrates to exactly 1:
-//   mass_1 = sqrt(pi) erf 3 - 42 e^-9,  mass_2 = pi (1 - e^-9) - 49.5 pi e^-9,
-//   mass_3 = pi^(3/2) erf 3 - 6 pi e^-9 - 165.6 pi e^-9.
-// The unrenormalised variant is truncated_exponential.hpp.
+// A cut-off that is C^m at q = 3 still caps every fixed-step integrator at order m + 1 (the number of
+// support crossings does not depend on the step; docs/verification.md, "Time-error floor"), so we
+// taper the Gaussian to zero with the C-infinity step S of core/smooth_step.hpp:
+//   g(q) = exp(-q^2) (1 - S((q - q_t) / (3 - q_t))),   q_t = 2.5,
+// exactly exp(-q^2) for q <= q_t and with every derivative zero at q = 3. Beyond q_t the Gaussian is
+// below e^-6.25 = 1.9e-3 of W(0), so the shape changes by at most that (the shifted-force cut-off
+// of molecular dynamics, exp(-q^2) - e^-9 (10 - q^2), changed it by 1.2e-3 and was only C1). We
+// RENORMALISE over the ball q < 3, so that W integrates to exactly 1; the taper's share of the mass
+// has no closed form and is integrated once (Simpson, error far below round-off: the integrand is
+// smooth). The unrenormalised variant is truncated_exponential.hpp.
 #include <cmath>
 #include <numbers>
 #include <string_view>
 
+#include "sphmol/core/smooth_step.hpp"
 #include "sphmol/kernels/kernel.hpp"
 
 namespace sphmol {
+
+// Where the taper starts, in q = r/h.
+inline constexpr double kGaussianTaperStart = 2.5;
 
 // Integral of exp(-q^2) over the ball q < 3 in R^D (the plain cut-off).
 template <int D>
@@ -31,23 +37,37 @@ inline double plain_gaussian_ball_mass() {
   else return std::pow(pi, 1.5) * erf3 - 6.0 * pi * e9;
 }
 
-// Integral of the shifted-force Gaussian g(q) over the ball q < 3 in R^D: that of exp(-q^2) minus
-// e^-9 times that of 10 - q^2 (2 * 21, 2 pi * 24.75, 4 pi * 41.4).
+// g(q) and dg/dq of the tapered Gaussian (above); 0 for q >= 3.
+inline void tapered_gaussian(double q, double& g, double& dg) {
+  if (q >= 3.0) { g = dg = 0.0; return; }
+  const double e = std::exp(-q * q);
+  if (q <= kGaussianTaperStart) { g = e; dg = -2.0 * q * e; return; }
+  // 1 - S(t) = S(1 - t), taken so: 1 - S would round to 0 while S(1 - t) is still ~ 1e-300.
+  constexpr double width = 3.0 - kGaussianTaperStart;
+  double s, ds;
+  smooth_step((3.0 - q) / width, s, ds);
+  g = e * s;
+  dg = -2.0 * q * g - e * ds / width;
+}
+
+// Integral of the tapered Gaussian g(q) over the ball q < 3 in R^D: that of exp(-q^2) minus the
+// taper's share, int_{q_t}^3 exp(-q^2) S(.) |S^(D-1)| q^(D-1) dq, by composite Simpson.
 template <int D>
 inline double gaussian_ball_mass() {
   constexpr double pi = std::numbers::pi;
-  const double e9 = std::exp(-9.0);
-  constexpr double poly = D == 1 ? 42.0 : D == 2 ? 49.5 * pi : 165.6 * pi;
-  return plain_gaussian_ball_mass<D>() - poly * e9;
-}
-
-// g(q) and dg/dq of the shifted-force Gaussian (above); 0 for q >= 3.
-inline void shifted_force_gaussian(double q, double& g, double& dg) {
-  if (q >= 3.0) { g = dg = 0.0; return; }
-  const double e9 = std::exp(-9.0);  // folded at compile time
-  const double e = std::exp(-q * q);
-  g = e - e9 * (10.0 - q * q);
-  dg = -2.0 * q * (e - e9);
+  constexpr double sphere = D == 1 ? 2.0 : D == 2 ? 2.0 * pi : 4.0 * pi;  // |S^(D-1)|
+  constexpr int n = 4096;                                                 // intervals (even)
+  constexpr double a = kGaussianTaperStart, dq = (3.0 - a) / n;
+  double sum = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double q = a + k * dq;
+    double g, dg;
+    tapered_gaussian(q, g, dg);
+    const double cut = std::exp(-q * q) - g;  // exp(-q^2) S((q - q_t) / (3 - q_t))
+    const double wk = k == 0 || k == n ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    sum += wk * cut * sphere * std::pow(q, D - 1);
+  }
+  return plain_gaussian_ball_mass<D>() - sum * dq / 3.0;
 }
 
 template <int D>
@@ -55,14 +75,14 @@ struct GaussianKernel : KernelFromEval<GaussianKernel<D>> {
   static constexpr int dimension = D;
   static constexpr std::string_view name = "gaussian";
   static constexpr std::string_view source =
-      "Vukčević 2012, eq 57, truncated at 3h with the shifted-force cut-off (C1) and renormalised";
+      "Vukčević 2012, eq 57, tapered to zero over 2.5h-3h (C-infinity) and renormalised";
   static constexpr double support = 3.0;
   static constexpr bool available = true;
   static inline const double sigma = 1.0 / gaussian_ball_mass<D>();
 
   static void eval(double r, double h, double& w, double& dw) {
     double g, dg;
-    shifted_force_gaussian(r / h, g, dg);
+    tapered_gaussian(r / h, g, dg);
     const double a = sigma / h_power<D>(h);
     w = a * g;
     dw = a / h * dg;

@@ -13,30 +13,49 @@
 // for approaching pairs (w_ij < 0): linear in w_ij with a signal speed instead of the quadratic
 // theta_ij of h_ij-scaled velocities, so it needs no eta and spreads a shock over fewer particles
 // (Price 2008: alpha = 1, beta = 2). Force and heating are the same pair sums as above.
+//
+// The switch. Both forms act on approaching pairs only, through min(v_ij . x_ij, 0): a kink in f(t, y)
+// where a pair turns, which caps every fixed-step integrator at order 2 (docs/verification.md, "Time-
+// error floor"). With width > 0 it is the C-infinity min of core/smooth_step.hpp,
+//   min(vx, 0) -> vx S(-vx / delta),  delta = width cbar_ij h_ij,
+// equal to min(vx, 0) for vx <= -delta and 0 for vx >= 0 (receding pairs still get nothing), and of
+// the sign of vx in between, so Pi_ij >= 0 and the heating >= 0 as before. delta is a velocity
+// (width cbar_ij) times a length (h_ij): the band is |v_ij| <~ width cbar_ij h_ij / |x_ij|, a fixed
+// fraction of the sound speed at every resolution and velocity scale. width = 0 is the sharp switch
+// exactly.
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
 
+#include "sphmol/core/smooth_step.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
 // Monaghan's Pi_ij for one pair from vx = v_ij . x_ij and r2 = |x_ij|^2. Receding pairs (vx >= 0) get
-// no viscosity: theta = 0 through min(vx, 0), with no branch. One division: t = theta / rhobar.
+// no viscosity: theta = 0 through the switch (above), with no branch. One division: t = theta / rhobar.
 struct MonaghanPi {
   double alpha, beta, eta;
-  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
-    const double t = hij * std::min(vx, 0.0) / ((r2 + eta * eta * hij * hij) * rhobar);
+  double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  // The band delta in v_ij . x_ij.
+  double band(double cbar, double hij) const { return width * cbar * hij; }
+  // Pi_ij from the switched sw = smooth_min0(vx, band) (<= 0).
+  double switched(double sw, double r2, double hij, double cbar, double rhobar) const {
+    const double t = hij * sw / ((r2 + eta * eta * hij * hij) * rhobar);
     return (beta * t * rhobar - alpha * cbar) * t;
+  }
+  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
+    return switched(smooth_min0(vx, band(cbar, hij)), r2, hij, cbar, rhobar);
   }
 };
 
-// Monaghan (1997)'s Pi_ij for one pair, same arguments as MonaghanPi (h_ij unused). vx = 0 at r2 = 0
+// Monaghan (1997)'s Pi_ij for one pair, same arguments as MonaghanPi (h_ij sets the switch's band only). vx = 0 at r2 = 0
 // (a particle's own row entry or coincident particles), where F = 0 too: no division by zero.
 struct SignalVelocityPi {
   double alpha, beta;
-  double operator()(double vx, double r2, double /*hij*/, double cbar, double rhobar) const {
-    const double w = r2 > 0.0 ? std::min(vx, 0.0) / std::sqrt(r2) : 0.0;
+  double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
+    const double w = r2 > 0.0 ? smooth_min0(vx, width * cbar * hij) / std::sqrt(r2) : 0.0;
     return -alpha * (cbar - 0.5 * beta * w) * w / rhobar;  // v_sig = (c_i + c_j - beta w)/2 = cbar - beta w/2
   }
 };
@@ -45,7 +64,8 @@ template <int D, bool WithEnergy, class Pi = MonaghanPi>
 class ArtificialViscosity final : public PairTermFor<D, ArtificialViscosity<D, WithEnergy, Pi>> {
  public:
   explicit ArtificialViscosity(Pi pi) : pi_(pi) {}
-  ArtificialViscosity(double alpha, double beta, double eta_factor) : pi_{alpha, beta, eta_factor} {}
+  ArtificialViscosity(double alpha, double beta, double eta_factor, double width = 0.0)
+      : pi_{alpha, beta, eta_factor, width} {}
   std::string_view name() const override {
     if constexpr (std::is_same_v<Pi, SignalVelocityPi>)
       return WithEnergy ? "artificial_viscosity_signal_velocity+heating" : "artificial_viscosity_signal_velocity";

@@ -64,7 +64,8 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
   model_.morris_wall_velocity = disc.wall_model == "morris";
   model_.beta_max = disc.wall_beta_max;
   model_.artificial_viscosity = disc.artificial_viscosity.enabled;
-  model_.pi = {disc.artificial_viscosity.alpha, disc.artificial_viscosity.beta, disc.artificial_viscosity.eta};
+  model_.pi = {disc.artificial_viscosity.alpha, disc.artificial_viscosity.beta, disc.artificial_viscosity.eta,
+               disc.artificial_viscosity.switch_form == "smooth" ? disc.artificial_viscosity.switch_width : 0.0};
 
   // Where the fluid can be sampled: the box of every particle at the start, widened by the kernel
   // support (periodic axes: the period).

@@ -128,7 +128,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const bool signal_velocity = av.form == "monaghan_1997";
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
                       av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass";
-  const MonaghanPi monaghan{av.alpha, av.beta, av.eta};
+  const double switch_width = av.switch_form == "smooth" ? av.switch_width : 0.0;  // 0: min(v_ij.x_ij, 0) exactly
+  const MonaghanPi monaghan{av.alpha, av.beta, av.eta, switch_width};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
     if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
@@ -201,11 +202,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
   if (av.enabled && !wc_row) {
-    const SignalVelocityPi sv{av.alpha, av.beta};
+    const SignalVelocityPi sv{av.alpha, av.beta, switch_width};
     if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
     else if (signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false, SignalVelocityPi>>(sv));
-    else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(av.alpha, av.beta, av.eta));
-    else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(av.alpha, av.beta, av.eta));
+    else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(monaghan));
+    else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(monaghan));
   }
   if (disc.artificial_conductivity.enabled)
     add("discretization.artificial_conductivity", std::make_unique<ArtificialConductivity<D>>(disc.artificial_conductivity.alpha));
@@ -258,6 +259,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   fields.energy = disc.energy;
   fields.wall_density = dynamic_walls;
   fields.wall_density_floor = fluid.density;
+  fields.wall_density_floor_width = disc.wall_density_floor_width * fluid.density;
+  if (disc.wall_density_floor_width_given && !dynamic_walls)
+    throw std::invalid_argument("discretization.wall_density_floor_width: is the floor of dynamic wall particles' density, "
+                                "and no wall is dynamic (discretization.wall_pressure '" + disc.wall_pressure +
+                                "' and no scene body with treatment: dynamic)");
   if (disc.smoothing_length == "density") fields.smoothing_length = SmoothingLengthMode::density;
   if (disc.smoothing_length == "ode") fields.smoothing_length = SmoothingLengthMode::ode;
   if (disc.energy && energy.empty())

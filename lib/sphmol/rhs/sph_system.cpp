@@ -7,6 +7,7 @@
 #include <omp.h>
 #include <stdexcept>
 
+#include "sphmol/core/smooth_step.hpp"
 #include "sphmol/neighbors/particle_reorder.hpp"
 #include "sphmol/rhs/pair_pass_plan.hpp"
 
@@ -257,11 +258,12 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
     if (e_s) gather(e_s, ws_.e);
     if (h_s) gather(h_s, ws_.hs);
     if (nw > 0) {
-      // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0.
+      // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0
+      // (smoothly: state_fields.hpp).
       const double* rw = y + layout_.wall_density();
-      const double floor = fields_.wall_density_floor;
+      const double floor = fields_.wall_density_floor, width = fields_.wall_density_floor_width;
 #pragma omp for schedule(static) nowait
-      for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = std::max(floor, rw[ord ? ord[nf + k] - nf : k]);
+      for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = floor + smooth_max0(rw[ord ? ord[nf + k] - nf : k] - floor, width);
     } else {
       // Walls without a density in the state start every evaluation from their own density: a term
       // that overwrites it (the extrapolated wall pressure) leaves walls without fluid alone, and

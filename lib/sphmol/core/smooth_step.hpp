@@ -1,0 +1,40 @@
+#pragma once
+// A C-infinity step: S(t) = 0 for t <= 0, 1 for t >= 1, and in between
+//   S(t) = psi(t) / (psi(t) + psi(1 - t)),  psi(t) = exp(-1/t)   (Tu 2011, §13.1),
+// written with one exponential as 1 / (1 + exp(1/t - 1/(1 - t))). Every derivative of S vanishes at
+// t = 0 and t = 1, so a switch, cut-off or floor built as x S(x / delta) is C-infinity where the plain
+// min / max / cut-off has a kink: a fixed-step integrator of order p then keeps order p across it
+// (a kink, crossed a fixed number of times, caps every method at order 2; docs/verification.md).
+// Branch-free (the clamp is a min/max, 1/0 = inf and exp(+-inf) are exact), so it vectorises where
+// the caller's loop does.
+#include <cmath>
+
+namespace sphmol {
+
+// S(t); NaN (0/0, from a zero-width band at x = 0) reads as t <= 0.
+inline double smooth_step(double t) {
+  const double c = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;  // also maps -0.0 and NaN to +0.0
+  return 1.0 / (1.0 + std::exp(1.0 / c - 1.0 / (1.0 - c)));
+}
+
+// S(t) and dS/dt. dS/dt = S (1 - S) (1/t^2 + 1/(1 - t)^2), with S (1 - S) = e / (1 + e)^2 taken in
+// whichever of e = exp(u), exp(-u) does not overflow.
+inline void smooth_step(double t, double& s, double& ds) {
+  if (!(t > 0.0)) { s = ds = 0.0; return; }
+  if (t >= 1.0) { s = 1.0; ds = 0.0; return; }
+  const double u = 1.0 / t - 1.0 / (1.0 - t);
+  const double e = std::exp(-std::abs(u));  // <= 1
+  const double inv = 1.0 / (1.0 + e);
+  s = u > 0.0 ? e * inv : inv;
+  ds = e * inv * inv * (1.0 / (t * t) + 1.0 / ((1.0 - t) * (1.0 - t)));
+}
+
+// A C-infinity min(x, 0): x S(-x / width). Equal to x for x <= -width, 0 for x >= 0, between x and 0
+// in between (so of the sign of min(x, 0)); width = 0 gives min(x, 0) exactly.
+inline double smooth_min0(double x, double width) { return x * smooth_step(-x / width); }
+
+// A C-infinity max(x, 0): x S(x / width). Equal to x for x >= width, 0 for x <= 0, in [0, x] between;
+// width = 0 gives max(x, 0) exactly.
+inline double smooth_max0(double x, double width) { return x * smooth_step(x / width); }
+
+}  // namespace sphmol

@@ -1,0 +1,101 @@
+// The C-infinity step (core/smooth_step.hpp) and what is built on it: the artificial viscosity's
+// smooth approaching-pair switch (physics/artificial_viscosity.hpp).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "sphmol/core/smooth_step.hpp"
+#include "sphmol/physics/artificial_viscosity.hpp"
+
+using namespace sphmol;
+
+TEST_CASE("smooth step: 0 below 0, 1 above 1, monotone, symmetric, derivative consistent", "[smooth_step]") {
+  for (double t : {-1e300, -2.0, -1e-300, -0.0, 0.0}) CHECK(smooth_step(t) == 0.0);
+  for (double t : {1.0, 1.0 + 1e-15, 3.0, 1e300}) CHECK(smooth_step(t) == 1.0);
+  CHECK(smooth_step(std::numeric_limits<double>::quiet_NaN()) == 0.0);
+  CHECK(smooth_step(0.5) == Approx(0.5).epsilon(1e-15));
+  double prev = 0.0;
+  for (int k = 1; k < 1000; ++k) {
+    const double t = k / 1000.0, s = smooth_step(t);
+    CHECK(s >= prev);
+    prev = s;
+    CHECK(s + smooth_step(1.0 - t) == Approx(1.0).epsilon(1e-14));
+    double s2, ds;
+    smooth_step(t, s2, ds);
+    CHECK(s2 == Approx(s).epsilon(1e-14).margin(1e-300));
+    const double e = 1e-6;
+    CHECK(ds == Approx((smooth_step(t + e) - smooth_step(t - e)) / (2 * e)).epsilon(1e-6).margin(1e-9));
+    CHECK(ds >= 0.0);
+  }
+  double s, ds;
+  smooth_step(0.0, s, ds);
+  CHECK((s == 0.0 && ds == 0.0));
+  smooth_step(1.0, s, ds);
+  CHECK((s == 1.0 && ds == 0.0));
+  smooth_step(1e-3, s, ds);  // exp(-1000) underflows: no NaN from 0 * inf
+  CHECK((s == 0.0 && ds == 0.0));
+}
+
+TEST_CASE("smooth step is flat to every order at its ends (C-infinity, not C^m)", "[smooth_step]") {
+  // A step that is C^m at t = 0 behaves like t^(m+1) there: S(t) / S(2t) -> 2^-(m+1). Here the ratio
+  // falls below any power: exp(-1/t + 1/(2t)) up to the denominators. (The end t = 1 is the same by
+  // S(t) + S(1 - t) = 1, checked above.)
+  for (double t : {0.025, 0.01}) {
+    CHECK(smooth_step(t) / smooth_step(2 * t) < std::pow(2.0, -20));
+  }
+}
+
+TEST_CASE("smooth min and max: exact outside the band, of the right sign inside, width 0 is the kink", "[smooth_step]") {
+  const double w = 0.3;
+  for (double x : {-5.0, -0.3, -0.3 - 1e-12}) CHECK(smooth_min0(x, w) == x);
+  for (double x : {0.0, 1e-300, 0.1, 7.0}) CHECK(smooth_min0(x, w) == 0.0);
+  for (double x : {-0.29, -0.15, -0.01}) {
+    CHECK(smooth_min0(x, w) < 0.0);
+    CHECK(smooth_min0(x, w) > x);
+  }
+  for (double x : {5.0, 0.3, 0.3 + 1e-12}) CHECK(smooth_max0(x, w) == x);
+  for (double x : {0.0, -1e-300, -0.1, -7.0}) CHECK(smooth_max0(x, w) == 0.0);
+  for (double x : {0.29, 0.15, 0.01}) {
+    CHECK(smooth_max0(x, w) > 0.0);
+    CHECK(smooth_max0(x, w) < x);
+  }
+  for (double x : {-2.0, -1e-300, 0.0, 1e-300, 3.0}) {
+    CHECK(smooth_min0(x, 0.0) == std::min(x, 0.0));
+    CHECK(smooth_max0(x, 0.0) == std::max(x, 0.0));
+  }
+  // rho0 + smooth_max0(rho - rho0, 0) is rho or rho0 exactly (Sterbenz: rho - rho0 is exact within a
+  // factor 2), the plain floor max(rho, rho0) of dynamic walls.
+  for (double rho : {999.0, 1000.0, 1000.0 + 1e-10, 1003.7}) CHECK(1000.0 + smooth_max0(rho - 1000.0, 0.0) == std::max(rho, 1000.0));
+}
+
+TEMPLATE_TEST_CASE("smooth viscosity switch: Monaghan outside the band, zero when receding, Pi >= 0, smooth at 0",
+                   "[smooth_step][physics]", MonaghanPi, SignalVelocityPi) {
+  const double r2 = 0.04, hij = 0.13, cbar = 3.0, rhobar = 1.2, width = 0.01;
+  TestType sharp, smooth;
+  if constexpr (std::is_same_v<TestType, MonaghanPi>) {
+    sharp = MonaghanPi{1.0, 2.0, 0.1};
+    smooth = MonaghanPi{1.0, 2.0, 0.1, width};
+  } else {
+    sharp = SignalVelocityPi{1.0, 2.0};
+    smooth = SignalVelocityPi{1.0, 2.0, width};
+  }
+  const double delta = width * cbar * hij;  // the band in v_ij . x_ij
+  // Approaching faster than the band: Monaghan's Pi exactly.
+  for (double vx : {-1.0, -0.1, -delta, -delta * (1 + 1e-12)}) CHECK(smooth(vx, r2, hij, cbar, rhobar) == sharp(vx, r2, hij, cbar, rhobar));
+  // Receding (and at rest): nothing, as before.
+  for (double vx : {0.0, 1e-300, 1e-3, 1.0}) {
+    CHECK(smooth(vx, r2, hij, cbar, rhobar) == 0.0);
+    CHECK(sharp(vx, r2, hij, cbar, rhobar) == 0.0);
+  }
+  // In the band: dissipative (Pi >= 0, as the heating 1/2 m Pi F v_ij.x_ij >= 0 needs with F < 0), and
+  // at most Monaghan's value.
+  for (int k = 1; k < 100; ++k) {
+    const double vx = -delta * k / 100.0, p = smooth(vx, r2, hij, cbar, rhobar);
+    CHECK(p >= 0.0);
+    CHECK(p <= sharp(vx, r2, hij, cbar, rhobar));
+  }
+  // The sharp switch is linear in vx at 0 (a kink); the smooth one vanishes faster than any power.
+  const double a = -0.02 * delta, b = -0.04 * delta;
+  CHECK(sharp(a, r2, hij, cbar, rhobar) / sharp(b, r2, hij, cbar, rhobar) == Approx(0.5).epsilon(0.01));
+  CHECK(smooth(a, r2, hij, cbar, rhobar) / smooth(b, r2, hij, cbar, rhobar) < std::pow(2.0, -20));
+}
