@@ -103,6 +103,7 @@ TEST_CASE("1-D shock tube with a resolved smooth viscosity switch: Verner 8(5)6 
   // speed, a 5x larger L1 error in u, so not the shipped setting): 3.5e-7, 1.1e-8, 2.1e-11 at dt = 5e-4,
   // 2.5e-4, 1.25e-4 (orders 5.0, 9.1), sharp 2.2e-7, 6.4e-8, 1.5e-8.
   std::vector<std::string> o = kTube;
+  o.push_back("discretization.artificial_viscosity.switch=smooth");
   o.push_back("discretization.artificial_viscosity.switch_width=1");
   const auto j = time_study("tube_smooth_av", "shock_tube_1d.yaml", o, "arkode_erk:ARKODE_VERNER_8_5_6", 5e-4, 3);
   check_series(j, "arkode_erk:ARKODE_VERNER_8_5_6", 4.5, 1e-9, 5.0);

@@ -268,9 +268,10 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       // Walls without a density in the state start every evaluation from their own density: a term
       // that overwrites it (the extrapolated wall pressure) leaves walls without fluid alone, and
       // they must not keep a value from an earlier evaluation (the output reads them).
+      // (P is in workspace order: reordering permutes it with the workspace.)
       const double* rw = P.rho.data();
 #pragma omp for schedule(static) nowait
-      for (std::size_t i = nf; i < nb; ++i) ws_.rho[i] = rw[ord ? ord[i] : i];
+      for (std::size_t i = nf; i < nb; ++i) ws_.rho[i] = rw[i];
     }
     if (h_from_density) {  // Niedoba 2012, eq 2.67
 #pragma omp for schedule(static) nowait
