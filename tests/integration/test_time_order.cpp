@@ -124,14 +124,16 @@ TEST_CASE("short dam break: leapfrog order 2 and Bogacki-Shampine order 3", "[in
   check_series(j, "arkode_erk:ARKODE_BOGACKI_SHAMPINE_4_2_3", 2.5, 2e-7);
 }
 
-TEST_CASE("short dam break, the shipped formulation: Verner 8(5)6 at order >= 5", "[integration][time_order]") {
-  // dp = 0.1 (200 fluid particles), t_end = 0.03 s, dt = 5e-5 s / 2^k. The smooth viscosity switch and
+TEST_CASE("short dam break with the smooth viscosity switch: Verner 8(5)6 at order >= 5", "[integration][time_order]") {
+  // dp = 0.1 (200 fluid particles), t_end = 0.03 s, dt = 5e-5 s / 2^k. The smooth viscosity switch (an
+  // option: the shipped file keeps the sharp one, 1.3x cheaper with the same front) and
   // the smooth wall density floor (core/smooth_step.hpp) make f C-infinity: 3.1e-9, 7.3e-11, 9.5e-13
   // (orders 5.4, 6.3; ARKODE_VERNER_8_5_6 is of order 6). Each kink alone caps the order (from dt =
   // 1e-4: sharp floor 1.4e-7, 3.0e-8, 1.1e-8; sharp switch 4.4e-8, 2.8e-9, 4.6e-10; both sharp
   // 1.0e-7, 3.4e-8, 8.7e-9, order 1.8).
   const auto j = time_study("dam_break_verner", "dam_break.yaml",
-                            {"discretization.spacing=0.1", "time.t_end=0.03", "output.times=[0.03]", "output.plots=false"},
+                            {"discretization.spacing=0.1", "time.t_end=0.03", "output.times=[0.03]", "output.plots=false",
+                             "discretization.artificial_viscosity.switch=smooth"},
                             "arkode_erk:ARKODE_VERNER_8_5_6", 5e-5, 3);
   check_series(j, "arkode_erk:ARKODE_VERNER_8_5_6", 5.0, 1e-11);
 }

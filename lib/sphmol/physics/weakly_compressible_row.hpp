@@ -175,7 +175,6 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     const double voli = WithDiffusion && Reverse ? pi.vol : 0.0;
     double vi[D];
     for (int d = 0; d < D; ++d) vi[d] = pi.v[d];
-    alignas(32) double in_band[kBlock];  // per pair, not a running count (which keeps the loop scalar)
     for (std::uint32_t k = 0; k < n; ++k) {
       double vx = 0.0, r2 = 0.0;
       for (int d = 0; d < D; ++d) {
@@ -188,23 +187,21 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         pd[k] = density_diffusion_pair(ri, nb.rho[k], F[k], nb.vol[k]);
         if constexpr (Reverse) pr[k] = density_diffusion_pair(nb.rho[k], ri, F[k], voli);
       }
-      const double cbar = 0.5 * (ci + nb.c[k]), sw = std::min(vx, 0.0);
-      const double pij = pi_.switched(sw, r2, hij, cbar, 0.5 * (ri + nb.rho[k]));
+      const double pij = pi_.switched(std::min(vx, 0.0), r2, hij, 0.5 * (ci + nb.c[k]), 0.5 * (ri + nb.rho[k]));
       ps[k] = mk * (qi + nb.q[k] + pij) * F[k];
-      in_band[k] = sw > -pi_.band(cbar, hij) ? sw : 0.0;  // nonzero inside the band
     }
     // The viscosity's smooth switch (physics/artificial_viscosity.hpp) differs from min(vx, 0) inside
-    // its band only: those pairs again, one by one (few pairs are in a narrow band, and its exponential
-    // would keep the loop above from vectorising).
-    for (std::uint32_t k = 0; k < n; ++k) {
-      if (in_band[k] == 0.0) continue;
-      {
+    // its band only: those pairs again, one by one (its exponential would keep the loop above from
+    // vectorising). The sharp switch (width 0, the default) skips this loop: one test per row.
+    if (pi_.width > 0.0) {
+      for (std::uint32_t k = 0; k < n; ++k) {
         double vx = 0.0, r2 = 0.0;
         for (int d = 0; d < D; ++d) {
           vx += (vi[d] - nb.v[d][k]) * dx[d][k];
           r2 += dx[d][k] * dx[d][k];
         }
         const double hij = SameH ? hi : 0.5 * (hi + hj[k]), cbar = 0.5 * (ci + nb.c[k]);
+        if (!(vx < 0.0 && vx > -pi_.band(cbar, hij))) continue;
         const double mk = SameMass ? mi : mj[k];
         ps[k] = mk * (qi + nb.q[k] + pi_(vx, r2, hij, cbar, 0.5 * (ri + nb.rho[k]))) * F[k];
       }
