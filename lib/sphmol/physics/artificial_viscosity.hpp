@@ -54,8 +54,9 @@ struct MonaghanPi {
 struct SignalVelocityPi {
   double alpha, beta;
   double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double band(double cbar, double hij) const { return width * cbar * hij; }  // as MonaghanPi's
   double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
-    const double w = r2 > 0.0 ? smooth_min0(vx, width * cbar * hij) / std::sqrt(r2) : 0.0;
+    const double w = r2 > 0.0 ? smooth_min0(vx, band(cbar, hij)) / std::sqrt(r2) : 0.0;
     return -alpha * (cbar - 0.5 * beta * w) * w / rhobar;  // v_sig = (c_i + c_j - beta w)/2 = cbar - beta w/2
   }
 };
