@@ -22,14 +22,16 @@ template <int D>
 class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-         double t0, double tolerance, double rebalance_threshold)
-      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
+         double t0, double tolerance, double rebalance_threshold, const HealthLimits& limits)
+      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)),
+        health_(comm, sys_, whole, y0, y_, t0, limits),
         whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
   int check(double t, double, int signal) override { return health_(t, y_.data(), signal); }
+  void gather_last_good(std::vector<double>& whole) override { sys_.gather(health_.last_good_state().data(), whole); }
   int largest_signal(int signal) override { return comm_.max(signal); }
   OwnedPiece<D> owned_piece(double t) override {
     sys_.refresh_local(t, y_.data());
@@ -99,6 +101,7 @@ class MpiRun final : public PartitionedRun<D> {
     for (std::size_t i = 0; i < carried.size(); ++i) js[carried_keys[i]] = encode_doubles(carried[i]);
     integrator.initialize(sys_, t, y_.data());
     integrator.restore_state(js);
+    health_.moved(y_);  // the last good state, which y_ is (between steps), in the new share
   }
   // The leapfrogs' per-particle arrays: f of the state's length, and those of kPositionLength (carried
   // in the position blocks of a state-length array).
@@ -216,22 +219,26 @@ MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_
 
 template <int D>
 std::unique_ptr<PartitionedRun<D>> MpiRunPartitioner::make(const Config& config, const SphSystem<D>& whole,
-                                                           const std::vector<double>& y0, double t0) const {
+                                                           const std::vector<double>& y0, double t0,
+                                                           const HealthLimits& limits) const {
   refuse_unsupported(config, whole);
-  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, t0, tolerance_, rebalance_threshold_);
+  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, t0, tolerance_, rebalance_threshold_, limits);
 }
 
 std::unique_ptr<PartitionedRun<1>> MpiRunPartitioner::partition(const Config& c, const SphSystem<1>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<1>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const HealthLimits& limits) const {
+  return make<1>(c, w, y0, t0, limits);
 }
 std::unique_ptr<PartitionedRun<2>> MpiRunPartitioner::partition(const Config& c, const SphSystem<2>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<2>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const HealthLimits& limits) const {
+  return make<2>(c, w, y0, t0, limits);
 }
 std::unique_ptr<PartitionedRun<3>> MpiRunPartitioner::partition(const Config& c, const SphSystem<3>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<3>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const HealthLimits& limits) const {
+  return make<3>(c, w, y0, t0, limits);
 }
 
 }  // namespace sphmol::parallel

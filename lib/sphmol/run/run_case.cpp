@@ -78,7 +78,15 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
   // rank count wrote it).
-  if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
+  // The health check's physical bounds come from the whole scene at the start, as the serial run
+  // makes them after its first evaluation (the elastic energy reads that evaluation's densities):
+  // over ranks every rank evaluates its whole scene once for them.
+  if (opt.partitioner) {
+    std::vector<double> first;
+    sys->refresh_fields(t, y.data(), first);
+    part = opt.partitioner->partition(config, *sys, y, t,
+                                      health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
+  }
   const bool root = !part || opt.partitioner->root();
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
@@ -274,8 +282,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()},
                {"last_good_t", part ? part->last_good_time() : health->last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
-    if (out.enabled && health) {
-      write_last_good_state<D>(*sys, health->last_good_state().data(), out.path("last_good_state.csv"));
+    // Over ranks the last good state is gathered from every rank (all of them are here, having
+    // thrown the same BlowUp at the same check), and the root writes it.
+    std::vector<double> last_good;
+    if (part && own.enabled) part->gather_last_good(last_good);
+    const std::vector<double>* good = part ? &last_good : health ? &health->last_good_state() : nullptr;
+    if (out.enabled && good && !good->empty()) {
+      write_last_good_state<D>(*sys, good->data(), out.path("last_good_state.csv"));
       out.record("last_good_state.csv");
       blow_up["state_file"] = "last_good_state.csv";
     }
