@@ -39,6 +39,10 @@ class PartitionedRun {
   // returns the largest of all ranks', the same on every rank, so that the ranks stop at the same
   // step whichever of them a signal reached, and when (it travels in the check's own collective).
   virtual int check(double t, double h, int signal) = 0;
+  // Before the first check: the physical bounds (run/health_limits.hpp) made from the whole scene
+  // as the serial run makes them, with the whole state (t0, y0) the run starts from.
+  virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
+                                  const HealthLimits& limits) = 0;
   // Collective, after check() threw: the last state that passed the checks, whole in the serial
   // layout, on every rank (for the root to write as the serial run does, run/last_good_state.hpp).
   virtual void gather_last_good(std::vector<double>& whole) = 0;
@@ -69,18 +73,13 @@ class RunPartitioner {
   // The rank that writes files and the summary.
   virtual bool root() const = 0;
   // Collective. `whole`: the scene as built on every rank; (t0, y0) the whole state the run starts
-  // from; `limits`: the physical bounds of the health check (run/health_limits.hpp), made from the
-  // whole scene as the serial run makes them. Throws ConfigError on every rank for a configuration
-  // the partitioned run does not support.
+  // from. Throws ConfigError on every rank for a configuration the partitioned run does not support.
   virtual std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
-                                                       const std::vector<double>& y0, double t0,
-                                                       const HealthLimits& limits) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
   virtual std::unique_ptr<PartitionedRun<2>> partition(const Config& config, const SphSystem<2>& whole,
-                                                       const std::vector<double>& y0, double t0,
-                                                       const HealthLimits& limits) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
   virtual std::unique_ptr<PartitionedRun<3>> partition(const Config& config, const SphSystem<3>& whole,
-                                                       const std::vector<double>& y0, double t0,
-                                                       const HealthLimits& limits) const = 0;
+                                                       const std::vector<double>& y0, double t0) const = 0;
 };
 
 }  // namespace sphmol

@@ -78,15 +78,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
   // rank count wrote it).
-  // The health check's physical bounds come from the whole scene at the start, as the serial run
-  // makes them after its first evaluation (the elastic energy reads that evaluation's densities):
-  // over ranks every rank evaluates its whole scene once for them.
-  if (opt.partitioner) {
-    std::vector<double> first;
-    sys->refresh_fields(t, y.data(), first);
-    part = opt.partitioner->partition(config, *sys, y, t,
-                                      health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
-  }
+  if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
   const bool root = !part || opt.partitioner->root();
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
@@ -114,6 +106,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
   int agreed_signal = 0;
   if (part) {
+    // The physical bounds from the whole scene, as the serial run makes them after its first
+    // evaluation (the elastic energy reads that evaluation's densities): every rank evaluates its
+    // whole scene once for them (after the partition, which takes the scene before any evaluation).
+    std::vector<double> first;
+    sys->refresh_fields(t, y.data(), first);
+    part->start_health_check(*sys, y, t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
       agreed_signal = part->check(tt, hh, pending_signal());
     });
