@@ -101,8 +101,14 @@ class DistributedHealthCheck {
     const auto& gid = sys_.gid();
     const long n = static_cast<long>(L.n);
     const auto& own = sys_.owned().rest_density;
+    // The owned fluid's densities of the latest evaluation (DistributedSystem::owned_density), gathered
+    // from the local system's rows once.
     rho_.resize(static_cast<std::size_t>(n));
-    for (long o = 0; o < n; ++o) rho_[static_cast<std::size_t>(o)] = sys_.owned_density(static_cast<std::size_t>(o));
+    if (n > 0) {
+      const auto& rows = sys_.owned_rows();
+      const std::vector<double>& local = sys_.local_system().density();
+      for (long o = 0; o < n; ++o) rho_[static_cast<std::size_t>(o)] = local[rows[static_cast<std::size_t>(o)]];
+    }
     PhysicalInputs<D> in;
     in.V = bounds_.frame_velocity(t);
     in.mass = sys_.owned().mass.data();
@@ -124,8 +130,19 @@ class DistributedHealthCheck {
         }
       }
     if (bounds_.density_bounded()) {
+      // With one rest density the extremes first (as the serial check's scan): the particles are
+      // looked at one by one only when some of them is past the bound.
       const double r0 = bounds_.limits().rho0;
-      for (long o = 0; o < n; ++o) {
+      bool past = !own.empty();
+      if (!past && n > 0) {
+        double lo = rho_[0], hi = rho_[0];
+        for (long o = 1; o < n; ++o) {
+          lo = std::min(lo, rho_[static_cast<std::size_t>(o)]);
+          hi = std::max(hi, rho_[static_cast<std::size_t>(o)]);
+        }
+        past = bounds_.outside_density(lo / r0) || bounds_.outside_density(hi / r0);
+      }
+      for (long o = 0; o < n && past; ++o) {
         const auto k = static_cast<std::size_t>(o);
         const double ratio = rho_[k] / (own.empty() ? r0 : own[k]);
         const long id = static_cast<long>(gid[k]);
