@@ -200,6 +200,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   ProgressLine progress(opt.progress, t_first, config.time.t_end);
   int signal = 0;
   nlohmann::json blow_up;
+  // Inside a step: a BlowUp from there (the health check, the integrator's step-size collapse) is
+  // thrown on every rank alike over ranks, one from a root-only measurement on the root only.
+  bool stepping = false;
   // Observers with their own sampling times (probes with `every`): the loop stops there as well.
   const auto next_observer_time = [&] {
     double tn = inf;
@@ -243,7 +246,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   while (next_out < times.size()) {
     const double stop = std::min({times[next_out], next_cp, next_observer_time()});
     while (t < stop && !(signal = signal_seen())) {
+      stepping = true;
       t = integrator->step_toward(stop);
+      stepping = false;
       if (part) part->rebalance(*integrator, t);
       if (opt.after_step) opt.after_step(t);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
@@ -280,10 +285,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()},
                {"last_good_t", part ? part->last_good_time() : health->last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
-    // Over ranks the last good state is gathered from every rank (all of them are here, having
-    // thrown the same BlowUp at the same check), and the root writes it.
+    // Over ranks the last good state is gathered from every rank when all of them are here, having
+    // thrown the same BlowUp in the same step, and the root writes it.
     std::vector<double> last_good;
-    if (part && own.enabled) part->gather_last_good(last_good);
+    if (part && own.enabled && stepping) part->gather_last_good(last_good);
     const std::vector<double>* good = part ? &last_good : health ? &health->last_good_state() : nullptr;
     if (out.enabled && good && !good->empty()) {
       write_last_good_state<D>(*sys, good->data(), out.path("last_good_state.csv"));
