@@ -1,21 +1,31 @@
 #pragma once
-// Blow-up detection after every accepted step of a run over ranks: the numerical tests of the
-// serial check (run/health_check.hpp) on each rank's own particles, NaN/Inf in the state, a fluid
-// particle outside the domain in a non-periodic direction, density <= 0 in the latest evaluation,
-// and the CFL step collapsing; one verdict for all ranks, so every rank throws the same BlowUp (the
-// first failing rank's first failure, naming the particle by its global id) and none is left
-// waiting in a collective. The physical bounds of run/health_limits.hpp (speeds, densities and
-// energy against the scene's scales) are not checked over ranks. The same all-gather carries each
-// rank's pending signal (run/signals.hpp), so that the ranks agree at every step on whether to stop
-// (the largest signal of all) at no extra collective.
+// Blow-up detection after every accepted step of a run over ranks: the tests of the serial check
+// (run/health_check.hpp) on each rank's own particles, in its order. First the numerical ones, NaN/Inf
+// in the state, a fluid particle outside the domain in a non-periodic direction, density <= 0 in
+// the latest evaluation; then the physical bounds of the scene (run/health_limits.hpp: speed,
+// density range, mechanical energy budget, run/physical_bounds.hpp), and the CFL step collapsing.
+// One verdict for all ranks, so every rank throws the same BlowUp and none is left waiting in a
+// collective: a numerical failure is the first failing rank's first one; a speed or density bound
+// names the particle of smallest global id that exceeds it (the serial check's particle); the
+// energy bound tests the sum of the ranks' sums, added in rank order on every rank (the serial sums
+// up to round-off). One all-gather per step carries each rank's verdict, its sums and its first
+// particles past the bounds, and its pending signal (run/signals.hpp), so that the ranks also agree
+// at every step on whether to stop (the largest signal of all); the stable step's collapse is
+// tested on the step size the evaluation has already reduced. A failure costs three more
+// all-gathers for the failing rank's message. The last state that passed stays on each rank (its
+// own particles), for the run to gather and write.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
 #include "sphmol/run/health_check.hpp"
+#include "sphmol/run/health_limits.hpp"
+#include "sphmol/run/physical_bounds.hpp"
 #include "sphmol/time/blow_up.hpp"
 
 namespace sphmol::parallel {
@@ -23,14 +33,24 @@ namespace sphmol::parallel {
 template <int D>
 class DistributedHealthCheck {
  public:
-  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, double t0)
-      : comm_(comm), sys_(sys), last_good_t_(t0) {}
+  // `whole`, `y0`: the whole scene and the state at t0 (the same on every rank), for the body
+  // force's power at t0; `y_local`: this rank's part of y0.
+  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, const SphSystem<D>& whole,
+                         const std::vector<double>& y0, const std::vector<double>& y_local, double t0, HealthLimits limits)
+      : comm_(comm), sys_(sys), last_good_(y_local), last_good_t_(t0), bounds_(std::move(limits), t0) {
+    PhysicalInputs<D> in;
+    in.V = bounds_.frame_velocity(t0);
+    in.mass = whole.particles().mass.data();
+    bounds_.start(bounds_.sums(whole.layout(), y0.data(), in, static_cast<long>(whole.layout().n)));
+  }
 
   // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.
   int operator()(double t, const double* y, int signal) {
     long particle = -1;
     const std::string cause = first_failure(y, particle);
-    const std::vector<Verdict> verdicts = comm_.all_gather(Verdict{!cause.empty(), signal});
+    Verdict mine{!cause.empty(), signal};
+    if (cause.empty()) physical_sums(t, y, mine);
+    const std::vector<Verdict> verdicts = comm_.all_gather(mine);
     for (std::size_t r = 0; r < verdicts.size(); ++r) {
       if (!verdicts[r].failed) continue;
       // The failing rank's message, on every rank.
@@ -41,11 +61,13 @@ class DistributedHealthCheck {
       for (std::size_t q = 0; q < r; ++q) at += static_cast<std::size_t>(lengths[q]);
       throw BlowUp(t, particles[r], std::string(text.begin() + static_cast<long>(at), text.begin() + static_cast<long>(at) + lengths[r]));
     }
+    physical(t, verdicts);
     // Both the same on every rank (reductions).
     const double cfl = sys_.stable_step(), initial = sys_.first_stable_step();
     if (std::isfinite(initial) && !(cfl >= HealthCheck<D>::kCollapse * initial))
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial) + " s to " +
                               std::to_string(cfl) + " s");
+    last_good_.assign(y, y + sys_.size());
     last_good_t_ = t;
     int largest = 0;
     for (const Verdict& v : verdicts) largest = std::max(largest, v.signal);
@@ -53,12 +75,99 @@ class DistributedHealthCheck {
   }
 
   double last_good_time() const { return last_good_t_; }
+  // This rank's part of the last state that passed (its layout that of the state when it passed).
+  const std::vector<double>& last_good_state() const { return last_good_; }
+  // After the particles moved between ranks at the last good state (a repartition between steps):
+  // that state in the new share.
+  void moved(const std::vector<double>& y) { last_good_ = y; }
+  double body_force_work() const { return bounds_.work(); }
 
  private:
   struct Verdict {
     int failed;  // 0 or 1
     int signal;
+    // The physical bounds' sums over this rank's fluid particles, and the smallest global id past
+    // the speed and the density bound (-1: none) with its speed squared and its rho / rho0.
+    PhysicalSums<D> sums{};
+    long fast = -1;
+    double fast_v2 = 0.0;
+    long dense = -1;
+    double dense_ratio = 0.0;
   };
+
+  // This rank's part of the physical bounds, after its state has passed the numerical tests.
+  void physical_sums(double t, const double* y, Verdict& v) {
+    const auto& L = sys_.layout();
+    const auto& gid = sys_.gid();
+    const long n = static_cast<long>(L.n);
+    const auto& own = sys_.owned().rest_density;
+    // The owned fluid's densities of the latest evaluation (DistributedSystem::owned_density), gathered
+    // from the local system's rows once.
+    rho_.resize(static_cast<std::size_t>(n));
+    if (n > 0) {
+      const auto& rows = sys_.owned_rows();
+      const std::vector<double>& local = sys_.local_system().density();
+      for (long o = 0; o < n; ++o) rho_[static_cast<std::size_t>(o)] = local[rows[static_cast<std::size_t>(o)]];
+    }
+    PhysicalInputs<D> in;
+    in.V = bounds_.frame_velocity(t);
+    in.mass = sys_.owned().mass.data();
+    in.own = own.empty() ? nullptr : own.data();
+    in.own_n = static_cast<long>(own.size());
+    if (bounds_.elastic()) {
+      in.rho = rho_.data();
+      in.nrho = n;
+    }
+    v.sums = bounds_.sums(L, y, in, n);
+    if (bounds_.too_fast(v.sums.vmax2))
+      for (long o = 0; o < n; ++o) {
+        double v2 = 0.0;
+        for (int d = 0; d < D; ++d) v2 += y[L.velocity(d) + o] * y[L.velocity(d) + o];
+        const long id = static_cast<long>(gid[static_cast<std::size_t>(o)]);
+        if (bounds_.too_fast(v2) && (v.fast < 0 || id < v.fast)) {
+          v.fast = id;
+          v.fast_v2 = v2;
+        }
+      }
+    if (bounds_.density_bounded()) {
+      // With one rest density the extremes first (as the serial check's scan): the particles are
+      // looked at one by one only when some of them is past the bound.
+      const double r0 = bounds_.limits().rho0;
+      bool past = !own.empty();
+      if (!past && n > 0) {
+        double lo = rho_[0], hi = rho_[0];
+        for (long o = 1; o < n; ++o) {
+          lo = std::min(lo, rho_[static_cast<std::size_t>(o)]);
+          hi = std::max(hi, rho_[static_cast<std::size_t>(o)]);
+        }
+        past = bounds_.outside_density(lo / r0) || bounds_.outside_density(hi / r0);
+      }
+      for (long o = 0; o < n && past; ++o) {
+        const auto k = static_cast<std::size_t>(o);
+        const double ratio = rho_[k] / (own.empty() ? r0 : own[k]);
+        const long id = static_cast<long>(gid[k]);
+        if (bounds_.outside_density(ratio) && (v.dense < 0 || id < v.dense)) {
+          v.dense = id;
+          v.dense_ratio = ratio;
+        }
+      }
+    }
+  }
+
+  // The serial check's order on every rank's verdict: speed, density, energy (its sums added in rank order).
+  void physical(double t, const std::vector<Verdict>& verdicts) {
+    const Verdict* fast = nullptr;
+    const Verdict* dense = nullptr;
+    PhysicalSums<D> total;
+    for (const Verdict& v : verdicts) {
+      if (v.fast >= 0 && (!fast || v.fast < fast->fast)) fast = &v;
+      if (v.dense >= 0 && (!dense || v.dense < dense->dense)) dense = &v;
+      total.add(v.sums);
+    }
+    if (fast) throw bounds_.speed_blow_up(t, fast->fast, fast->fast_v2);
+    if (dense) throw bounds_.density_blow_up(t, dense->dense, dense->dense_ratio);
+    bounds_.energy(t, total);
+  }
 
   // This rank's first failure in the serial check's order ("" when none), and its particle.
   std::string first_failure(const double* y, long& particle) const {
@@ -95,7 +204,10 @@ class DistributedHealthCheck {
 
   Communicator comm_;
   const DistributedSystem<D>& sys_;
+  std::vector<double> last_good_;
   double last_good_t_;
+  PhysicalBounds<D> bounds_;
+  std::vector<double> rho_;  // the owned fluid's densities of the latest evaluation, in state order
 };
 
 }  // namespace sphmol::parallel

@@ -1,6 +1,7 @@
 #include "sphmol/parallel/mpi_run.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -23,13 +24,23 @@ class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
          double t0, double tolerance, double rebalance_threshold)
-      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), health_(comm, sys_, 0.0),
+      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), t0_(t0),
         whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
-  int check(double t, double, int signal) override { return health_(t, y_.data(), signal); }
+  int check(double t, double, int signal) override {
+    if (!health_) throw std::logic_error("MpiRun::check before start_health_check");
+    return (*health_)(t, y_.data(), signal);
+  }
+  void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
+                          const HealthLimits& limits) override {
+    health_.emplace(comm_, sys_, whole, y0, y_, t0, limits);
+  }
+  void gather_last_good(std::vector<double>& whole) override {
+    if (health_) sys_.gather(health_->last_good_state().data(), whole);
+  }
   int largest_signal(int signal) override { return comm_.max(signal); }
   OwnedPiece<D> owned_piece(double t) override {
     sys_.refresh_local(t, y_.data());
@@ -99,6 +110,7 @@ class MpiRun final : public PartitionedRun<D> {
     for (std::size_t i = 0; i < carried.size(); ++i) js[carried_keys[i]] = encode_doubles(carried[i]);
     integrator.initialize(sys_, t, y_.data());
     integrator.restore_state(js);
+    if (health_) health_->moved(y_);  // the last good state, which y_ is (between steps), in the new share
   }
   // The leapfrogs' per-particle arrays: f of the state's length, and those of kPositionLength (carried
   // in the position blocks of a state-length array).
@@ -132,7 +144,7 @@ class MpiRun final : public PartitionedRun<D> {
     }
     return js;
   }
-  double last_good_time() const override { return health_.last_good_time(); }
+  double last_good_time() const override { return health_ ? health_->last_good_time() : t0_; }
   double rhs_seconds() const override { return sys_.stats().rhs_seconds; }
   double search_seconds() const override { return sys_.stats().search_seconds; }
   long neighbor_rebuilds() const override { return sys_.stats().rebuilds; }
@@ -178,7 +190,8 @@ class MpiRun final : public PartitionedRun<D> {
   Communicator comm_;
   DistributedSystem<D> sys_;
   std::vector<double> y_;
-  DistributedHealthCheck<D> health_;
+  double t0_;
+  std::optional<DistributedHealthCheck<D>> health_;  // from start_health_check()
   std::vector<std::string> whole_terms_;
   long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
 };

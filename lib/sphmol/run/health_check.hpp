@@ -10,14 +10,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/run/health_limits.hpp"
-#include "sphmol/physics/body_force.hpp"
+#include "sphmol/run/physical_bounds.hpp"
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/particle_split.hpp"
 
@@ -30,7 +29,9 @@ class HealthCheck {
 
   HealthCheck(const SphSystem<D>& sys, const double* y0, double t0, HealthLimits limits = {})
       : sys_(sys), last_good_(y0, y0 + sys.size()), last_good_t_(t0), initial_cfl_(sys.stable_step()),
-        limits_(std::move(limits)), power_t_(t0), power_(body_force_power(serial_sums(y0, t0, false), t0)) {}
+        bounds_(std::move(limits), t0) {
+    bounds_.start(bounds_.sums(sys_.layout(), y0, inputs(t0, false), static_cast<long>(sys_.layout().n)));
+  }
 
   void operator()(double t, const double* y, double /*h*/) {
     const Scan s = scan(t, y);
@@ -46,119 +47,52 @@ class HealthCheck {
 
   const std::vector<double>& last_good_state() const { return last_good_; }
   double last_good_time() const { return last_good_t_; }
-  // Work done on the fluid by the body force since t0 (trapezoidal rule over the accepted steps); in
-  // the walls' moving frame, with the frame's inertial force.
-  double body_force_work() const { return work_; }
+  // Work done on the fluid by the body force since t0 (run/physical_bounds.hpp).
+  double body_force_work() const { return bounds_.work(); }
 
  private:
-  // Sums over the fluid particles for the physical bounds: the largest speed squared, the kinetic
-  // energy relative to the walls' frame, the elastic energy, and per direction sum_i m_i (v_i - V)
-  // for the body force's power. Each sum is taken over fixed blocks of kSumBlock particles and the
-  // block sums are added in block order, so the totals do not depend on the thread count while the
-  // blocks are summed in parallel inside scan()'s region.
-  static constexpr long kSumBlock = 512;
-  struct Sums {
-    double vmax2 = 0.0, ke = 0.0, el = 0.0;
-    std::array<double, D> mv{};
-    void add(const Sums& o) {
-      vmax2 = std::max(vmax2, o.vmax2);
-      ke += o.ke;
-      el += o.el;
-      for (int d = 0; d < D; ++d) mv[d] += o.mv[d];
-    }
-  };
-  struct SumInputs {
-    std::array<double, D> V{};     // the walls' frame velocity at t (0 without a frame)
-    const double* rho = nullptr;   // state order; null: no elastic energy
-    long nrho = 0;
-  };
-  SumInputs sum_inputs(double t, bool elastic) const {
-    SumInputs in;
-    if (limits_.frame.on)
-      for (int d = 0; d < D; ++d) in.V[d] = limits_.frame.V(d, t);
-    if (elastic && limits_.energy && limits_.elastic.kind != HealthLimits::Elastic::Kind::none) {
+  // The sums of the physical bounds (run/physical_bounds.hpp) are taken over fixed blocks of
+  // kSumBlock particles and the block sums are added in block order, so the totals do not depend on
+  // the thread count while the blocks are summed in parallel inside scan()'s region.
+  static constexpr long kSumBlock = PhysicalBounds<D>::kMaxBlock;
+  using Sums = PhysicalSums<D>;
+  PhysicalInputs<D> inputs(double t, bool elastic) const {
+    PhysicalInputs<D> in;
+    in.V = bounds_.frame_velocity(t);
+    in.mass = sys_.particles().mass.data();
+    const auto& own = sys_.particles().rest_density;
+    in.own = own.empty() ? nullptr : own.data();
+    in.own_n = static_cast<long>(own.size());
+    if (elastic && bounds_.elastic()) {
       const auto& rho = sys_.density();  // state order, as the masses
       in.rho = rho.data();
       in.nrho = std::min(static_cast<long>(sys_.layout().n), static_cast<long>(rho.size()));
     }
     return in;
   }
-  Sums block_sums(const double* y, const SumInputs& in, long b) const {
-    const auto& L = sys_.layout();
-    const auto& m = sys_.particles().mass;
-    const auto& own = sys_.particles().rest_density;
-    const long lo = b * kSumBlock, hi = std::min(static_cast<long>(L.n), lo + kSumBlock);
-    Sums s;
-    for (long i = lo; i < hi; ++i) {
-      double v2 = 0.0, w2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double v = y[L.velocity(d) + i], w = v - in.V[d];
-        v2 += v * v;
-        w2 += w * w;
-        s.mv[d] += m[i] * w;
-      }
-      s.vmax2 = std::max(s.vmax2, v2);
-      s.ke += 0.5 * m[i] * w2;
-    }
-    // The elastic energy per unit mass of the block first (vectorised), then summed in order.
-    const long e_hi = std::min(hi, in.nrho);
-    if (e_hi > lo) {
-      double u[kSumBlock];
-      const auto own_n = static_cast<long>(own.size());
-      if (own_n == 0 || own_n >= e_hi) {
-        limits_.elastic.per_mass_block(in.rho + lo, own_n == 0 ? nullptr : own.data() + lo, e_hi - lo, u);
-      } else {
-        for (long i = lo; i < e_hi; ++i) u[i - lo] = limits_.elastic.per_mass(in.rho[i], i < own_n ? own[i] : 0.0);
-      }
-      for (long i = lo; i < e_hi; ++i) s.el += m[i] * u[i - lo];
-    }
-    return s;
-  }
   long sum_blocks() const { return (static_cast<long>(sys_.layout().n) + kSumBlock - 1) / kSumBlock; }
-  Sums serial_sums(const double* y, double t, bool elastic) const {
-    const SumInputs in = sum_inputs(t, elastic);
-    Sums s;
-    for (long b = 0; b < sum_blocks(); ++b) s.add(block_sums(y, in, b));
-    return s;
-  }
   struct Scan {
     bool healthy = true;
     double rho_lo = std::numeric_limits<double>::infinity(), rho_hi = -std::numeric_limits<double>::infinity();
     Sums sums;  // of the velocities and densities; meaningful only when healthy
   };
-  // The power of the body force on the fluid, sum_i m_i g(t) . v_i; in the walls' frame
-  // (HealthLimits::WallFrame) that of g(t) - A(t) on the velocities relative to the frame.
-  double body_force_power(const Sums& s, double t) const {
-    const auto& fr = limits_.frame;
-    const double f = body_force_ramp_factor(t, limits_.g_ramp);
-    double p = 0.0;
-    for (int d = 0; d < D; ++d) {
-      const double g = f * limits_.g[d] - (fr.on ? fr.A(d, t) : 0.0);
-      if (g != 0.0) p += g * s.mv[d];
-    }
-    return p;
-  }
 
   // The scene's physical bounds (run/health_limits.hpp), after the state is known to be finite.
   void physical(double t, const double* y, const Scan& s) {
     const auto& L = sys_.layout();
     const long n = static_cast<long>(L.n);
-    // The kinetic energy relative to the walls' frame when there is one (health_limits.hpp), from
-    // scan()'s block sums: the same for any thread count, and so the message.
-    const double vmax2 = s.sums.vmax2, ke = s.sums.ke;
-    if (vmax2 > limits_.max_speed * limits_.max_speed)
+    // From scan()'s block sums: the same for any thread count, and so the message.
+    if (bounds_.too_fast(s.sums.vmax2))
       for (long i = 0; i < n; ++i) {
         double v2 = 0.0;
         for (int d = 0; d < D; ++d) v2 += y[L.velocity(d) + i] * y[L.velocity(d) + i];
-        if (v2 > limits_.max_speed * limits_.max_speed)
-          throw BlowUp(t, i, "speed " + shown(std::sqrt(v2)) + " m/s above " + shown(limits_.max_speed) + " m/s, " +
-                                 limits_.speed_reason);
+        if (bounds_.too_fast(v2)) throw bounds_.speed_blow_up(t, i, v2);
       }
-    if (limits_.rho0 > 0.0) {
+    if (bounds_.density_bounded()) {
       // Fluids of several rest densities (Particles::rest_density, state order): each particle against
       // its own rho0, read in state order; with one rho0 the extremes come from the scan.
       const auto& own = sys_.particles().rest_density;
-      const double r0 = limits_.rho0;
+      const double r0 = bounds_.limits().rho0;
       const auto rest = [&](long i) { return own.empty() ? r0 : own[static_cast<std::size_t>(i)]; };
       double lo = s.rho_lo / r0, hi = s.rho_hi / r0;  // of rho / rho0
       if (!own.empty()) {
@@ -171,41 +105,15 @@ class HealthCheck {
           hi = std::max(hi, rho[i] / rest(i));
         }
       }
-      if (hi - 1.0 > limits_.max_compression || 1.0 - lo > limits_.max_expansion) {
+      if (bounds_.outside_density(hi) || bounds_.outside_density(lo)) {
         const auto& rs = sys_.density();  // state order, to name the particle
         for (std::size_t i = 0; i < L.n && i < rs.size(); ++i) {
           const double ratio = rs[i] / rest(static_cast<long>(i));
-          if (ratio - 1.0 > limits_.max_compression || 1.0 - ratio > limits_.max_expansion)
-            throw BlowUp(t, static_cast<long>(i), "density ratio rho/rho0 = " + shown(ratio) +
-                                                      " outside the weakly compressible range " + limits_.density_reason);
+          if (bounds_.outside_density(ratio)) throw bounds_.density_blow_up(t, static_cast<long>(i), ratio);
         }
       }
     }
-    const double p = body_force_power(s.sums, t);
-    work_ += 0.5 * (p + power_) * (t - power_t_);
-    power_ = p;
-    power_t_ = t;
-    if (limits_.energy) {
-      const double el = s.sums.el;  // block sums, as the kinetic energy
-      const double budget = limits_.energy_budget + std::max(0.0, work_);
-      const double allowed = (1.0 + HealthLimits::kEnergySlack) * budget + limits_.energy_floor;
-      // Energies of a D-dimensional model: per unit depth in 2D, per unit area in 1D.
-      const char* unit = D == 3 ? " J" : D == 2 ? " J/m" : " J/m^2";
-      if (ke + el > allowed)
-        throw BlowUp(t, -1, "kinetic energy " + shown(ke) + unit + " plus elastic energy " + shown(el) + unit +
-                                " exceeds what the scene puts in (" + shown(budget) + unit +
-                                (limits_.frame.on ? ": in the walls' moving frame, initial kinetic, elastic and internal energy and the work of "
-                                                      "the body force and the frame's inertial force"
-                                                    : ": initial kinetic, elastic and internal energy, body-force work, "
-                                                      "moving-wall bound M V^2/2") +
-                                "; allowed " + shown(allowed) + unit + ")");
-    }
-  }
-
-  static std::string shown(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
+    bounds_.energy(t, s.sums);
   }
 
   // Every per-particle pass after a step in one parallel region (its start and end are the only
@@ -226,7 +134,7 @@ class HealthCheck {
     bool bad = false;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     std::int64_t rho_ok = 1;
-    const SumInputs in = sum_inputs(t, true);
+    const PhysicalInputs<D> in = inputs(t, true);
     const long nb = sum_blocks();
     parts_.resize(static_cast<std::size_t>(nb));
     Sums* const part = parts_.data();
@@ -256,7 +164,7 @@ class HealthCheck {
             kv[i] = vi;
           }
         }
-        part[b] = block_sums(y, in, b);
+        part[b] = bounds_.sums(L, y, in, i0, i1);
       }
       for_each_by_particle(static_cast<std::size_t>(ve), static_cast<std::size_t>(size), L.n, [&](std::size_t k) {
         ok &= static_cast<std::int64_t>(std::fabs(y[k]) <= big);
@@ -308,8 +216,7 @@ class HealthCheck {
   std::vector<Sums> parts_;  // scan()'s block sums
   double last_good_t_;
   double initial_cfl_;
-  HealthLimits limits_;
-  double power_t_, power_, work_ = 0.0;
+  PhysicalBounds<D> bounds_;
 };
 
 }  // namespace sphmol

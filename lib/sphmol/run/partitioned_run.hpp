@@ -13,6 +13,7 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/health_limits.hpp"
 #include "sphmol/run/owned_piece.hpp"
 #include "sphmol/time/integrator.hpp"
 #include "sphmol/time/ode_system.hpp"
@@ -38,6 +39,13 @@ class PartitionedRun {
   // returns the largest of all ranks', the same on every rank, so that the ranks stop at the same
   // step whichever of them a signal reached, and when (it travels in the check's own collective).
   virtual int check(double t, double h, int signal) = 0;
+  // Before the first check: the physical bounds (run/health_limits.hpp) made from the whole scene
+  // as the serial run makes them, with the whole state (t0, y0) the run starts from.
+  virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
+                                  const HealthLimits& limits) = 0;
+  // Collective, after check() threw: the last state that passed the checks, whole in the serial
+  // layout, on every rank (for the root to write as the serial run does, run/last_good_state.hpp).
+  virtual void gather_last_good(std::vector<double>& whole) = 0;
   // Collective: the largest of the ranks' `signal` (0: none), where no step is taken (after the last).
   virtual int largest_signal(int signal) = 0;
   // Collective, between steps (t: the time reached): moves particles between ranks when the load

@@ -106,6 +106,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
   int agreed_signal = 0;
   if (part) {
+    // The physical bounds from the whole scene, as the serial run makes them after its first
+    // evaluation (the elastic energy reads that evaluation's densities): every rank evaluates its
+    // whole scene once for them (after the partition, which takes the scene before any evaluation).
+    std::vector<double> first;
+    sys->refresh_fields(t, y.data(), first);
+    part->start_health_check(*sys, y, t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
       agreed_signal = part->check(tt, hh, pending_signal());
     });
@@ -194,6 +200,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   ProgressLine progress(opt.progress, t_first, config.time.t_end);
   int signal = 0;
   nlohmann::json blow_up;
+  // Inside a step: a BlowUp from there (the health check, the integrator's step-size collapse) is
+  // thrown on every rank alike over ranks, one from a root-only measurement on the root only.
+  bool stepping = false;
   // Observers with their own sampling times (probes with `every`): the loop stops there as well.
   const auto next_observer_time = [&] {
     double tn = inf;
@@ -237,7 +246,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   while (next_out < times.size()) {
     const double stop = std::min({times[next_out], next_cp, next_observer_time()});
     while (t < stop && !(signal = signal_seen())) {
+      stepping = true;
       t = integrator->step_toward(stop);
+      stepping = false;
       if (part) part->rebalance(*integrator, t);
       if (opt.after_step) opt.after_step(t);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
@@ -274,8 +285,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     blow_up = {{"t", b.t}, {"cause", b.cause}, {"message", b.what()},
                {"last_good_t", part ? part->last_good_time() : health->last_good_time()}};
     if (b.particle >= 0) blow_up["particle"] = b.particle;
-    if (out.enabled && health) {
-      write_last_good_state<D>(*sys, health->last_good_state().data(), out.path("last_good_state.csv"));
+    // Over ranks the last good state is gathered from every rank when all of them are here, having
+    // thrown the same BlowUp in the same step, and the root writes it.
+    std::vector<double> last_good;
+    if (part && own.enabled && stepping) part->gather_last_good(last_good);
+    const std::vector<double>* good = part ? &last_good : health ? &health->last_good_state() : nullptr;
+    if (out.enabled && good && !good->empty()) {
+      write_last_good_state<D>(*sys, good->data(), out.path("last_good_state.csv"));
       out.record("last_good_state.csv");
       blow_up["state_file"] = "last_good_state.csv";
     }

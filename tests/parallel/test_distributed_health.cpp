@@ -1,0 +1,106 @@
+// The health check's physical bounds over ranks (parallel/distributed_health_check.hpp): a run
+// that the serial check stops on the scene's speed bound or on its energy budget stops over any
+// rank count at the same step with the serial message (the particle named by its serial index),
+// on every rank, and rank 0 writes the serial run's last_good_state.csv; a healthy run is not
+// stopped. Rank 0 runs the serial reference.
+#include <catch2/catch.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#include "serial_reference.hpp"
+
+using namespace sphmol;
+using namespace sphmol::parallel;
+using namespace sphmol::parallel::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string contents(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Every rank's text, in rank order.
+std::vector<std::string> every_rank(const Communicator& comm, const std::string& text) {
+  const std::vector<char> all = comm.all_gather_v(std::vector<char>(text.begin(), text.end()));
+  const std::vector<int> lengths = comm.all_gather(static_cast<int>(text.size()));
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  for (const int n : lengths) {
+    out.emplace_back(all.begin() + static_cast<long>(at), all.begin() + static_cast<long>(at) + n);
+    at += static_cast<std::size_t>(n);
+  }
+  return out;
+}
+
+// c over every rank and (rank 0) serially, both writing files: the same blow-up, with `cause` at
+// its start, at the same time, on every rank, and the same last good state file.
+void check_same_blow_up(const Config& c, const std::string& name, const std::string& cause) {
+  const Communicator comm;
+  const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
+  const fs::path base = fs::temp_directory_path() / ("sphmol-" + name + "-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const Finished split = run(c, &partitioner, "", (base / "ranks").string());
+  INFO(comm.size() << " ranks: " << split.summary.dump());
+  REQUIRE(split.summary["status"] == "blown_up");
+  const auto& b = split.summary["blow_up"];
+  const std::string message = b["message"].get<std::string>();
+  CHECK(b["cause"].get<std::string>().rfind(cause, 0) == 0);
+  for (const std::string& m : every_rank(comm, message)) CHECK(m == message);
+  const auto steps = comm.all_gather(split.summary["steps"].get<long>());
+  for (const long s : steps) CHECK(s == steps[0]);
+  // Rank 0 alone from here: CHECK, not REQUIRE, so that a failure still reaches the barrier below.
+  if (comm.rank() == 0) {
+    const Finished serial = run(c, nullptr, "", (base / "serial").string());
+    CHECK(serial.summary["status"] == "blown_up");
+    const auto& sb = serial.summary["blow_up"];
+    CHECK(b["message"] == sb.value("message", ""));
+    CHECK(b["t"] == sb.value("t", -1.0));
+    CHECK(b["last_good_t"] == sb.value("last_good_t", -1.0));
+    CHECK(b.value("particle", -1L) == sb.value("particle", -1L));
+    CHECK(split.summary["steps"] == serial.summary["steps"]);
+    CHECK(b.value("state_file", "") == "last_good_state.csv");
+    const std::string mine = contents(base / "ranks" / "last_good_state.csv");
+    CHECK(!mine.empty());
+    CHECK(mine == contents(base / "serial" / "last_good_state.csv"));
+  }
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(base);
+}
+
+}  // namespace
+
+TEST_CASE("distributed health: the speed bound stops a run over ranks as it stops the serial run", "[parallel][health]") {
+  // A fixed leapfrog step 5x past the viscous limit: the fluid next to the plate passes 10 times
+  // the plate speed at the second step (particle 760 serially).
+  check_same_blow_up(load_config(verification("couette.yaml"), {"time.integrator=leapfrog", "time.dt=1e-3", "time.t_end=0.1",
+                                                                "output.times=[0.1]", "output.plots=false"}),
+                     "health-speed", "speed ");
+}
+
+TEST_CASE("distributed health: the energy budget stops a run over ranks as it stops the serial run", "[parallel][health]") {
+  // The Taylor-Green vortex at a fixed step 2.7x the stable one gains kinetic energy with no input
+  // (no walls, no body force): past the budget at the third step.
+  check_same_blow_up(load_config(verification("taylor_green.yaml"),
+                                 {"time.dt=0.01", "time.t_end=0.25", "output.times=[0.25]", "output.plots=false"}),
+                     "health-energy", "kinetic energy ");
+}
+
+TEST_CASE("distributed health: a healthy run is not stopped by the physical bounds", "[parallel][health]") {
+  // The Taylor-Green vortex at its CFL step. (The runs of test_distributed_run.cpp, which must
+  // complete as the serial runs, cover gravity's work in the budget, the dam break, and moving walls.)
+  check_same_as_serial(load_config(verification("taylor_green.yaml"),
+                                   {"discretization.particles_across=30", "time.t_end=0.05", "output.times=[0.05]",
+                                    "output.plots=false"}));
+}
