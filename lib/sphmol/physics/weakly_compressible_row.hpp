@@ -151,6 +151,9 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   static constexpr std::size_t kDiffusionLower = 0, kCont = WithDiffusion ? 1 : 0, kMomentum = kCont + 1,
                                kDiffusionUpper = kMomentum + D;
   static constexpr std::size_t kPrefetchAhead = 2048;  // bytes of records ahead of the row being written
+  // Rows per call of records_in_registers: 2 to 8 ran alike, 1 and 32 (a whole chunk, whose
+  // neighbour data has left the L1 cache by the second stage) slower (docs/performance.md).
+  static constexpr std::size_t kRegisterRows = 4;
 
   unsigned uniform() const {
     unsigned u = kMassUniform | kSmoothingUniform;
@@ -252,6 +255,14 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   void record_rows(const Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off, const std::uint32_t* up,
                    const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel, double* out) const {
     const PairGeometry<D>& g = kernel.geometry();
+#if defined(__AVX2__)
+    if constexpr (D == 2 && WithDiffusion)
+      if (pi_.width == 0.0) {
+        for (std::size_t i = i0; i < i1; i += kRegisterRows)
+          records_in_registers<SameH, Periodic>(w, i, std::min(i1, i + kRegisterRows), off, up, vj, first, kernel, g, out);
+        return;
+      }
+#endif
     for (std::size_t i = i0; i < i1; ++i)
       records<SameH, Periodic>(w, i, vj + up[i], off[i + 1] - up[i], kernel, g, out + static_cast<std::size_t>(first[i]) * kRecord);
   }
@@ -298,6 +309,145 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
       store_records(pc, sx, pd, pr, nb, rec + static_cast<std::size_t>(k0) * kRecord);
     }
   }
+
+#if defined(__AVX2__)
+  // records() for the rows [i0, i1) in 2D with diffusion and the sharp switch: four pairs per vector,
+  // each pair's neighbour data in registers from its load to its record, and the kernel pass called
+  // once for the rows instead of once per row: (1) for every row, the first half of four packed
+  // records (x, v) transposed, the separations, r^2 and v_ij . x_ij; (2) F for all of them; (3) for
+  // every row, the second half (rho, q, c, vol) transposed, the arithmetic of arithmetic<true, SameH,
+  // true>, and the records transposed into place. The operations are those of records(), in the same
+  // order and without contraction (the build's -ffp-contract=off), so the records are the same
+  // numbers bit for bit (tests/integration/test_symmetric_pairs.cpp: the full rows' state after 300
+  // steps); what goes is the per-field arrays between the stages and most of a row's fixed cost (a
+  // row has about fifteen upper pairs, skin included).
+  template <bool SameH, bool Periodic>
+  void records_in_registers(const Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off,
+                            const std::uint32_t* up, const std::uint32_t* vj, const std::uint32_t* first,
+                            const KernelPass<D>& kernel, const PairGeometry<D>& g, double* out) const {
+    using V = __m256d;
+    const V zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0), half = _mm256_set1_pd(0.5);
+    const V alpha = _mm256_set1_pd(pi_.alpha), beta = _mm256_set1_pd(pi_.beta), eta2 = _mm256_set1_pd(pi_.eta * pi_.eta);
+    [[maybe_unused]] V period[D], inv_period[D];
+    if constexpr (Periodic)
+      for (int d = 0; d < D; ++d) {
+        period[d] = _mm256_set1_pd(g.period[d]);
+        inv_period[d] = _mm256_set1_pd(g.inv_period[d]);
+      }
+    const double* base = &pack_[0].x[0];
+    const double* hs = w.hs.data();
+    constexpr std::size_t stride = sizeof(PackedNeighbour<D>) / sizeof(double);
+    // 4x4 transpose: lane l of field f from row f of the pair in lane l.
+    const auto transpose = [](V a0, V a1, V a2, V a3, V& f0, V& f1, V& f2, V& f3) {
+      const V t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
+      const V t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
+      f0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+      f1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+      f2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+      f3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+    };
+    // The neighbours in lanes k .. k + 3 of a row with n upper pairs j; in its last, partial group the
+    // padding lanes repeat the row's last pair (Tail) and are not stored.
+    const auto lanes_of = []<bool Tail>(const std::uint32_t* j, std::uint32_t n, std::uint32_t k, std::uint32_t (&jl)[4]) {
+      for (std::uint32_t l = 0; l < 4; ++l) jl[l] = j[Tail && k + l >= n ? n - 1 : k + l];
+    };
+    // Per thread, for the rows [i0, i1): dx_0, dx_1, r^2, v_ij . x_ij and F of every lane, each row's
+    // lanes a multiple of four from the row's start.
+    std::size_t lanes = 0;
+    for (std::size_t i = i0; i < i1; ++i) lanes += gathered_lanes(off[i + 1] - up[i]);
+    struct alignas(32) Group {
+      double lane[4];
+    };
+    thread_local std::vector<Group> scratch;  // over-aligned type: aligned by operator new
+    if (scratch.size() < 5 * (lanes / 4)) scratch.resize(5 * (lanes / 4));
+    double* const sdx0 = scratch.data()->lane;
+    double* const sdx1 = sdx0 + lanes;
+    double* const sr2 = sdx1 + lanes;
+    double* const svx = sr2 + lanes;
+    double* const sF = svx + lanes;
+
+    std::size_t at = 0;  // the row's first lane
+    for (std::size_t i = i0; i < i1; ++i) {
+      const std::uint32_t n = off[i + 1] - up[i], full = n & ~3u;
+      const std::uint32_t* j = vj + up[i];
+      const PackedNeighbour<D>& pi = pack_[i];
+      const V xi0 = _mm256_set1_pd(pi.x[0]), xi1 = _mm256_set1_pd(pi.x[1]);
+      const V vi0 = _mm256_set1_pd(pi.v[0]), vi1 = _mm256_set1_pd(pi.v[1]);
+      const auto separations = [&]<bool Tail>(std::uint32_t k) {
+        std::uint32_t jl[4];
+        lanes_of.template operator()<Tail>(j, n, k, jl);
+        V x0, x1, v0, v1;
+        transpose(_mm256_load_pd(base + jl[0] * stride), _mm256_load_pd(base + jl[1] * stride),
+                  _mm256_load_pd(base + jl[2] * stride), _mm256_load_pd(base + jl[3] * stride), x0, x1, v0, v1);
+        V s0 = xi0 - x0, s1 = xi1 - x1;
+        if constexpr (Periodic) {
+          constexpr int kNearest = _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC;  // nearbyint in the default mode
+          s0 = s0 - period[0] * _mm256_round_pd(s0 * inv_period[0], kNearest);
+          s1 = s1 - period[1] * _mm256_round_pd(s1 * inv_period[1], kNearest);
+        }
+        const std::size_t q = at + k;
+        _mm256_store_pd(sdx0 + q, s0);
+        _mm256_store_pd(sdx1 + q, s1);
+        _mm256_store_pd(sr2 + q, (zero + s0 * s0) + s1 * s1);
+        _mm256_store_pd(svx + q, (zero + (vi0 - v0) * s0) + (vi1 - v1) * s1);
+      };
+      std::uint32_t k = 0;
+      for (; k < full; k += 4) separations.template operator()<false>(k);
+      if (k < n) separations.template operator()<true>(k);
+      at += gathered_lanes(n);
+    }
+    kernel.gradient_factors(sr2, sF, static_cast<std::uint32_t>(lanes));
+
+    at = 0;
+    for (std::size_t i = i0; i < i1; ++i) {
+      const std::uint32_t n = off[i + 1] - up[i], full = n & ~3u;
+      const std::uint32_t* j = vj + up[i];
+      double* const rec = out + static_cast<std::size_t>(first[i]) * kRecord;
+      // The records were last touched an evaluation ago and have left the cache: ask for the lines
+      // of the rows a few ahead now, so that they arrive while this row computes (as records()).
+      const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
+      for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
+      const PackedNeighbour<D>& pi = pack_[i];
+      const V ri = _mm256_set1_pd(pi.rho), qi = _mm256_set1_pd(pi.q), ci = _mm256_set1_pd(pi.c), voli = _mm256_set1_pd(pi.vol);
+      const V hi = _mm256_set1_pd(hs[i]), mi = _mm256_set1_pd(w.particles->mass[i]);
+      const auto pairs = [&]<bool Tail>(std::uint32_t k) {
+        std::uint32_t jl[4];
+        lanes_of.template operator()<Tail>(j, n, k, jl);
+        V rhoj, qj, cj, volj;
+        transpose(_mm256_load_pd(base + jl[0] * stride + 4), _mm256_load_pd(base + jl[1] * stride + 4),
+                  _mm256_load_pd(base + jl[2] * stride + 4), _mm256_load_pd(base + jl[3] * stride + 4), rhoj, qj, cj, volj);
+        const std::size_t q = at + k;
+        const V s0 = _mm256_load_pd(sdx0 + q), s1 = _mm256_load_pd(sdx1 + q), rr = _mm256_load_pd(sr2 + q);
+        const V vxk = _mm256_load_pd(svx + q), f = _mm256_load_pd(sF + q);
+        V hij = hi;
+        if constexpr (!SameH) hij = half * (hi + _mm256_set_pd(hs[jl[3]], hs[jl[2]], hs[jl[1]], hs[jl[0]]));
+        const V pc = mi * vxk * f;
+        const V pd = two * (ri - rhoj) * f * volj;  // density_diffusion_pair(ri, rho_j, F, vol_j)
+        const V pr = two * (rhoj - ri) * f * voli;  // density_diffusion_pair(rho_j, ri, F, vol_i)
+        // MonaghanPi::switched(min(vx, 0), r2, hij, cbar, rhobar); min_pd(0, vx) is std::min(vx, 0.0),
+        // signed zeros and NaN included.
+        const V sw = _mm256_min_pd(zero, vxk), cbar = half * (ci + cj), rhobar = half * (ri + rhoj);
+        const V t = hij * sw / ((rr + eta2 * hij * hij) * rhobar);
+        const V pij = (beta * t * rhobar - alpha * cbar) * t;
+        const V ps = mi * (qi + qj + pij) * f;
+        V r[4];
+        transpose(pr, pc, ps * s0, ps * s1, r[0], r[1], r[2], r[3]);
+        alignas(32) double last[4];
+        _mm256_store_pd(last, pd);
+        double* o = rec + static_cast<std::size_t>(k) * kRecord;
+        // Only pairs below n: past them lie the next row's records.
+        for (std::uint32_t l = 0; l < (Tail ? n - k : 4u); ++l) {
+          _mm256_storeu_pd(o + l * kRecord, r[l]);
+          o[l * kRecord + 4] = last[l];
+        }
+      };
+      std::uint32_t k = 0;
+      for (; k < full; k += 4) pairs.template operator()<false>(k);
+      if (k < n) pairs.template operator()<true>(k);
+      at += gathered_lanes(n);
+    }
+  }
+#endif
 
   // Pairs [0, n)'s records (layout at pair_record_size) from the per-pair arrays. Only lanes below n
   // are stored: past them lie the next row's records.

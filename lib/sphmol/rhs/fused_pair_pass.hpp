@@ -232,8 +232,9 @@ class FusedPairPass final : public Term<D> {
           continue;
         }
         // The next row's twin records lie anywhere in the records written so far (in 3D a plane of
-        // particles back): ask for them while this row sums.
-        if (i + 1 < i1)
+        // particles back): ask for them while this row sums. In 1D and 2D they are a few rows of
+        // cells back, still in the L2 cache, and the requests cost more than they save (docs/performance.md).
+        if (D == 3 && i + 1 < i1)
           for (std::uint32_t q = off[i + 1], e = up[i + 1]; q < e; ++q)
             __builtin_prefetch(records + static_cast<std::size_t>(twin[q]) * R, 0, 3);
         sum_row(i);
