@@ -32,6 +32,19 @@ struct NeighbourBlock {
   alignas(32) double vol[N];
 };
 
+#if defined(__AVX__)
+// 4x4 transpose of four 256-bit rows: lane l of f[k] is lane k of row a_l (the rows of four pairs'
+// records into four per-field vectors, or back). Shuffles only: the numbers are unchanged.
+inline void transpose4(__m256d a0, __m256d a1, __m256d a2, __m256d a3, __m256d& f0, __m256d& f1, __m256d& f2, __m256d& f3) {
+  const __m256d t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
+  const __m256d t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
+  f0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+  f1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+  f2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+  f3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+#endif
+
 // Lanes a gather fills for n pairs: n rounded up to a multiple of 4.
 constexpr std::uint32_t gathered_lanes(std::uint32_t n) { return (n + 3u) & ~3u; }
 
@@ -46,18 +59,13 @@ void gather_neighbours(const PackedNeighbour<D>* pk, const std::uint32_t* j, std
     // rows gives each field's four lanes.
     const auto group = [&out](std::uint32_t k, const double* p0, const double* p1, const double* p2, const double* p3) {
       for (int half = 0; half < 2; ++half) {
-        const __m256d a0 = _mm256_load_pd(p0 + 4 * half), a1 = _mm256_load_pd(p1 + 4 * half);
-        const __m256d a2 = _mm256_load_pd(p2 + 4 * half), a3 = _mm256_load_pd(p3 + 4 * half);
-        const __m256d t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
-        const __m256d t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
-        double* f0 = half == 0 ? out.x[0] : out.rho;
-        double* f1 = half == 0 ? out.x[1] : out.q;
-        double* f2 = half == 0 ? out.v[0] : out.c;
-        double* f3 = half == 0 ? out.v[1] : out.vol;
-        _mm256_store_pd(f0 + k, _mm256_permute2f128_pd(t0, t2, 0x20));
-        _mm256_store_pd(f1 + k, _mm256_permute2f128_pd(t1, t3, 0x20));
-        _mm256_store_pd(f2 + k, _mm256_permute2f128_pd(t0, t2, 0x31));
-        _mm256_store_pd(f3 + k, _mm256_permute2f128_pd(t1, t3, 0x31));
+        __m256d f[4];
+        transpose4(_mm256_load_pd(p0 + 4 * half), _mm256_load_pd(p1 + 4 * half), _mm256_load_pd(p2 + 4 * half),
+                   _mm256_load_pd(p3 + 4 * half), f[0], f[1], f[2], f[3]);
+        _mm256_store_pd((half == 0 ? out.x[0] : out.rho) + k, f[0]);
+        _mm256_store_pd((half == 0 ? out.x[1] : out.q) + k, f[1]);
+        _mm256_store_pd((half == 0 ? out.v[0] : out.c) + k, f[2]);
+        _mm256_store_pd((half == 0 ? out.v[1] : out.vol) + k, f[3]);
       }
     };
     const double* base = &pk[0].x[0];

@@ -278,8 +278,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     // The records were last touched an evaluation ago and have left the cache, and the stores at the
     // end waited for their lines. Rows' records follow each other in memory, so ask for the lines of
     // the rows a few ahead now (a row writes about 10 lines): they arrive while this row computes.
-    const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
-    for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
+    prefetch_records_ahead(rec, n);
     double xi[D];
     for (int d = 0; d < D; ++d) xi[d] = pack_[i].x[d];
     for (std::uint32_t k0 = 0; k0 < n; k0 += kBlock) {
@@ -337,15 +336,6 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     const double* base = &pack_[0].x[0];
     const double* hs = w.hs.data();
     constexpr std::size_t stride = sizeof(PackedNeighbour<D>) / sizeof(double);
-    // 4x4 transpose: lane l of field f from row f of the pair in lane l.
-    const auto transpose = [](V a0, V a1, V a2, V a3, V& f0, V& f1, V& f2, V& f3) {
-      const V t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
-      const V t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
-      f0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-      f1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-      f2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-      f3 = _mm256_permute2f128_pd(t1, t3, 0x31);
-    };
     // The neighbours in lanes k .. k + 3 of a row with n upper pairs j; in its last, partial group the
     // padding lanes repeat the row's last pair (Tail) and are not stored.
     const auto lanes_of = []<bool Tail>(const std::uint32_t* j, std::uint32_t n, std::uint32_t k, std::uint32_t (&jl)[4]) {
@@ -377,7 +367,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         std::uint32_t jl[4];
         lanes_of.template operator()<Tail>(j, n, k, jl);
         V x0, x1, v0, v1;
-        transpose(_mm256_load_pd(base + jl[0] * stride), _mm256_load_pd(base + jl[1] * stride),
+        transpose4(_mm256_load_pd(base + jl[0] * stride), _mm256_load_pd(base + jl[1] * stride),
                   _mm256_load_pd(base + jl[2] * stride), _mm256_load_pd(base + jl[3] * stride), x0, x1, v0, v1);
         V s0 = xi0 - x0, s1 = xi1 - x1;
         if constexpr (Periodic) {
@@ -403,10 +393,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
       const std::uint32_t n = off[i + 1] - up[i], full = n & ~3u;
       const std::uint32_t* j = vj + up[i];
       double* const rec = out + static_cast<std::size_t>(first[i]) * kRecord;
-      // The records were last touched an evaluation ago and have left the cache: ask for the lines
-      // of the rows a few ahead now, so that they arrive while this row computes (as records()).
-      const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
-      for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
+      prefetch_records_ahead(rec, n);  // as records()
       const PackedNeighbour<D>& pi = pack_[i];
       const V ri = _mm256_set1_pd(pi.rho), qi = _mm256_set1_pd(pi.q), ci = _mm256_set1_pd(pi.c), voli = _mm256_set1_pd(pi.vol);
       const V hi = _mm256_set1_pd(hs[i]), mi = _mm256_set1_pd(w.particles->mass[i]);
@@ -414,7 +401,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         std::uint32_t jl[4];
         lanes_of.template operator()<Tail>(j, n, k, jl);
         V rhoj, qj, cj, volj;
-        transpose(_mm256_load_pd(base + jl[0] * stride + 4), _mm256_load_pd(base + jl[1] * stride + 4),
+        transpose4(_mm256_load_pd(base + jl[0] * stride + 4), _mm256_load_pd(base + jl[1] * stride + 4),
                   _mm256_load_pd(base + jl[2] * stride + 4), _mm256_load_pd(base + jl[3] * stride + 4), rhoj, qj, cj, volj);
         const std::size_t q = at + k;
         const V s0 = _mm256_load_pd(sdx0 + q), s1 = _mm256_load_pd(sdx1 + q), rr = _mm256_load_pd(sr2 + q);
@@ -431,7 +418,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         const V pij = (beta * t * rhobar - alpha * cbar) * t;
         const V ps = mi * (qi + qj + pij) * f;
         V r[4];
-        transpose(pr, pc, ps * s0, ps * s1, r[0], r[1], r[2], r[3]);
+        transpose4(pr, pc, ps * s0, ps * s1, r[0], r[1], r[2], r[3]);
         alignas(32) double last[4];
         _mm256_store_pd(last, pd);
         double* o = rec + static_cast<std::size_t>(k) * kRecord;
@@ -449,6 +436,12 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   }
 #endif
 
+  // Asks for the cache lines of the records a few rows after those of a row of n pairs at rec.
+  static void prefetch_records_ahead(double* rec, std::uint32_t n) {
+    const auto* ahead = reinterpret_cast<const char*>(rec) + kPrefetchAhead;
+    for (std::size_t b = 0; b < static_cast<std::size_t>(n) * kRecord * sizeof(double); b += 64) __builtin_prefetch(ahead + b, 1, 3);
+  }
+
   // Pairs [0, n)'s records (layout at pair_record_size) from the per-pair arrays. Only lanes below n
   // are stored: past them lie the next row's records.
   static void store_records(const double* pc, const double (&sx)[D][kBlock], const double* pd, const double* pr,
@@ -459,19 +452,14 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
       // Four pairs at a time: a 4x4 transpose of (pr, pc, sx_0, sx_1) gives each pair's first four
       // numbers, then its fifth.
       for (; k + 4 <= n; k += 4) {
-        const __m256d a0 = _mm256_loadu_pd(pr + k), a1 = _mm256_loadu_pd(pc + k);
-        const __m256d a2 = _mm256_loadu_pd(sx[0] + k), a3 = _mm256_loadu_pd(sx[1] + k);
-        const __m256d t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
-        const __m256d t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
+        __m256d r[4];
+        transpose4(_mm256_loadu_pd(pr + k), _mm256_loadu_pd(pc + k), _mm256_loadu_pd(sx[0] + k), _mm256_loadu_pd(sx[1] + k),
+                   r[0], r[1], r[2], r[3]);
         double* out = rec + static_cast<std::size_t>(k) * kRecord;
-        _mm256_storeu_pd(out, _mm256_permute2f128_pd(t0, t2, 0x20));
-        out[4] = pd[k];
-        _mm256_storeu_pd(out + kRecord, _mm256_permute2f128_pd(t1, t3, 0x20));
-        out[kRecord + 4] = pd[k + 1];
-        _mm256_storeu_pd(out + 2 * kRecord, _mm256_permute2f128_pd(t0, t2, 0x31));
-        out[2 * kRecord + 4] = pd[k + 2];
-        _mm256_storeu_pd(out + 3 * kRecord, _mm256_permute2f128_pd(t1, t3, 0x31));
-        out[3 * kRecord + 4] = pd[k + 3];
+        for (std::uint32_t l = 0; l < 4; ++l) {
+          _mm256_storeu_pd(out + l * kRecord, r[l]);
+          out[l * kRecord + 4] = pd[k + l];
+        }
       }
     }
 #endif
