@@ -105,18 +105,22 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // Over ranks, SIGINT/SIGTERM as the ranks agree at the last step's check: the largest signal any
   // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
   int agreed_signal = 0;
+  // The physical bounds from the whole scene after an evaluation at t (the elastic energy reads its
+  // densities): the serial system was evaluated by the integrator's initialisation; over ranks every
+  // rank evaluates its whole scene once for them (after the partition, which takes the scene before
+  // any evaluation).
   if (part) {
-    // The physical bounds from the whole scene, as the serial run makes them after its first
-    // evaluation (the elastic energy reads that evaluation's densities): every rank evaluates its
-    // whole scene once for them (after the partition, which takes the scene before any evaluation).
     std::vector<double> first;
     sys->refresh_fields(t, y.data(), first);
-    part->start_health_check(*sys, y, t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
+  }
+  const HealthLimits limits = health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data());
+  if (part) {
+    part->start_health_check(*sys, y, t, limits);
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
       agreed_signal = part->check(tt, hh, pending_signal());
     });
   } else {
-    health.emplace(*sys, y.data(), t, health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data()));
+    health.emplace(*sys, y.data(), t, limits);
     integrator->set_step_hook([&health](double tt, const double* yy, double hh) { (*health)(tt, yy, hh); });
   }
   ConservationLog<D> conservation;
