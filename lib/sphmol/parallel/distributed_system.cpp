@@ -354,31 +354,51 @@ void DistributedSystem<D>::plan() {
 
 template <int D>
 void DistributedSystem<D>::exchange_into_local(const double* y) {
-  // The owned state to the ranks whose halo holds it, and both into the local system's state.
+  // The owned state to the ranks whose halo holds it, and both into the local system's state. One
+  // row per particle sent: a fluid particle's value in each block of the state (the local system's
+  // blocks are the same, from the same config), a wall's integrated density in the first entry.
+  // Only the rows sent are packed, and the owned state is copied into the local one while they
+  // travel; the buffers stay between evaluations (a fresh one per evaluation cost a page fault per
+  // 4 KiB of state).
   const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
-  // One row per particle: a fluid particle's value in each block of the state (the local system's
-  // blocks are the same, from the same config), a wall's integrated density in the first entry.
-  std::vector<double> rec(no * width, 0.0), hrec(halo_->size() * width);
-  // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
-#pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < nfo_; ++o)
-    for (std::size_t b = 0; b < width; ++b) rec[o * width + b] = y[b * nfo_ + o];
-  if (L.n_wall_density > 0)
-    for (std::size_t o = nfo_; o < no; ++o) rec[o * width] = y[L.wall_density() + (o - nfo_)];
-  halo_->exchange_rows(comm_, rec.data(), width, hrec.data());
   const StateLayout<D>& LL = local_->layout();
-  const auto put = [&](std::size_t k, const double* r) {
+  const bool wall_density = L.n_wall_density > 0;
+  const auto pack = [&](std::uint32_t o, double* row) {
+    if (o < nfo_) {
+      for (std::size_t b = 0; b < width; ++b) row[b] = y[b * nfo_ + o];
+    } else {
+      std::fill(row, row + width, 0.0);
+      if (wall_density) row[0] = y[L.wall_density() + (o - nfo_)];
+    }
+  };
+  const auto owned_into_local = [&] {
+    // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
+#pragma omp parallel
+    {
+      for (std::size_t b = 0; b < width; ++b) {
+        const double* from = y + b * nfo_;
+        double* to = y_local_.data() + b * nf_local_;
+#pragma omp for schedule(static) nowait
+        for (std::size_t o = 0; o < nfo_; ++o) to[owned_at_[o]] = from[o];
+      }
+    }
+    if (wall_density && LL.n_wall_density > 0)
+      for (std::size_t o = nfo_; o < no; ++o) y_local_[LL.wall_density() + (owned_at_[o] - nf_local_)] = y[L.wall_density() + (o - nfo_)];
+  };
+  halo_rows_.resize(halo_->size() * width);
+  halo_->exchange_rows(comm_, width, pack, halo_rows_.data(), owned_into_local);
+  const double* hrec = halo_rows_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t q = 0; q < halo_->size(); ++q) {
+    const std::size_t k = halo_at_[q];
+    const double* r = hrec + q * width;
     if (k < nf_local_) {
       for (std::size_t b = 0; b < width; ++b) y_local_[b * nf_local_ + k] = r[b];
     } else if (LL.n_wall_density > 0) {
       y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
     }
-  };
-#pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < no; ++o) put(owned_at_[o], rec.data() + o * width);
-#pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < halo_->size(); ++q) put(halo_at_[q], hrec.data() + q * width);
+  }
 }
 
 template <int D>

@@ -212,6 +212,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_, f_local_;
+  std::vector<double> halo_rows_;  // the halo's state rows of the latest exchange
   double stable_step_ = 0.0, first_stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;
   Stats stats_;

@@ -74,33 +74,50 @@ std::size_t Halo<D>::sent() const {
 }
 
 template <int D>
-void Halo<D>::exchange_bytes(const Communicator& comm, const std::byte* owned, std::size_t bytes, std::byte* halo) const {
+void Halo<D>::post_receives(const Communicator& comm, std::size_t bytes, std::byte* halo) const {
   const std::size_t P = send_.size();
   if (P != static_cast<std::size_t>(comm.size())) throw std::logic_error("halo: exchange before plan");
-  buffer_.resize(sent() * bytes);
-  std::vector<MPI_Request> requests;
-  requests.reserve(2 * P);
-  // Receives first, straight into the halo: each rank's copies are one contiguous block.
+  requests_.clear();
+  requests_.reserve(2 * P);
   for (std::size_t r = 0; r < P; ++r) {
     const std::size_t count = recv_offset_[r + 1] - recv_offset_[r];
     if (count == 0) continue;
-    requests.emplace_back();
+    requests_.emplace_back();
     MPI_Irecv(halo + recv_offset_[r] * bytes, mpi_count(count * bytes, "halo exchange"), MPI_BYTE, static_cast<int>(r),
-              halo_tag, comm.handle(), &requests.back());
+              halo_tag, comm.handle(), &requests_.back());
   }
+}
+
+template <int D>
+void Halo<D>::post_sends(const Communicator& comm, std::size_t bytes, const std::byte* packed) const {
   std::size_t at = 0;
-  for (std::size_t r = 0; r < P; ++r) {
+  for (std::size_t r = 0; r < send_.size(); ++r) {
     if (send_[r].empty()) continue;
-    std::byte* start = buffer_.data() + at;
-    for (std::uint32_t i : send_[r]) {
+    requests_.emplace_back();
+    MPI_Isend(packed + at, mpi_count(send_[r].size() * bytes, "halo exchange"), MPI_BYTE, static_cast<int>(r), halo_tag,
+              comm.handle(), &requests_.back());
+    at += send_[r].size() * bytes;
+  }
+}
+
+template <int D>
+void Halo<D>::wait() const {
+  MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
+  requests_.clear();
+}
+
+template <int D>
+void Halo<D>::exchange_bytes(const Communicator& comm, const std::byte* owned, std::size_t bytes, std::byte* halo) const {
+  post_receives(comm, bytes, halo);
+  buffer_.resize(sent() * bytes);
+  std::size_t at = 0;
+  for (const auto& list : send_)
+    for (std::uint32_t i : list) {
       std::memcpy(buffer_.data() + at, owned + static_cast<std::size_t>(i) * bytes, bytes);
       at += bytes;
     }
-    requests.emplace_back();
-    MPI_Isend(start, mpi_count(send_[r].size() * bytes, "halo exchange"), MPI_BYTE, static_cast<int>(r), halo_tag,
-              comm.handle(), &requests.back());
-  }
-  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  post_sends(comm, bytes, buffer_.data());
+  wait();
 }
 
 template class Halo<1>;
