@@ -273,9 +273,11 @@ double DistributedSystem<D>::mirror_margin() const {
 template <int D>
 bool DistributedSystem<D>::moved_too_far() const {
   // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
-  // hmax_ is the same on every rank, so this decision is too.
-  // So does the ghost margin's growth (mirror_margin()).
-  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_)) - std::max(0.0, margin_ - margin_plan_);
+  // hmax_ is the same on every rank, so this decision is too. The ghost margin's growth does not:
+  // a mirror image moves exactly as far as its source (a reflection is an isometry), so a pair of a
+  // row and an image within the support now was within the support plus the skin at the plan, and
+  // its source within that plus the margin of the plan's positions (mirror_margin()).
+  const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
   if (!(room > 0.0)) return true;
   const double limit2 = 0.25 * room * room;
   bool far = false;
