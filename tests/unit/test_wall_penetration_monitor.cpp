@@ -1,6 +1,7 @@
 // The dam break's wall penetration monitor (analysis/wall_penetration_monitor.hpp): the particles
 // that passed a wall, counted once each over evaluations, and the smallest gap to a wall surface,
-// the same as a plain count and minimum for any thread count.
+// the same as a plain count and minimum for any thread count; a rank's rows (rhs/monitor.hpp) by
+// serial index, its own only, and combined with another rank's results.
 #include <catch2/catch.hpp>
 
 #include <omp.h>
@@ -47,16 +48,99 @@ TEST_CASE("wall penetration monitor: count and gap equal a serial count and mini
   for (const int threads : {1, 2, 3}) {
     INFO("threads " << threads);
     auto state = std::make_shared<WallPenetration>();
-    const WallPenetrationMonitor monitor(Lx, Ly, state);
+    WallPenetrationMonitor monitor(Lx, Ly, n, state);
+    const auto term = monitor.watch(WatchedRows{});
     Workspace<2> w;
     w.n = w.n_fluid = n;
     for (const auto& e : evals) {
       w.x = e;
 #pragma omp parallel num_threads(threads)
-      monitor.apply(w);
+      term->apply(w);
     }
     CHECK(state->count == count);
     CHECK(state->min_gap == gap);
     CHECK(state->crossed == crossed);
+  }
+}
+
+namespace {
+
+// Another rank's results, as combine() would receive them: its flagged particles and its smallest gap.
+class OneOtherRank final : public RankReduction {
+ public:
+  OneOtherRank(std::vector<std::uint64_t> flagged, double gap) : flagged_(std::move(flagged)), gap_(gap) {}
+  double min(double v) const override { return std::min(v, gap_); }
+  double max(double v) const override { return std::max(v, gap_); }
+  std::vector<std::uint64_t> all_gather(const std::vector<std::uint64_t>& mine) const override {
+    std::vector<std::uint64_t> all = mine;
+    all.insert(all.end(), flagged_.begin(), flagged_.end());
+    return all;
+  }
+
+ private:
+  std::vector<std::uint64_t> flagged_;
+  double gap_;
+};
+
+}  // namespace
+
+TEST_CASE("wall penetration monitor: a rank's rows watch its own particles by serial index, combined with the other ranks'",
+          "[analysis][threads][monitors]") {
+  const double Lx = 4.0, Ly = 3.0;
+  const std::size_t n = 1500;  // the scene's fluid particles
+  // A rank's local system: 700 rows in ascending serial index, every third one a halo copy (not owned).
+  std::mt19937 rng(5);
+  std::vector<std::uint64_t> all(n);
+  for (std::size_t k = 0; k < n; ++k) all[k] = k;
+  std::shuffle(all.begin(), all.end(), rng);
+  WatchedRows rows;
+  rows.id.assign(all.begin(), all.begin() + 700);
+  std::sort(rows.id.begin(), rows.id.end());
+  for (std::size_t i = 0; i < rows.id.size(); ++i) rows.owned.push_back(i % 3 == 2 ? 0 : 1);
+  std::uniform_real_distribution<double> ux(-0.3, Lx + 0.3), uy(-0.3, Ly + 0.5);
+  std::vector<std::array<std::vector<double>, 2>> evals(3);
+  for (auto& e : evals)
+    for (std::size_t i = 0; i < rows.id.size(); ++i) {
+      e[0].push_back(ux(rng));
+      e[1].push_back(uy(rng));
+    }
+  // The reference: the owned rows only, flagged by serial index.
+  std::vector<std::uint8_t> crossed(n, 0);
+  double gap = std::numeric_limits<double>::infinity();
+  for (const auto& e : evals)
+    for (std::size_t i = 0; i < rows.id.size(); ++i) {
+      if (!rows.owned[i]) continue;
+      const double x = e[0][i], y = e[1][i];
+      if (y < 0.0 || (y < Ly && (x < 0.0 || x > Lx))) crossed[rows.id[i]] = 1;
+      else if (x >= 0.0 && x <= Lx) gap = std::min({gap, x, Lx - x, y});
+    }
+  // The other rank flagged two particles, one of which this rank flagged too, and came nearer a wall.
+  std::vector<std::uint64_t> theirs;
+  for (std::size_t k = 0; k < n && theirs.size() < 1; ++k)
+    if (crossed[k]) theirs.push_back(k);
+  for (std::size_t k = 0; k < n && theirs.size() < 2; ++k)
+    if (!crossed[k]) theirs.push_back(k);
+  REQUIRE(theirs.size() == 2);
+  const long own_count = std::count(crossed.begin(), crossed.end(), std::uint8_t{1});
+  REQUIRE(own_count > 30);
+  for (const int threads : {1, 2, 3}) {
+    INFO("threads " << threads);
+    auto state = std::make_shared<WallPenetration>();
+    WallPenetrationMonitor monitor(Lx, Ly, n, state);
+    const auto term = monitor.watch(rows);
+    Workspace<2> w;
+    w.n = w.n_fluid = rows.id.size();
+    for (const auto& e : evals) {
+      w.x = e;
+#pragma omp parallel num_threads(threads)
+      term->apply(w);
+    }
+    CHECK(state->crossed == crossed);
+    CHECK(state->count == own_count);
+    CHECK(state->min_gap == gap);
+    monitor.combine(OneOtherRank(theirs, gap / 2));
+    CHECK(state->count == own_count + 1);
+    CHECK(state->crossed[theirs[1]] == 1);
+    CHECK(state->min_gap == gap / 2);
   }
 }

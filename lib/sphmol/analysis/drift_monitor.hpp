@@ -1,37 +1,73 @@
 #pragma once
 // Largest displacement of any fluid particle from its initial position, checked at every RHS
-// evaluation (so every step and stage, not only output times). A term with no effect on the RHS;
-// the hydrostatic case appends it. Positions are those the RHS sees (not wrapped in walled directions).
+// evaluation (so every step and stage, not only output times). A monitor (rhs/monitor.hpp) whose term
+// has no effect on the RHS; the hydrostatic case adds it. Positions are those the RHS sees (not
+// wrapped in walled directions). Over ranks each rank takes the largest over the particles it owns,
+// against their initial positions by serial index, and combine() the largest over the ranks.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <vector>
 
-#include "sphmol/rhs/term.hpp"
+#include "sphmol/rhs/monitor.hpp"
 
 namespace sphmol {
 
 template <int D>
-class DriftMonitor final : public Term<D> {
+class DriftMonitor final : public Monitor<D> {
+  using Positions = std::array<std::vector<double>, D>;
+
  public:
   DriftMonitor(const Particles<D>& initial, std::shared_ptr<double> max_drift) : max_(std::move(max_drift)) {
-    for (int d = 0; d < D; ++d) x0_[d].assign(initial.x[d].begin(), initial.x[d].begin() + initial.n_fluid);
+    auto x0 = std::make_shared<Positions>();
+    for (int d = 0; d < D; ++d) (*x0)[d].assign(initial.x[d].begin(), initial.x[d].begin() + initial.n_fluid);
+    x0_ = std::move(x0);
   }
-  std::string_view name() const override { return "drift_monitor"; }
-  void apply(Workspace<D>& w) const override {
-    double m2 = 0.0;
-    for (std::size_t i = 0; i < w.n_fluid; ++i) {
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double dx = w.domain->min_image(d, w.x[d][i] - x0_[d][w.order ? w.order[i] : i]);
-        r2 += dx * dx;
-      }
-      m2 = std::max(m2, r2);
-    }
-    *max_ = std::max(*max_, std::sqrt(m2));
-  }
+  std::unique_ptr<Term<D>> watch(const WatchedRows& rows) override { return std::make_unique<Watch>(x0_, max_, rows); }
+  void combine(const RankReduction& ranks) override { *max_ = ranks.max(*max_); }
 
  private:
-  std::array<std::vector<double>, D> x0_;
+  class Watch final : public Term<D> {
+   public:
+    Watch(std::shared_ptr<const Positions> x0, std::shared_ptr<double> max, WatchedRows rows)
+        : x0_(std::move(x0)), max_(std::move(max)), rows_(std::move(rows)) {}
+    std::string_view name() const override { return "drift_monitor"; }
+    void apply(Workspace<D>& w) const override {
+      if (rows_.paused()) return;
+      const Positions& x0 = *x0_;
+      double m2 = 0.0;
+      if (rows_.whole()) {
+        for (std::size_t i = 0; i < w.n_fluid; ++i) {
+          double r2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            const double dx = w.domain->min_image(d, w.x[d][i] - x0[d][w.order ? w.order[i] : i]);
+            r2 += dx * dx;
+          }
+          m2 = std::max(m2, r2);
+        }
+      } else {
+        // A rank's local system: its own rows, each against its particle's start by serial index.
+        for (std::size_t i = 0; i < w.n_fluid; ++i) {
+          if (!rows_.owned[i]) continue;
+          double r2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            const double dx = w.domain->min_image(d, w.x[d][i] - x0[d][rows_.id[i]]);
+            r2 += dx * dx;
+          }
+          m2 = std::max(m2, r2);
+        }
+      }
+      *max_ = std::max(*max_, std::sqrt(m2));
+    }
+
+   private:
+    std::shared_ptr<const Positions> x0_;
+    std::shared_ptr<double> max_;
+    WatchedRows rows_;
+  };
+
+  std::shared_ptr<const Positions> x0_;
   std::shared_ptr<double> max_;
 };
 

@@ -14,6 +14,7 @@
 #include "sphmol/core/state_layout.hpp"
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
+#include "sphmol/rhs/monitor.hpp"
 #include "sphmol/rhs/particle_generator.hpp"
 #include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
@@ -106,8 +107,15 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   bool reorder() const { return reorder_; }
   // Workspace index -> state index of the current order (empty when reordering is off).
   const std::vector<std::uint32_t>& workspace_order() const { return perm_; }
-  // Appends a term after the scene's terms (a case's monitor, e.g. particle drift at every evaluation).
+  // Appends a term after the scene's terms.
   void append_term(std::unique_ptr<Term<D>> t);
+  // A case's monitor (rhs/monitor.hpp): its term watching every fluid particle is appended after the
+  // scene's terms, and the monitor is kept for the local systems of a run over ranks.
+  void add_monitor(std::shared_ptr<Monitor<D>> m) {
+    append_term(m->watch(WatchedRows{}));
+    monitors_.push_back(std::move(m));
+  }
+  const std::vector<std::shared_ptr<Monitor<D>>>& monitors() const { return monitors_; }
   // Runs the pair terms in fused passes (rhs/fused_pair_pass.hpp, grouped by rhs/pair_pass_plan.hpp)
   // instead of over a stored active-pair list; results are bit-identical, memory and time lower.
   // Requires terms_needing_stored_pairs() to be empty. Set before the first rhs().
@@ -175,6 +183,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   StateLayout<D> layout_;
   std::unique_ptr<KernelPass<D>> kernel_;
   std::vector<std::unique_ptr<Term<D>>> terms_;
+  std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // add_monitor()
   std::unique_ptr<VerletList<D>> pairs_;
   CflLimits cfl_;
   std::unique_ptr<ParticleGenerator<D>> generator_;

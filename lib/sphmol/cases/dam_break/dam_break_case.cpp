@@ -28,7 +28,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   for (std::size_t i = 0; i < n_fluid0_; ++i) mass0_ += s.particles.mass[i];
   csv_ = "t [s],T [-],x_front [m],x_ritter [m],x_mm [m],x_ko [m]\n";
   auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
-  sys->append_term(std::make_unique<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], penetration_));
+  sys->add_monitor(std::make_shared<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], n_fluid0_, penetration_));
   return sys;
 }
 

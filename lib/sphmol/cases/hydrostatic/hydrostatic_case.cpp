@@ -40,7 +40,7 @@ std::unique_ptr<SphSystem<D>> HydrostaticCase<D>::build(const Config& config) {
   spacing_ = s.spacing;
   Particles<D> initial = s.particles;
   auto sys = assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, &s.walls);
-  sys->append_term(std::make_unique<DriftMonitor<D>>(initial, drift_));
+  sys->add_monitor(std::make_shared<DriftMonitor<D>>(initial, drift_));
   return sys;
 }
 
