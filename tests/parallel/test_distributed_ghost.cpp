@@ -35,9 +35,9 @@ using namespace sphmol::parallel::testing;
 namespace {
 
 // The mirror walls are what this file is about.
-Finished check_ghost_same_as_serial(const Config& c, const std::vector<std::string>& output_only = {}, double rebalance = 1.2) {
+Finished check_ghost_same_as_serial(const Config& c, double rebalance = 1.2) {
   REQUIRE(c.discretization.boundary == "ghost");
-  return check_same_as_serial(c, output_only, rebalance);
+  return check_same_as_serial(c, rebalance);
 }
 
 Config cavity(const std::string& integrator) {
@@ -56,7 +56,7 @@ TEST_CASE("distributed run: the 2D Sod tube with free-slip ghost walls equals th
     CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
   }
   SECTION("leapfrog, partitioned again at every re-plan") {
-    const Finished split = check_ghost_same_as_serial(short_shock_tube("sod.yaml"), {}, 1.0);
+    const Finished split = check_ghost_same_as_serial(short_shock_tube("sod.yaml"), 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
   SECTION("cvode_adams") { check_ghost_same_as_serial(short_shock_tube("sod.yaml", {"time.integrator=cvode_adams"})); }
@@ -67,7 +67,7 @@ TEST_CASE("distributed run: the lid-driven cavity with no-slip ghost walls equal
   // Four no-slip mirrors: the lid's images move at 2 U - v, the corners' particles have three images.
   SECTION("leapfrog, one partition") { check_ghost_same_as_serial(cavity("leapfrog")); }
   SECTION("leapfrog, partitioned again at every re-plan") {
-    const Finished split = check_ghost_same_as_serial(cavity("leapfrog"), {}, 1.0);
+    const Finished split = check_ghost_same_as_serial(cavity("leapfrog"), 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
   SECTION("arkode_erk") { check_ghost_same_as_serial(cavity("arkode_erk")); }
@@ -83,7 +83,7 @@ TEST_CASE("distributed run: a water column with ghost walls under gravity equals
                                 "discretization.density=summation", "fluid.eos.clamp_negative=true",
                                 "discretization.particles_across=20", "time.dt=5.0e-4", "time.t_end=0.05",
                                 "output.times=[0.025,0.05]", "output.plots=false"});
-  const Finished split = check_ghost_same_as_serial(c, {"max_drift", "drift_creep", "drift_creep_since"});
+  const Finished split = check_ghost_same_as_serial(c);
   CHECK(split.summary["parallel"]["halo_depth_list_radii"].get<int>() >= 2);
 }
 
@@ -101,7 +101,7 @@ TEST_CASE("distributed run: a water column that falls through its bottom mirror 
                                 "geometry.box=[0.25, 0.6]", "discretization.particles_across=5", "time.dt=2.5e-4", "time.t_end=0.3",
                                 "discretization.skin=0.1", "fluid.body_force=[0, -100]", "fluid.body_force_ramp=0",
                                 "output.times=[0.15,0.3]", "output.plots=false"});
-  const Finished split = check_ghost_same_as_serial(c, {"max_drift", "drift_creep", "drift_creep_since"});
+  const Finished split = check_ghost_same_as_serial(c);
   CHECK(split.summary["parallel"]["ghost_mirror_margin_max"].get<double>() > 0.0);
 }
 

@@ -38,8 +38,6 @@ Config channel(const std::string& file, const std::string& integrator, const std
   return load_config(verification(file), o);
 }
 
-const std::vector<std::string> monitored{"min_wall_gap", "wall_penetrations"};
-
 Config dam_break(const std::string& integrator, const std::vector<std::string>& more = {}) {
   std::vector<std::string> o{"discretization.spacing=0.04", "time.integrator=" + integrator, "time.t_end=0.04",
                              "output.times=[0.02,0.04]", "output.plots=false"};
@@ -63,11 +61,11 @@ TEST_CASE("distributed run: Couette with CVODE Adams equals the serial run bit f
 TEST_CASE("distributed run: the dam break with ARKODE and CVODE equals the serial run bit for bit",
           "[parallel][run][sundials]") {
   SECTION("arkode_erk") {
-    const Finished split = check_same_as_serial(dam_break("arkode_erk"), monitored);
+    const Finished split = check_same_as_serial(dam_break("arkode_erk"));
     // Stage states at which the halo had to be planned again: the particles moved.
     CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 1);
   }
-  SECTION("cvode_adams") { check_same_as_serial(dam_break("cvode_adams"), monitored); }
+  SECTION("cvode_adams") { check_same_as_serial(dam_break("cvode_adams")); }
 }
 
 TEST_CASE("distributed run: the 1D shock tube with the energy equation, ARKODE and CVODE equals the serial run bit for bit",
@@ -119,14 +117,14 @@ TEST_CASE("distributed run: leapfrog_imex repartitioned over ranks equals the se
     const Finished split = check_same_as_serial(channel("poiseuille.yaml", "leapfrog_imex",
                                                         {"discretization.particles_across=21", "geometry.channel_length=5.238095238095238e-4",
                                                          "time.t_end=0.6", "output.times=[0.3,0.6]"}),
-                                                {}, 1.0, 2);
+                                                1.0, 2);
     CHECK(split.summary["parallel"]["repartitions_declined"] == 0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 10);
   }
   SECTION("the lid-driven cavity stirs the particles: repartitioned again and again") {
     const Config c = load_config(verification("cavity.yaml"), {"discretization.particles_across=20", "time.integrator=leapfrog_imex",
                                                                "time.t_end=0.5", "output.times=[0.25,0.5]", "output.plots=false"});
-    const Finished split = check_same_as_serial(c, {}, 1.0, 2);
+    const Finished split = check_same_as_serial(c, 1.0, 2);
     CHECK(split.summary["parallel"]["repartitions_declined"] == 0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 1);
   }
@@ -135,7 +133,7 @@ TEST_CASE("distributed run: leapfrog_imex repartitioned over ranks equals the se
 TEST_CASE("distributed run: ARKODE's particles are not repartitioned, which would restart it", "[parallel][run][sundials]") {
   // A threshold of 1 asks for a new partition at every re-plan; the leapfrogs would migrate, ARKODE
   // stays on its partition (starting it again would change its steps) and still takes the serial steps.
-  const Finished split = check_same_as_serial(dam_break("arkode_erk"), monitored, 1.0);
+  const Finished split = check_same_as_serial(dam_break("arkode_erk"), 1.0);
   CHECK(split.summary["parallel"]["repartitions"] == 0);
   if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions_declined"].get<long>() > 0);
 }

@@ -47,7 +47,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       rebalance_threshold_(rebalance_threshold),
       domain_(whole.domain()),
       whole_layout_(whole.layout()),
-      implicit_terms_(whole.implicit_terms()) {
+      implicit_terms_(whole.implicit_terms()),
+      monitors_(whole.monitors()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
   if (whole.reorder()) throw std::invalid_argument("DistributedSystem: reordering is not supported");
   // Ghost (mirror) walls: every local system is assembled with the whole system's mirrors (the header).
@@ -343,6 +344,18 @@ void DistributedSystem<D>::plan() {
     std::vector<double> h0(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
     local_->set_initial_smoothing_lengths(h0);
+  }
+  if (!monitors_.empty()) {
+    // The monitors watch the owned fluid rows, by global id (the halo's are their owners' to watch).
+    WatchedRows rows;
+    rows.id.resize(nf_local_);
+    rows.owned.resize(nf_local_);
+    for (std::size_t k = 0; k < nf_local_; ++k) {
+      rows.id[k] = gid_of(order[k]);
+      rows.owned[k] = order[k] < no ? 1 : 0;
+    }
+    rows.watching = watching_;
+    for (const auto& m : monitors_) local_->append_term(m->watch(rows));
   }
   y_local_.assign(local_->size(), 0.0);
   f_local_.assign(local_->size(), 0.0);

@@ -34,6 +34,11 @@
 // partitioned again by their current pair counts and migrate with their state (repartition(),
 // between steps, with whatever per-particle arrays the integrator carries).
 //
+// A case's monitors (rhs/monitor.hpp, declared on the whole system): every local system gets each
+// monitor's term watching the fluid particles the rank owns, by their global ids, so that they see
+// every evaluation as the serial system's do; the results stay in the monitors, across halo plans
+// and repartitions, and MpiRun combines them over the ranks where the case reads them.
+//
 // SUNDIALS integrators wrap the rank's state in an MPI vector (wrap_state: N_VMake_Parallel over
 // the owned rows, no copy) whose weighted RMS norm is a fixed-point sum reduced over the ranks
 // (fixed_point_norm_mpi.hpp): every rank sees the serial run's error norms and takes its steps. An
@@ -130,6 +135,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   const std::vector<std::uint64_t>& gid() const { return gid_; }
   double owned_density(std::size_t o) const;
   const Domain<D>& domain() const { return domain_; }
+  // Whether the monitors watch the evaluations (true unless set otherwise): not while an integrator
+  // starts again on a new share (MpiRun::rebalance), whose evaluation the serial run does not make.
+  void watch_evaluations(bool on) { *watching_ = on; }
+  const std::vector<std::shared_ptr<Monitor<D>>>& monitors() const { return monitors_; }
   // The terms of the local systems (the scene's, from the config; empty before the first evaluation).
   std::vector<std::string> active_terms() const { return local_ ? local_->active_terms() : std::vector<std::string>{}; }
 
@@ -208,6 +217,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   ViscousOperator local_op_;
   std::vector<std::string> implicit_terms_;
   std::unique_ptr<SphSystem<D>> local_;
+  std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // the whole system's
+  std::shared_ptr<bool> watching_ = std::make_shared<bool>(true);
   std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan

@@ -34,6 +34,10 @@ class PartitionedRun {
   virtual OwnedPiece<D> owned_piece(double t) = 0;
   // Collective: returns once every rank has called it.
   virtual void barrier() = 0;
+  // Collective: the results of the case's monitors (rhs/monitor.hpp), which each rank gathers from
+  // the evaluations of its own particles, combined over the ranks, on every rank: called before the
+  // case reads them (output times, the summary).
+  virtual void combine_monitors() = 0;
   // Collective, after each accepted step: throws BlowUp on every rank when any rank's part fails a
   // check (the same BlowUp everywhere). `signal`: the signal this rank has received (0: none);
   // returns the largest of all ranks', the same on every rank, so that the ranks stop at the same

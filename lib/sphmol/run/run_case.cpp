@@ -160,6 +160,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     if (part) {
       part->gather(y);
       integrator_state = part->whole_integrator_state(integrator->save_state());
+      part->combine_monitors();  // for the summary of an interrupted run
     }
     if (!out.enabled) return;
     Checkpoint cp;
@@ -260,7 +261,11 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
     // so the interrupt checkpoint never misses a measurement at its own time.
     if (t >= times[next_out]) {
-      if (part) part->gather(y);
+      // Over ranks the case's monitors have watched each rank's own particles: combined for its measurement.
+      if (part) {
+        part->gather(y);
+        part->combine_monitors();
+      }
       if (root) {
         // The per-particle fields (density, pressure) of this very state, not of the integrator's
         // last stage: both the case's measurement and the observers read them.
@@ -293,6 +298,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     // thrown the same BlowUp in the same step, and the root writes it.
     std::vector<double> last_good;
     if (part && own.enabled && stepping) part->gather_last_good(last_good);
+    if (part && stepping) part->combine_monitors();
     const std::vector<double>* good = part ? &last_good : health ? &health->last_good_state() : nullptr;
     if (out.enabled && good && !good->empty()) {
       write_last_good_state<D>(*sys, good->data(), out.path("last_good_state.csv"));
@@ -306,7 +312,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     checkpoint();
     if (opt.log) *opt.log << "interrupted by signal " << signal << " at t = " << t << " s; checkpoint written\n";
   } else if (blow_up.is_null()) {
-    if (part) part->gather(y);
+    if (part) {
+      part->gather(y);
+      part->combine_monitors();
+    }
     if (root)
       for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
     if (opt.final_state) *opt.final_state = y;
