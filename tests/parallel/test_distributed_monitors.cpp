@@ -41,8 +41,8 @@ TEST_CASE("distributed run: the dam break's wall penetrations and closest wall a
           "[parallel][run][monitors]") {
   // A slow sound speed (15 m/s) lets the surge that hits the right wall push particles through it;
   // the wall pushes some of them back before the next output time. Measured with the monitor at
-  // output times only (on rank 0), 2 ranks: 1 penetration and a closest approach of 0.054 dx against
-  // the serial 2 and 2.9e-4 dx.
+  // output times only (on rank 0), 2 ranks: 2 penetrations and a closest approach of 1.7e-3 dx
+  // against the serial 4 and 6.1e-4 dx.
   const Config c = load_config(verification("dam_break.yaml"),
                                {"discretization.spacing=0.04", "geometry.box=[2.0, 3.0]", "fluid.eos.sound_speed=15",
                                 "time.t_end=0.4", "output.times=[0.2,0.4]", "output.plots=false"});
@@ -68,8 +68,7 @@ TEST_CASE("distributed run: the dam break's wall penetrations and closest wall a
 TEST_CASE("distributed run: the water column's largest drift is the serial run's", "[parallel][run][monitors]") {
   // Gravity switched on at once: the column sinks under its weight, overshoots and rebounds, its
   // largest displacement peaking near t = 0.07 s, between the output times. Measured with the monitor
-  // at output times only, 2 ranks: max_drift 0.075 dx at t = 0.04 s and ... at 0.12 s against the
-  // serial 0.13 dx.
+  // at output times only, 2 ranks: max_drift 0.076 dx against the serial 0.130 dx.
   const std::vector<std::string> settings{"discretization.particles_across=10", "fluid.body_force_ramp=0",
                                          "time.t_end=0.12", "output.times=[0.04,0.12]", "output.plots=false"};
   SECTION("one partition") {
