@@ -38,8 +38,7 @@ template <int D>
 class Monitor {
  public:
   virtual ~Monitor() = default;
-  // The term (named as the monitor's results are known in the summary's active_terms) that watches
-  // `rows` of a system at every evaluation, adding to this monitor's results.
+  // The term that watches `rows` of a system at every evaluation, adding to this monitor's results.
   virtual std::unique_ptr<Term<D>> watch(const WatchedRows& rows) = 0;
   // Collective over the ranks: every rank's results merged, on every rank.
   virtual void combine(const RankReduction& ranks) = 0;
