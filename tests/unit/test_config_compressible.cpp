@@ -136,7 +136,8 @@ TEST_CASE("discretization.continuity: mass by default, volume for sod.yaml, roun
 }
 
 TEST_CASE("artificial viscosity switch and dynamic wall floor: defaults, round trip, bad values", "[config]") {
-  const Config c = load_config(shock);
+  // The shipped tube takes the smooth switch; the defaults with the section given without it.
+  const Config c = load_config(shock, {"discretization.artificial_viscosity={alpha: 1.0, beta: 1.0, eta: 0.1}"});
   CHECK(c.discretization.artificial_viscosity.switch_form == "sharp");
   CHECK(c.discretization.artificial_viscosity.switch_width == 1e-4);
   const Config s = load_config(shock, {"discretization.artificial_viscosity.switch=smooth"});
@@ -154,6 +155,15 @@ TEST_CASE("artificial viscosity switch and dynamic wall floor: defaults, round t
   for (const char* bad : {"0", "-1e-3", "1.5"})
     CHECK_THAT(error_of({"discretization.artificial_viscosity.switch=smooth", std::string("discretization.artificial_viscosity.switch_width=") + bad}),
                Contains("artificial_viscosity.switch_width") && Contains("(0, 1]"));
+  CHECK(c.discretization.artificial_viscosity.switch_offset == 0.0);
+  const Config o = load_config(shock, {"discretization.artificial_viscosity.switch=smooth", "discretization.artificial_viscosity.switch_offset=0.25"});
+  CHECK(o.discretization.artificial_viscosity.band_offset() == 0.25);
+  CHECK(load_config_string(to_yaml(o)).discretization.artificial_viscosity.switch_offset == 0.25);
+  CHECK_THAT(error_of({"discretization.artificial_viscosity={alpha: 1.0, switch: sharp, switch_offset: 0.1}"}),
+             Contains("switch_offset") && Contains("'smooth' only"));
+  for (const char* bad : {"-0.1", "0.6"})
+    CHECK_THAT(error_of({"discretization.artificial_viscosity.switch=smooth", std::string("discretization.artificial_viscosity.switch_offset=") + bad}),
+               Contains("artificial_viscosity.switch_offset") && Contains("[0, 0.5]"));
 
   const std::string dam = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
   const Config d = load_config(dam);

@@ -48,7 +48,7 @@ Tank make_tank(const Config& c, double speed) {
   t.model.beta_max = d.wall_beta_max;
   t.model.artificial_viscosity = d.artificial_viscosity.enabled;
   t.model.pi = {d.artificial_viscosity.alpha, d.artificial_viscosity.beta, d.artificial_viscosity.eta,
-                d.artificial_viscosity.switch_form == "smooth" ? d.artificial_viscosity.switch_width : 0.0};
+                d.artificial_viscosity.band_width(), d.artificial_viscosity.band_offset()};
   t.K = kernel_info<2>(d.kernel);
   return t;
 }

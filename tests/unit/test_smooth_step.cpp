@@ -99,3 +99,41 @@ TEMPLATE_TEST_CASE("smooth viscosity switch: Monaghan outside the band, zero whe
   CHECK(sharp(a, r2, hij, cbar, rhobar) / sharp(b, r2, hij, cbar, rhobar) == Approx(0.5).epsilon(0.01));
   CHECK(smooth(a, r2, hij, cbar, rhobar) / smooth(b, r2, hij, cbar, rhobar) < std::pow(2.0, -20));
 }
+
+TEMPLATE_TEST_CASE("smooth viscosity switch with an offset band: Monaghan outside it, dissipative in it, smooth at 0",
+                   "[smooth_step][physics]", MonaghanPi, SignalVelocityPi) {
+  const double r2 = 0.04, hij = 0.13, cbar = 3.0, rhobar = 1.2, width = 0.3, offset = 0.25;
+  TestType sharp, shifted;
+  if constexpr (std::is_same_v<TestType, MonaghanPi>) {
+    sharp = MonaghanPi{1.0, 2.0, 0.1};
+    shifted = MonaghanPi{1.0, 2.0, 0.1, width, offset};
+  } else {
+    sharp = SignalVelocityPi{1.0, 2.0};
+    shifted = SignalVelocityPi{1.0, 2.0, width, offset};
+  }
+  const double delta = width * cbar * hij, lo = -(1 - offset) * delta, hi = offset * delta;
+  // Outside the band [-(1 - offset) delta, offset delta]: Monaghan's Pi exactly (0 when receding).
+  for (double vx : {-10.0, -1.0, lo * (1 + 1e-12), lo}) CHECK(shifted(vx, r2, hij, cbar, rhobar) == sharp(vx, r2, hij, cbar, rhobar));
+  for (double vx : {hi, hi * (1 + 1e-12), 1.0}) CHECK(shifted(vx, r2, hij, cbar, rhobar) == 0.0);
+  // In it: Pi of the sign that keeps the heating 1/2 m Pi F v_ij.x_ij >= 0 (F < 0): Pi >= 0 approaching,
+  // Pi <= 0 receding; approaching, more than the band on the approaching side alone gives.
+  TestType one_sided;
+  if constexpr (std::is_same_v<TestType, MonaghanPi>) one_sided = MonaghanPi{1.0, 2.0, 0.1, width};
+  else one_sided = SignalVelocityPi{1.0, 2.0, width};
+  for (int k = 1; k < 100; ++k) {
+    const double vx = lo + (hi - lo) * k / 100.0, p = shifted(vx, r2, hij, cbar, rhobar);
+    CHECK(p * vx <= 0.0);
+    if (vx < 0.0) {
+      CHECK(p <= sharp(vx, r2, hij, cbar, rhobar));
+      CHECK(p > one_sided(vx, r2, hij, cbar, rhobar));
+    }
+  }
+  // Smooth through 0, where the sharp switch has its kink: the difference quotients of Pi on either side
+  // of 0 agree (the sharp switch: 0 on the receding side).
+  const double e = 1e-6 * delta;
+  const double left = (shifted(0.0, r2, hij, cbar, rhobar) - shifted(-e, r2, hij, cbar, rhobar)) / e;
+  const double right = (shifted(e, r2, hij, cbar, rhobar) - shifted(0.0, r2, hij, cbar, rhobar)) / e;
+  CHECK(right == Approx(left).epsilon(1e-4));
+  CHECK(left < 0.0);
+  CHECK((sharp(e, r2, hij, cbar, rhobar) - sharp(0.0, r2, hij, cbar, rhobar)) / e == 0.0);
+}

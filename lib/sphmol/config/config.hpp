@@ -68,8 +68,12 @@ struct ArtificialViscosityConfig {
   // the viscosity off for pairs slower than its band, which a scene near rest relies on for damping).
   std::string switch_form = "sharp";
   double switch_width = 1e-4;  // in (0, 1], smooth only
+  // The band's part on the receding side (v_ij.x_ij > 0), a fraction of it in [0, 0.5], smooth only:
+  // the band is [-(1 - switch_offset), switch_offset] switch_width cbar h_ij.
+  double switch_offset = 0.0;
   // The band the Pi forms take (MonaghanPi::width): 0 for the sharp switch, min(v_ij.x_ij, 0) exactly.
   double band_width() const { return switch_form == "smooth" ? switch_width : 0.0; }
+  double band_offset() const { return switch_form == "smooth" ? switch_offset : 0.0; }
 };
 
 // Artificial thermal conductivity (Price 2008; physics/artificial_conductivity.hpp); absent = off.

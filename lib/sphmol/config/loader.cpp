@@ -434,7 +434,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.reorder && d.boundary == "ghost")
       disc.fail("reorder", "not available with boundary 'ghost' (mirror images refer to the previous particle order)");
     if (disc.has("artificial_viscosity")) {
-      MapReader av = disc.section("artificial_viscosity", {"form", "alpha", "beta", "eta", "switch", "switch_width"});
+      MapReader av = disc.section("artificial_viscosity", {"form", "alpha", "beta", "eta", "switch", "switch_width", "switch_offset"});
       auto& a = d.artificial_viscosity;
       a.enabled = true;
       if (const auto v = av.string("form")) a.form = av.choice("form", *v, {"monaghan_1992", "monaghan_1997"});
@@ -454,6 +454,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       if (const auto v = av.real("switch_width")) a.switch_width = *v;
       av.check("switch_width", a.switch_width > 0 && a.switch_width <= 1, a.switch_width,
                "in (0, 1] (the band in cbar_ij h_ij)");
+      if (a.switch_form == "sharp" && av.has("switch_offset"))
+        av.fail("switch_offset", "places the band of switch 'smooth' only (switch: sharp is min(v_ij.x_ij, 0))");
+      if (const auto v = av.real("switch_offset")) a.switch_offset = *v;
+      av.check("switch_offset", a.switch_offset >= 0 && a.switch_offset <= 0.5, a.switch_offset,
+               "in [0, 0.5] (the band's receding part, a fraction of it)");
     }
     if (disc.has("artificial_conductivity")) {
       MapReader ac = disc.section("artificial_conductivity", {"alpha"});

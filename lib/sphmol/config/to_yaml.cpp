@@ -85,7 +85,9 @@ std::string to_yaml(const Config& c) {
       << ", beta: " << num(d.artificial_viscosity.beta)
       << (d.artificial_viscosity.form == "monaghan_1992" ? ", eta: " + num(d.artificial_viscosity.eta) : std::string())
       << ", switch: " << d.artificial_viscosity.switch_form
-      << (d.artificial_viscosity.switch_form == "smooth" ? ", switch_width: " + num(d.artificial_viscosity.switch_width) : std::string())
+      << (d.artificial_viscosity.switch_form == "smooth" ? ", switch_width: " + num(d.artificial_viscosity.switch_width) +
+                                                               ", switch_offset: " + num(d.artificial_viscosity.switch_offset)
+                                                         : std::string())
       << "}\n";
   if (d.artificial_conductivity.enabled)
     y << "  artificial_conductivity: {alpha: " << num(d.artificial_conductivity.alpha) << "}\n";

@@ -17,12 +17,18 @@
 // The switch. Both forms act on approaching pairs only, through min(v_ij . x_ij, 0): a kink in f(t, y)
 // where a pair turns, which caps every fixed-step integrator at order 2 (docs/verification.md, "Time-
 // error floor"). With width > 0 it is the C-infinity min of core/smooth_step.hpp,
-//   min(vx, 0) -> vx S(-vx / delta),  delta = width cbar_ij h_ij,
-// equal to min(vx, 0) for vx <= -delta and 0 for vx >= 0 (receding pairs still get nothing), and of
-// the sign of vx in between, so Pi_ij >= 0 and the heating >= 0 as before. delta is a velocity
-// (width cbar_ij) times a length (h_ij): the band is |v_ij| <~ width cbar_ij h_ij / |x_ij|, a fixed
-// fraction of the sound speed at every resolution and velocity scale. width = 0 is the sharp switch
-// exactly.
+//   min(vx, 0) -> vx S(offset - vx / delta),  delta = width cbar_ij h_ij,
+// equal to min(vx, 0) outside the band [-(1 - offset) delta, offset delta] and of the sign of vx in it.
+// offset = 0 (the default) puts the band on the approaching side: receding pairs still get nothing,
+// Pi_ij >= 0 and the heating >= 0 as before, but pairs approaching slower than about delta / 3 get
+// little viscosity. offset > 0 moves a part of the band to the receding side, where pairs slower than
+// offset delta get Pi_ij < 0 (the heating m_j Pi_ij F_ij vx / 2 stays >= 0 while beta t_ij rhobar_ij
+// < alpha cbar_ij, t_ij below: sw there is at most offset delta S(offset)), and the approaching pairs
+// get more of Pi_ij; at offset = 1/4, S(1/4) = 0.065, a shock tube's expanding pairs get at most 6.5 %
+// of the viscosity the same rate of compression would (docs/verification.md, "The shock tubes' switch").
+// delta is a velocity (width cbar_ij) times a length (h_ij): the band is |v_ij| <~ width cbar_ij h_ij /
+// |x_ij|, a fixed fraction of the sound speed at every resolution and velocity scale. width = 0 is the
+// sharp switch exactly.
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
@@ -32,20 +38,29 @@
 
 namespace sphmol {
 
-// Monaghan's Pi_ij for one pair from vx = v_ij . x_ij and r2 = |x_ij|^2. Receding pairs (vx >= 0) get
-// no viscosity: theta = 0 through the switch (above), with no branch. One division: t = theta / rhobar.
+// The switch of both Pi forms: min(vx, 0) for delta = 0, else the band [-(1 - offset) delta, offset delta]
+// (above).
+inline double switched_vx(double vx, double delta, double offset) {
+  return offset > 0.0 ? vx * smooth_step(offset - vx / delta) : smooth_min0(vx, delta);
+}
+
+// Monaghan's Pi_ij for one pair from vx = v_ij . x_ij and r2 = |x_ij|^2. Receding pairs (vx >= 0, beyond
+// the band's receding part) get no viscosity: theta = 0 through the switch (above), with no branch. One division: t = theta / rhobar.
 struct MonaghanPi {
   double alpha, beta, eta;
-  double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double width = 0.0;   // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double offset = 0.0;  // the band's receding part, a fraction of it in [0, 1/2]
   // The band delta in v_ij . x_ij.
   double band(double cbar, double hij) const { return width * cbar * hij; }
-  // Pi_ij from the switched sw = smooth_min0(vx, band) (<= 0).
+  // The switched v_ij . x_ij (above).
+  double sw(double vx, double cbar, double hij) const { return switched_vx(vx, band(cbar, hij), offset); }
+  // Pi_ij from the switched sw = sw(vx, cbar, hij) (of the sign of vx, <= 0 outside the band).
   double switched(double sw, double r2, double hij, double cbar, double rhobar) const {
     const double t = hij * sw / ((r2 + eta * eta * hij * hij) * rhobar);
     return (beta * t * rhobar - alpha * cbar) * t;
   }
   double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
-    return switched(smooth_min0(vx, band(cbar, hij)), r2, hij, cbar, rhobar);
+    return switched(sw(vx, cbar, hij), r2, hij, cbar, rhobar);
   }
 };
 
@@ -53,10 +68,12 @@ struct MonaghanPi {
 // (a particle's own row entry or coincident particles), where F = 0 too: no division by zero.
 struct SignalVelocityPi {
   double alpha, beta;
-  double width = 0.0;  // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double width = 0.0;   // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
+  double offset = 0.0;  // as MonaghanPi's
   double band(double cbar, double hij) const { return width * cbar * hij; }  // as MonaghanPi's
+  double sw(double vx, double cbar, double hij) const { return switched_vx(vx, band(cbar, hij), offset); }
   double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
-    const double w = r2 > 0.0 ? smooth_min0(vx, band(cbar, hij)) / std::sqrt(r2) : 0.0;
+    const double w = r2 > 0.0 ? sw(vx, cbar, hij) / std::sqrt(r2) : 0.0;
     return -alpha * (cbar - 0.5 * beta * w) * w / rhobar;  // v_sig = (c_i + c_j - beta w)/2 = cbar - beta w/2
   }
 };

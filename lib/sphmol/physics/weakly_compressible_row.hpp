@@ -204,7 +204,8 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
           r2 += dx[d][k] * dx[d][k];
         }
         const double hij = SameH ? hi : 0.5 * (hi + hj[k]), cbar = 0.5 * (ci + nb.c[k]);
-        if (!(vx < 0.0 && vx > -pi_.band(cbar, hij))) continue;
+        const double band = pi_.band(cbar, hij);
+        if (!(vx < pi_.offset * band && vx > -(1.0 - pi_.offset) * band)) continue;
         const double mk = SameMass ? mi : mj[k];
         ps[k] = mk * (qi + nb.q[k] + pi_(vx, r2, hij, cbar, 0.5 * (ri + nb.rho[k]))) * F[k];
       }

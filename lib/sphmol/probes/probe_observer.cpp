@@ -65,7 +65,7 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
   model_.beta_max = disc.wall_beta_max;
   model_.artificial_viscosity = disc.artificial_viscosity.enabled;
   model_.pi = {disc.artificial_viscosity.alpha, disc.artificial_viscosity.beta, disc.artificial_viscosity.eta,
-               disc.artificial_viscosity.band_width()};
+               disc.artificial_viscosity.band_width(), disc.artificial_viscosity.band_offset()};
 
   // Where the fluid can be sampled: the box of every particle at the start, widened by the kernel
   // support (periodic axes: the period).

@@ -128,7 +128,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   const bool signal_velocity = av.form == "monaghan_1997";
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
                       av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass";
-  const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width()};
+  const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width(), av.band_offset()};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
     if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
@@ -201,7 +201,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
   if (av.enabled && !wc_row) {
-    const SignalVelocityPi sv{av.alpha, av.beta, av.band_width()};
+    const SignalVelocityPi sv{av.alpha, av.beta, av.band_width(), av.band_offset()};
     if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
     else if (signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false, SignalVelocityPi>>(sv));
     else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(monaghan));
