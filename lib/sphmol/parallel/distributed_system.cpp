@@ -470,11 +470,6 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& LL = local_->layout();
-#pragma omp parallel for schedule(static)
-  for (std::size_t o = 0; o < nfo_; ++o) {
-    const std::size_t k = owned_at_[o];
-    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
-  }
   if (L.n_wall_density > 0)
     for (std::size_t o = nfo_; o < no; ++o)
       ydot[L.wall_density() + (o - nfo_)] = f_local_[LL.wall_density() + (owned_at_[o] - nf_local_)];
@@ -483,14 +478,16 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   const std::vector<double>& hs = local_->smoothing_lengths();
   const auto& v = local_->velocities();
   double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = local_->smoothing_length();
+  // One pass over the owned rows: their rates, then their CFL extremes from the rates just copied.
   // Minima and maxima: the same for any thread count.
 #pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
   for (std::size_t o = 0; o < nfo_; ++o) {
     const std::size_t k = owned_at_[o];
+    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
     double v2 = 0.0, a2 = 0.0;
     for (int d = 0; d < D; ++d) {
       v2 += v[d][k] * v[d][k];
-      const double a = f_local_[LL.velocity(d) + k];
+      const double a = ydot[L.velocity(d) + o];
       a2 += a * a;
     }
     amax2 = std::max(amax2, a2);
