@@ -16,6 +16,28 @@
 
 using namespace sphmol;
 
+namespace {
+
+using Evaluations = std::vector<std::array<std::vector<double>, 2>>;
+
+// A monitor of the tank watching `rows`, after the evaluations of `evals` (positions of the rows) on
+// `threads` threads; its results in `state`.
+std::unique_ptr<WallPenetrationMonitor> watched(double Lx, double Ly, std::size_t n, const WatchedRows& rows, std::size_t n_rows,
+                                                const Evaluations& evals, int threads, std::shared_ptr<WallPenetration> state) {
+  auto monitor = std::make_unique<WallPenetrationMonitor>(Lx, Ly, n, std::move(state));
+  const auto term = monitor->watch(rows);
+  Workspace<2> w;
+  w.n = w.n_fluid = n_rows;
+  for (const auto& e : evals) {
+    w.x = e;
+#pragma omp parallel num_threads(threads)
+    term->apply(w);
+  }
+  return monitor;
+}
+
+}  // namespace
+
 TEST_CASE("wall penetration monitor: count and gap equal a serial count and minimum on 1, 2 and 3 threads", "[analysis][threads]") {
   const double Lx = 4.0, Ly = 3.0;
   const std::size_t n = 1237;
@@ -23,7 +45,7 @@ TEST_CASE("wall penetration monitor: count and gap equal a serial count and mini
   // the floor, the side walls below their top, or fly over them (not a penetration), some again.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> ux(-0.3, Lx + 0.3), uy(-0.3, Ly + 0.5);
-  std::vector<std::array<std::vector<double>, 2>> evals(3);
+  Evaluations evals(3);
   for (auto& e : evals)
     for (std::size_t i = 0; i < n; ++i) {
       e[0].push_back(ux(rng));
@@ -48,15 +70,7 @@ TEST_CASE("wall penetration monitor: count and gap equal a serial count and mini
   for (const int threads : {1, 2, 3}) {
     INFO("threads " << threads);
     auto state = std::make_shared<WallPenetration>();
-    WallPenetrationMonitor monitor(Lx, Ly, n, state);
-    const auto term = monitor.watch(WatchedRows{});
-    Workspace<2> w;
-    w.n = w.n_fluid = n;
-    for (const auto& e : evals) {
-      w.x = e;
-#pragma omp parallel num_threads(threads)
-      term->apply(w);
-    }
+    const auto monitor = watched(Lx, Ly, n, WatchedRows{}, n, evals, threads, state);
     CHECK(state->count == count);
     CHECK(state->min_gap == gap);
     CHECK(state->crossed == crossed);
@@ -98,7 +112,7 @@ TEST_CASE("wall penetration monitor: a rank's rows watch its own particles by se
   std::sort(rows.id.begin(), rows.id.end());
   for (std::size_t i = 0; i < rows.id.size(); ++i) rows.owned.push_back(i % 3 == 2 ? 0 : 1);
   std::uniform_real_distribution<double> ux(-0.3, Lx + 0.3), uy(-0.3, Ly + 0.5);
-  std::vector<std::array<std::vector<double>, 2>> evals(3);
+  Evaluations evals(3);
   for (auto& e : evals)
     for (std::size_t i = 0; i < rows.id.size(); ++i) {
       e[0].push_back(ux(rng));
@@ -126,19 +140,11 @@ TEST_CASE("wall penetration monitor: a rank's rows watch its own particles by se
   for (const int threads : {1, 2, 3}) {
     INFO("threads " << threads);
     auto state = std::make_shared<WallPenetration>();
-    WallPenetrationMonitor monitor(Lx, Ly, n, state);
-    const auto term = monitor.watch(rows);
-    Workspace<2> w;
-    w.n = w.n_fluid = rows.id.size();
-    for (const auto& e : evals) {
-      w.x = e;
-#pragma omp parallel num_threads(threads)
-      term->apply(w);
-    }
+    const auto monitor = watched(Lx, Ly, n, rows, rows.id.size(), evals, threads, state);
     CHECK(state->crossed == crossed);
     CHECK(state->count == own_count);
     CHECK(state->min_gap == gap);
-    monitor.combine(OneOtherRank(theirs, gap / 2));
+    monitor->combine(OneOtherRank(theirs, gap / 2));
     CHECK(state->count == own_count + 1);
     CHECK(state->crossed[theirs[1]] == 1);
     CHECK(state->min_gap == gap / 2);
