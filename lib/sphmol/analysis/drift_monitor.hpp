@@ -37,26 +37,17 @@ class DriftMonitor final : public Monitor<D> {
       if (rows_.paused()) return;
       const Positions& x0 = *x0_;
       double m2 = 0.0;
-      if (rows_.whole()) {
-        for (std::size_t i = 0; i < w.n_fluid; ++i) {
-          double r2 = 0.0;
-          for (int d = 0; d < D; ++d) {
-            const double dx = w.domain->min_image(d, w.x[d][i] - x0[d][w.order ? w.order[i] : i]);
-            r2 += dx * dx;
-          }
-          m2 = std::max(m2, r2);
+      const bool whole = rows_.whole();
+      for (std::size_t i = 0; i < w.n_fluid; ++i) {
+        // A rank's local system: its own rows only, each against its particle's start by serial index.
+        if (!whole && !rows_.owned[i]) continue;
+        const std::size_t k = whole ? (w.order ? w.order[i] : i) : rows_.id[i];
+        double r2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double dx = w.domain->min_image(d, w.x[d][i] - x0[d][k]);
+          r2 += dx * dx;
         }
-      } else {
-        // A rank's local system: its own rows, each against its particle's start by serial index.
-        for (std::size_t i = 0; i < w.n_fluid; ++i) {
-          if (!rows_.owned[i]) continue;
-          double r2 = 0.0;
-          for (int d = 0; d < D; ++d) {
-            const double dx = w.domain->min_image(d, w.x[d][i] - x0[d][rows_.id[i]]);
-            r2 += dx * dx;
-          }
-          m2 = std::max(m2, r2);
-        }
+        m2 = std::max(m2, r2);
       }
       *max_ = std::max(*max_, std::sqrt(m2));
     }

@@ -53,14 +53,11 @@ class Halo {
     exchange(comm, owned.data(), halo.data());
     return halo;
   }
-  // The same for rows of `width` doubles per particle (a width known at run time: the state blocks
-  // a scene has), owned[i * width ...] to halo[k * width ...].
-  void exchange_rows(const Communicator& comm, const double* owned, std::size_t width, double* halo) const {
-    exchange_bytes(comm, reinterpret_cast<const std::byte*>(owned), width * sizeof(double), reinterpret_cast<std::byte*>(halo));
-  }
-  // The same without an array of every owned row: pack(i, row) writes owned particle i's `width`
-  // doubles, only for the particles sent, and overlap() runs while the messages travel (work on
-  // this rank's own data). A state of a million particles is then not copied to send a few thousand.
+  // Rows of `width` doubles per particle (a width known at run time: the state blocks a scene has)
+  // without an array of every owned row: pack(i, row) writes owned particle i's row, only for the
+  // particles sent; halo[k * width ...] receives the k-th halo particle's; overlap() runs while the
+  // messages travel (work on this rank's own data). A state of a million particles is then not
+  // copied to send a few thousand.
   template <class Pack, class Overlap>
   void exchange_rows(const Communicator& comm, std::size_t width, Pack&& pack, double* halo, Overlap&& overlap) const {
     const std::size_t bytes = width * sizeof(double);
