@@ -94,10 +94,17 @@ class MpiRun final : public PartitionedRun<D> {
     // recorded by it, are replaced by the restored arrays: the steps go on bit for bit).
     nlohmann::json js = integrator.save_state();
     // ARKODE and CVODE keep their step history (error controller, Adams history) inside SUNDIALS;
-    // starting them again on a new share would change the steps from the serial run's, so their
+    // starting them again on a new share would change the steps from the serial run's. ARKODE's
+    // ERKStep resizes its vectors keeping that history (Integrator::resize); CVODE cannot, so its
     // particles stay where they are (counted in the summary).
     if (!js.contains("f")) {
-      ++declined_;
+      if (!integrator.can_resize()) {
+        ++declined_;
+        return;
+      }
+      sys_.repartition(t, y_, {}, {});
+      integrator.resize(sys_, t, y_.data());
+      if (health_) health_->moved(y_);
       return;
     }
     std::vector<double> f = decode_doubles(js.at("f").get<std::string>());

@@ -254,7 +254,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       stepping = true;
       t = integrator->step_toward(stop);
       stepping = false;
-      if (part) part->rebalance(*integrator, t);
+      // Not after the last step: nothing would run on the new share.
+      if (part && t < times.back()) part->rebalance(*integrator, t);
       if (opt.after_step) opt.after_step(t);
       progress.update(t, integrator->stats().last_step, integrator->stats().steps);
     }

@@ -132,6 +132,17 @@ void ArkodeErk::restore_state(const nlohmann::json& s) {
   rejected_before_ = s.at("rejected_steps").get<long>();
 }
 
+void ArkodeErk::resize(OdeSystem& sys, double t, double* y) {
+  if (!mem_) throw std::logic_error("ArkodeErk::resize before initialize");
+  if (t != t_) throw std::logic_error("ArkodeErk::resize: the state is not at the integrator's time");
+  sys_ = &sys;
+  N_VDestroy(y_);
+  y_ = make_state_vector(sys, y, omp_get_max_threads(), ctx_);
+  // No resize function: ARKODE clones its vectors from y_ anew; their contents (stages, the last
+  // f) are scratch or computed again from (t, y).
+  check(ERKStepResize(mem_, y_, 1.0, t, nullptr, nullptr), "Resize");
+}
+
 IntegratorStats ArkodeErk::stats() const {
   IntegratorStats s;
   long v = 0;

@@ -37,6 +37,11 @@ class ArkodeErk final : public Integrator {
   // not bit for bit.
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state) override;
+  // ERKStepResize: the step size and the error controller's history stay; ARKODE evaluates f at
+  // (t, y) once more, as it does at a start, for its first stage (f is a function of (t, y) alone,
+  // so that evaluation gives the values the run had).
+  bool can_resize() const override { return true; }
+  void resize(OdeSystem& sys, double t, double* y) override;
 
  private:
   static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);

@@ -46,6 +46,13 @@ class Integrator {
   virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
   virtual void restore_state(const nlohmann::json& state) {}
 
+  // Between steps, the state was moved between processes (a repartition over MPI ranks): `y`, of
+  // sys.size() values now, holds the same whole state at the same time in a new share. An integrator
+  // that keeps its step history through that (can_resize) goes on with the steps it would have taken;
+  // the others are started again by the caller, or keep their share.
+  virtual bool can_resize() const { return false; }
+  virtual void resize(OdeSystem& sys, double t, double* y) {}
+
  protected:
   void after_step(double t, const double* y, double h) const {
     if (hook_) hook_(t, y, h);
