@@ -13,7 +13,6 @@
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/parallel/halo_particles.hpp"
-#include "sphmol/parallel/index_runs.hpp"
 #include "sphmol/parallel/migration.hpp"
 #include "sphmol/parallel/particle_selection.hpp"
 #include "sphmol/parallel/rcb_partition.hpp"
@@ -329,9 +328,6 @@ void DistributedSystem<D>::plan() {
   for (std::size_t o = 0; o < nfo_; ++o) local_row_[owned_at_[o]] = local_column_[owned_at_[o]] = static_cast<std::uint32_t>(o);
   for (std::size_t q = 0; q < nh; ++q)
     if (halo_at_[q] < nf_local_) local_column_[halo_at_[q]] = static_cast<std::uint32_t>(nfo_ + q);
-  // The owned fluid rows in runs of consecutive local rows, for the copies of every evaluation; cut
-  // into pieces short enough to share over the rank's threads.
-  owned_runs_ = index_runs(owned_at_.data(), nfo_, kRunPiece);
   if (local_) {  // the counters of the system it replaces
     stats_.search_seconds += local_->search_seconds();
     stats_.rebuilds += local_->pair_list().rebuilds();
@@ -393,11 +389,15 @@ void DistributedSystem<D>::exchange_into_local(const double* y) {
   };
   const auto owned_into_local = [&] {
     // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
-    // One memcpy per run of owned rows and block (an indexed store per row cost twice as much).
-    const std::size_t nruns = owned_runs_.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t r = 0; r < nruns; ++r)
-      for (std::size_t b = 0; b < width; ++b) scatter_run(owned_runs_[r], y + b * nfo_, y_local_.data() + b * nf_local_);
+#pragma omp parallel
+    {
+      for (std::size_t b = 0; b < width; ++b) {
+        const double* from = y + b * nfo_;
+        double* to = y_local_.data() + b * nf_local_;
+#pragma omp for schedule(static) nowait
+        for (std::size_t o = 0; o < nfo_; ++o) to[owned_at_[o]] = from[o];
+      }
+    }
     if (wall_density && LL.n_wall_density > 0)
       for (std::size_t o = nfo_; o < no; ++o) y_local_[LL.wall_density() + (owned_at_[o] - nf_local_)] = y[L.wall_density() + (o - nfo_)];
   };
@@ -480,24 +480,20 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = local_->smoothing_length();
   // One pass over the owned rows: their rates, then their CFL extremes from the rates just copied.
   // Minima and maxima: the same for any thread count.
-  // Per run of owned rows: a memcpy per block, then the extremes over the run's local rows.
-  const std::size_t nruns = owned_runs_.size();
 #pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
-  for (std::size_t r = 0; r < nruns; ++r) {
-    const IndexRun& run = owned_runs_[r];
-    for (std::size_t b = 0; b < width; ++b) gather_run(run, f_local_.data() + b * nf_local_, ydot + b * nfo_);
-    for (std::size_t k = run.to; k < run.to + run.length; ++k) {
-      double v2 = 0.0, a2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        v2 += v[d][k] * v[d][k];
-        const double a = f_local_[LL.velocity(d) + k];
-        a2 += a * a;
-      }
-      amax2 = std::max(amax2, a2);
-      const double speed = std::max(cfl.sound_speed, c[k]) + std::sqrt(v2);
-      if (speed > 0.0) acoustic = std::min(acoustic, hs[k] / speed);
-      hmin = std::min(hmin, hs[k]);
+  for (std::size_t o = 0; o < nfo_; ++o) {
+    const std::size_t k = owned_at_[o];
+    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
+    double v2 = 0.0, a2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      v2 += v[d][k] * v[d][k];
+      const double a = ydot[L.velocity(d) + o];
+      a2 += a * a;
     }
+    amax2 = std::max(amax2, a2);
+    const double speed = std::max(cfl.sound_speed, c[k]) + std::sqrt(v2);
+    if (speed > 0.0) acoustic = std::min(acoustic, hs[k] / speed);
+    hmin = std::min(hmin, hs[k]);
   }
   // One reduction for the three: max |a|^2 as the minimum of its negative (min and max are exact).
   const double mine[3] = {acoustic, -amax2, hmin};

@@ -63,7 +63,6 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/halo.hpp"
-#include "sphmol/parallel/index_runs.hpp"
 #include "sphmol/parallel/rcb_partition.hpp"
 #include "sphmol/parallel/fixed_point_norm_mpi.hpp"
 #include "sphmol/rhs/sph_system.hpp"
@@ -221,9 +220,6 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // the whole system's
   std::shared_ptr<bool> watching_ = std::make_shared<bool>(true);
   std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
-  // The owned fluid rows' runs of consecutive local rows (index_runs.hpp), at most kRunPiece rows each.
-  std::vector<IndexRun> owned_runs_;
-  static constexpr std::size_t kRunPiece = 4096;
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_, f_local_;
