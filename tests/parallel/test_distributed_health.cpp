@@ -2,19 +2,28 @@
 // that the serial check stops on the scene's speed bound or on its energy budget stops over any
 // rank count at the same step with the serial message (the particle named by its serial index),
 // on every rank, and rank 0 writes the serial run's last_good_state.csv; a healthy run is not
-// stopped. Rank 0 runs the serial reference.
+// stopped. Rank 0 runs the serial reference. The numerical tests (NaN/Inf, a particle outside the
+// domain, density <= 0) find a fault put into one rank's state, with the serial cause and particle
+// on every rank.
 #include <catch2/catch.hpp>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/distributed_health_check.hpp"
+#include "sphmol/parallel/distributed_system.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
+#include "sphmol/run/health_limits.hpp"
+#include "sphmol/time/blow_up.hpp"
 #include "serial_reference.hpp"
 
 using namespace sphmol;
@@ -103,4 +112,74 @@ TEST_CASE("distributed health: a healthy run is not stopped by the physical boun
   check_same_as_serial(load_config(verification("taylor_green.yaml"),
                                    {"discretization.particles_across=30", "time.t_end=0.05", "output.times=[0.05]",
                                     "output.plots=false"}));
+}
+
+TEST_CASE("distributed health: the numerical tests find a fault in one rank's state, with the serial cause and particle",
+          "[parallel][health]") {
+  // The dam break at dp = 0.04 (1250 fluid particles), as the serial check's test
+  // (tests/unit/test_health_limits.cpp): a state that passes, then one fault at a time in particle
+  // 700, held by one rank only; every rank must stop with its cause and name the particle.
+  const Communicator comm;
+  const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04"});
+  const auto serial_case = make_case<2>(c), split_case = make_case<2>(c);
+  const auto serial = serial_case->build(c), whole = split_case->build(c);
+  const std::vector<double> y0 = serial->initial_state();
+  std::vector<double> f0(y0.size());
+  serial->rhs(0.0, y0.data(), f0.data());
+  const HealthLimits lim = health_limits<2>(c, serial_case->velocity_scale(c), serial_case->free_surface(), *serial, y0.data());
+
+  DistributedSystem<2> split(comm, c, *whole, y0, 0.0, MpiRunPartitioner::default_tolerance, 1.2);
+  const std::vector<double> y_local = split.local_part(y0);
+  std::vector<double> f(split.size());
+  split.rhs(0.0, y_local.data(), f.data());
+  DistributedHealthCheck<2> check(comm, split, *whole, y0, y_local, 0.0, lim);
+  const auto& L = split.layout();
+  REQUIRE(L.has_density);
+  const std::uint64_t p = 700;
+  REQUIRE(p < serial->layout().n);
+  long here = -1;  // particle p's owned row on this rank
+  for (std::size_t o = 0; o < L.n; ++o)
+    if (split.gid()[o] == p) here = static_cast<long>(o);
+  // On every rank: the cause and particle of the check's blow-up ("" when it passes).
+  const auto verdict = [&](const std::vector<double>& y) -> std::pair<std::string, long> {
+    try {
+      check(1e-3, y.data(), 0);
+    } catch (const BlowUp& b) {
+      return {b.cause, b.particle};
+    }
+    return {"", -1};
+  };
+  CHECK(verdict(y_local).first.empty());
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto& dom = split.domain();
+  struct Fault {
+    std::size_t block;  // the state's offset of the particle's block
+    double value;
+    std::string cause;
+  };
+  const std::vector<Fault> faults = {
+      {L.position(0), std::nan(""), "NaN/Inf in the position (component 0)"},
+      {L.position(1), -inf, "NaN/Inf in the position (component 1)"},
+      {L.velocity(0), inf, "NaN/Inf in the velocity (component 0)"},
+      {L.velocity(1), std::nan(""), "NaN/Inf in the velocity (component 1)"},
+      {L.density(), std::nan(""), "NaN/Inf in a state field"},
+      {L.position(0), dom.hi[0] + 0.5, "particle left the domain in direction 0"},
+      {L.position(1), dom.lo[1] - 0.5, "particle left the domain in direction 1"},
+  };
+  for (const Fault& fault : faults) {
+    INFO(comm.size() << " ranks, rank " << comm.rank() << ", expected " << fault.cause);
+    std::vector<double> y = y_local;
+    if (here >= 0) y[fault.block + static_cast<std::size_t>(here)] = fault.value;
+    const auto [cause, particle] = verdict(y);
+    CHECK(cause.rfind(fault.cause, 0) == 0);
+    CHECK(particle == static_cast<long>(p));
+  }
+  // A density <= 0 in the latest evaluation (the local system's density the check reads).
+  std::vector<double> y = y_local;
+  if (here >= 0) y[L.density() + static_cast<std::size_t>(here)] = -1.0;
+  split.rhs(0.0, y.data(), f.data());
+  const auto [cause, particle] = verdict(y);
+  INFO(comm.size() << " ranks, rank " << comm.rank());
+  CHECK(cause.rfind("density <= 0", 0) == 0);
+  CHECK(particle == static_cast<long>(p));
 }

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,7 +48,8 @@ class DistributedHealthCheck {
   // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.
   int operator()(double t, const double* y, int signal) {
     long particle = -1;
-    const std::string cause = first_failure(y, particle);
+    gather_density();
+    const std::string cause = any_numerical_failure(y) ? first_failure(y, particle) : std::string();
     Verdict mine{!cause.empty(), signal};
     if (cause.empty()) physical_sums(t, y, mine);
     const std::vector<Verdict> verdicts = comm_.all_gather(mine);
@@ -95,20 +97,43 @@ class DistributedHealthCheck {
     double dense_ratio = 0.0;
   };
 
+  // The owned fluid's densities of the latest evaluation (DistributedSystem::owned_density), gathered
+  // from the local system's rows once per step.
+  void gather_density() {
+    const std::size_t n = sys_.layout().n;
+    rho_.resize(n);
+    if (n == 0) return;
+    const auto& rows = sys_.owned_rows();
+    const std::vector<double>& local = sys_.local_system().density();
+    for (std::size_t o = 0; o < n; ++o) rho_[o] = local[rows[o]];
+  }
+
+  // Whether any of first_failure()'s tests fails, with the same comparisons written without an early
+  // exit or a store per particle, so that the loops vectorise; the failure itself is looked for only
+  // then. A bound of +-DBL_MAX in a periodic direction tests finiteness alone.
+  bool any_numerical_failure(const double* y) const {
+    const auto& L = sys_.layout();
+    const auto& dom = sys_.domain();
+    constexpr double big = std::numeric_limits<double>::max();
+    int bad = 0;
+    for (int d = 0; d < D; ++d) {
+      const double* x = y + L.position(d);
+      const double* v = y + L.velocity(d);
+      const double lo = dom.periodic[d] ? -big : dom.lo[d], hi = dom.periodic[d] ? big : dom.hi[d];
+      // & rather than &&: no branch per particle.
+      for (std::size_t i = 0; i < L.n; ++i) bad |= static_cast<int>(!((x[i] >= lo) & (x[i] <= hi) & (std::abs(v[i]) <= big)));
+    }
+    for (std::size_t k = L.velocities_end(); k < L.size(); ++k) bad |= static_cast<int>(!(std::abs(y[k]) <= big));
+    for (std::size_t i = 0; i < rho_.size(); ++i) bad |= static_cast<int>(!(rho_[i] > 0.0));
+    return bad != 0;
+  }
+
   // This rank's part of the physical bounds, after its state has passed the numerical tests.
   void physical_sums(double t, const double* y, Verdict& v) {
     const auto& L = sys_.layout();
     const auto& gid = sys_.gid();
     const long n = static_cast<long>(L.n);
     const auto& own = sys_.owned().rest_density;
-    // The owned fluid's densities of the latest evaluation (DistributedSystem::owned_density), gathered
-    // from the local system's rows once.
-    rho_.resize(static_cast<std::size_t>(n));
-    if (n > 0) {
-      const auto& rows = sys_.owned_rows();
-      const std::vector<double>& local = sys_.local_system().density();
-      for (long o = 0; o < n; ++o) rho_[static_cast<std::size_t>(o)] = local[rows[static_cast<std::size_t>(o)]];
-    }
     PhysicalInputs<D> in;
     in.V = bounds_.frame_velocity(t);
     in.mass = sys_.owned().mass.data();
