@@ -1,10 +1,11 @@
 #pragma once
 // A C-infinity step: S(t) = 0 for t <= 0, 1 for t >= 1, and in between
 //   S(t) = psi(t) / (psi(t) + psi(1 - t)),  psi(t) = exp(-1/t)   (Tu 2011, §13.1),
-// written with one exponential as 1 / (1 + exp(1/t - 1/(1 - t))), 1/t - 1/(1 - t) = (1 - 2t) / (t (1 - t)). Every derivative of S vanishes at
-// t = 0 and t = 1, so a switch, cut-off or floor built as x S(x / delta) is C-infinity where the plain
-// min / max / cut-off has a kink: a fixed-step integrator of order p then keeps order p across it
-// (a kink, crossed a fixed number of times, caps every method at order 2; docs/verification.md).
+// written with one exponential as 1 / (1 + exp(1/t - 1/(1 - t))), the exponent in one division as
+// ((1 - t) - t) / (t (1 - t)). Every derivative of S vanishes at t = 0 and t = 1, so a switch,
+// cut-off or floor built as x S(x / delta) is C-infinity where the plain min / max / cut-off has a
+// kink: a fixed-step integrator of order p then keeps order p across it (a kink, crossed a fixed
+// number of times, caps every method at order 2; docs/verification.md).
 // Branch-free (the clamp is a min/max, 1/0 = inf, and the exponential of core/lane_exp.hpp gives
 // exp(+inf) = inf and exp(-inf) < 1e-307, so S(0) = 0 and S(1) = 1 exactly) and with no library
 // call, so it vectorises where the caller's loop does, and smooth_step(V) takes four lanes at once
