@@ -4,7 +4,7 @@
 // bit for bit. The reduction u = k ln 2 + r, |r| <= ln 2 / 2, with ln 2 in two parts (the first's
 // trailing zeros make k C1 exact), exp(r) by the rational form of Moshier (1989, the Cephes library's
 // exp: one division, seven multiply-adds), and 2^k put into the exponent bits. Within two ulp of
-// std::exp (tests/unit/test_smooth_step.cpp); u is clamped to [-708, 708] (2^k stays a
+// std::exp (tests/unit/test_lane_exp.cpp); u is clamped to [-708, 708] (2^k stays a
 // normal number), and u > 708 returns +inf, so exp(+inf) = inf and exp(-inf) = exp(-708) ~ 3e-308.
 // The operations are plain multiplies and adds (the build's -ffp-contract=off keeps them unfused),
 // so the scalar and the vector forms round alike.
