@@ -39,10 +39,14 @@
 namespace sphmol {
 
 // The switch of both Pi forms: min(vx, 0) for delta = 0, else the band [-(1 - offset) delta, offset delta]
-// (above).
-inline double switched_vx(double vx, double delta, double offset) {
-  return offset > 0.0 ? vx * smooth_step(offset - vx / delta) : smooth_min0(vx, delta);
+// (above). For a double or (AVX2) four lanes, each lane the scalar's number bit for bit (the pair loops
+// of physics/weakly_compressible_row.hpp). At offset = 0 it is smooth_min0(vx, delta): 0 - a and -a
+// differ only in the sign of a zero, which S reads as 0 either way.
+template <class V>
+[[gnu::always_inline]] inline V switched_vx_lanes(V vx, V delta, V offset) {
+  return vx * smooth_step_lanes(offset - vx / delta);
 }
+inline double switched_vx(double vx, double delta, double offset) { return switched_vx_lanes(vx, delta, offset); }
 
 // Monaghan's Pi_ij for one pair from vx = v_ij . x_ij and r2 = |x_ij|^2. Receding pairs (vx >= 0, beyond
 // the band's receding part) get no viscosity: theta = 0 through the switch (above), with no branch. One division: t = theta / rhobar.
@@ -50,8 +54,8 @@ struct MonaghanPi {
   double alpha, beta, eta;
   double width = 0.0;   // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
   double offset = 0.0;  // the band's receding part, a fraction of it in [0, 1/2]
-  // The band delta in v_ij . x_ij.
-  double band(double cbar, double hij) const { return width * cbar * hij; }
+  // The band delta in v_ij . x_ij; width h_ij first, which a row of equal h computes once.
+  double band(double cbar, double hij) const { return width * hij * cbar; }
   // The switched v_ij . x_ij (above).
   double sw(double vx, double cbar, double hij) const { return switched_vx(vx, band(cbar, hij), offset); }
   // Pi_ij from the switched sw = sw(vx, cbar, hij) (of the sign of vx, <= 0 outside the band).
@@ -70,7 +74,7 @@ struct SignalVelocityPi {
   double alpha, beta;
   double width = 0.0;   // the switch's band in cbar_ij h_ij; 0 = min(vx, 0)
   double offset = 0.0;  // as MonaghanPi's
-  double band(double cbar, double hij) const { return width * cbar * hij; }  // as MonaghanPi's
+  double band(double cbar, double hij) const { return width * hij * cbar; }  // as MonaghanPi's
   double sw(double vx, double cbar, double hij) const { return switched_vx(vx, band(cbar, hij), offset); }
   double operator()(double vx, double r2, double hij, double cbar, double rhobar) const {
     const double w = r2 > 0.0 ? sw(vx, cbar, hij) / std::sqrt(r2) : 0.0;

@@ -178,38 +178,32 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     const double voli = WithDiffusion && Reverse ? pi.vol : 0.0;
     double vi[D];
     for (int d = 0; d < D; ++d) vi[d] = pi.v[d];
-    for (std::uint32_t k = 0; k < n; ++k) {
-      double vx = 0.0, r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        vx += (vi[d] - nb.v[d][k]) * dx[d][k];
-        r2 += dx[d][k] * dx[d][k];
-      }
-      const double mk = SameMass ? mi : mj[k], hij = SameH ? hi : 0.5 * (hi + hj[k]);
-      pc[k] = mk * vx * F[k];
-      if constexpr (WithDiffusion) {
-        pd[k] = density_diffusion_pair(ri, nb.rho[k], F[k], nb.vol[k]);
-        if constexpr (Reverse) pr[k] = density_diffusion_pair(nb.rho[k], ri, F[k], voli);
-      }
-      const double pij = pi_.switched(std::min(vx, 0.0), r2, hij, 0.5 * (ci + nb.c[k]), 0.5 * (ri + nb.rho[k]));
-      ps[k] = mk * (qi + nb.q[k] + pij) * F[k];
-    }
-    // The viscosity's smooth switch (physics/artificial_viscosity.hpp) differs from min(vx, 0) inside
-    // its band only: those pairs again, one by one (its exponential would keep the loop above from
-    // vectorising). The sharp switch (width 0, the default) skips this loop: one test per row.
-    if (pi_.width > 0.0) {
+    // The viscosity's switch: min(vx, 0), or its smooth form (physics/artificial_viscosity.hpp), whose
+    // exponential (core/lane_exp.hpp) is arithmetic with no call, so the loop vectorises either way;
+    // chosen once per block.
+    const auto pairs = [&]<bool Smooth>() {
       for (std::uint32_t k = 0; k < n; ++k) {
         double vx = 0.0, r2 = 0.0;
         for (int d = 0; d < D; ++d) {
           vx += (vi[d] - nb.v[d][k]) * dx[d][k];
           r2 += dx[d][k] * dx[d][k];
         }
-        const double hij = SameH ? hi : 0.5 * (hi + hj[k]), cbar = 0.5 * (ci + nb.c[k]);
-        const double band = pi_.band(cbar, hij);
-        if (!(vx < pi_.offset * band && vx > -(1.0 - pi_.offset) * band)) continue;
-        const double mk = SameMass ? mi : mj[k];
-        ps[k] = mk * (qi + nb.q[k] + pi_(vx, r2, hij, cbar, 0.5 * (ri + nb.rho[k]))) * F[k];
+        double mk = mi, hij = hi;
+        if constexpr (!SameMass) mk = mj[k];
+        if constexpr (!SameH) hij = 0.5 * (hi + hj[k]);
+        pc[k] = mk * vx * F[k];
+        if constexpr (WithDiffusion) {
+          pd[k] = density_diffusion_pair(ri, nb.rho[k], F[k], nb.vol[k]);
+          if constexpr (Reverse) pr[k] = density_diffusion_pair(nb.rho[k], ri, F[k], voli);
+        }
+        const double cbar = 0.5 * (ci + nb.c[k]);
+        const double sw = Smooth ? pi_.sw(vx, cbar, hij) : std::min(vx, 0.0);
+        const double pij = pi_.switched(sw, r2, hij, cbar, 0.5 * (ri + nb.rho[k]));
+        ps[k] = mk * (qi + nb.q[k] + pij) * F[k];
       }
-    }
+    };
+    if (pi_.width > 0.0) pairs.template operator()<true>();
+    else pairs.template operator()<false>();
   }
   // The neighbours' values of a per-particle array for lanes [0, gathered_lanes(n)) (padded as
   // gather_neighbours).
@@ -257,12 +251,15 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
                    const std::uint32_t* vj, const std::uint32_t* first, const KernelPass<D>& kernel, double* out) const {
     const PairGeometry<D>& g = kernel.geometry();
 #if defined(__AVX2__)
-    if constexpr (D == 2 && WithDiffusion)
-      if (pi_.width == 0.0) {
+    if constexpr (D == 2 && WithDiffusion) {
+      const auto rows = [&]<bool Smooth>() {
         for (std::size_t i = i0; i < i1; i += kRegisterRows)
-          records_in_registers<SameH, Periodic>(w, i, std::min(i1, i + kRegisterRows), off, up, vj, first, kernel, g, out);
-        return;
-      }
+          records_in_registers<SameH, Periodic, Smooth>(w, i, std::min(i1, i + kRegisterRows), off, up, vj, first, kernel, g, out);
+      };
+      if (pi_.width > 0.0) rows.template operator()<true>();
+      else rows.template operator()<false>();
+      return;
+    }
 #endif
     for (std::size_t i = i0; i < i1; ++i)
       records<SameH, Periodic>(w, i, vj + up[i], off[i + 1] - up[i], kernel, g, out + static_cast<std::size_t>(first[i]) * kRecord);
@@ -303,7 +300,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
       const double* pdx[D];
       for (int d = 0; d < D; ++d) pdx[d] = dx[d];
       alignas(32) double pc[kBlock], pd[kBlock], pr[kBlock], ps[kBlock], sx[D][kBlock];
-      arithmetic<true, SameH, true>(w, i, blk, nullptr, hj, pdx, F, lanes, pc, ps, pd, pr);
+      arithmetic<true, SameH, true>(w, i, blk, nullptr, SameH ? nullptr : hj, pdx, F, lanes, pc, ps, pd, pr);
       for (int d = 0; d < D; ++d)
         for (std::uint32_t k = 0; k < lanes; ++k) sx[d][k] = ps[k] * dx[d][k];
       store_records(pc, sx, pd, pr, nb, rec + static_cast<std::size_t>(k0) * kRecord);
@@ -311,7 +308,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   }
 
 #if defined(__AVX2__)
-  // records() for the rows [i0, i1) in 2D with diffusion and the sharp switch: four pairs per vector,
+  // records() for the rows [i0, i1) in 2D with diffusion (either switch): four pairs per vector,
   // each pair's neighbour data in registers from its load to its record, and the kernel pass called
   // once for the rows instead of once per row: (1) for every row, the first half of four packed
   // records (x, v) transposed, the separations, r^2 and v_ij . x_ij; (2) F for all of them; (3) for
@@ -321,13 +318,14 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
   // numbers bit for bit (tests/integration/test_symmetric_pairs.cpp: the full rows' state after 300
   // steps); what goes is the per-field arrays between the stages and most of a row's fixed cost (a
   // row has about fifteen upper pairs, skin included).
-  template <bool SameH, bool Periodic>
+  template <bool SameH, bool Periodic, bool Smooth>
   void records_in_registers(const Workspace<D>& w, std::size_t i0, std::size_t i1, const std::uint32_t* off,
                             const std::uint32_t* up, const std::uint32_t* vj, const std::uint32_t* first,
                             const KernelPass<D>& kernel, const PairGeometry<D>& g, double* out) const {
     using V = __m256d;
     const V zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0), half = _mm256_set1_pd(0.5);
     const V alpha = _mm256_set1_pd(pi_.alpha), beta = _mm256_set1_pd(pi_.beta), eta2 = _mm256_set1_pd(pi_.eta * pi_.eta);
+    const V width = _mm256_set1_pd(pi_.width), offset = _mm256_set1_pd(pi_.offset), one = _mm256_set1_pd(1.0);
     [[maybe_unused]] V period[D], inv_period[D];
     if constexpr (Periodic)
       for (int d = 0; d < D; ++d) {
@@ -398,7 +396,8 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
       const PackedNeighbour<D>& pi = pack_[i];
       const V ri = _mm256_set1_pd(pi.rho), qi = _mm256_set1_pd(pi.q), ci = _mm256_set1_pd(pi.c), voli = _mm256_set1_pd(pi.vol);
       const V hi = _mm256_set1_pd(hs[i]), mi = _mm256_set1_pd(w.particles->mass[i]);
-      const auto pairs = [&]<bool Tail>(std::uint32_t k) {
+      [[maybe_unused]] const V width_hi = width * hi;  // the band's width h_ij (MonaghanPi::band) when every h is h_i
+      const auto pairs = [&]<bool Tail>(std::uint32_t k) __attribute__((always_inline)) {  // inlined in both calls: the row's last group too
         std::uint32_t jl[4];
         lanes_of.template operator()<Tail>(j, n, k, jl);
         V rhoj, qj, cj, volj;
@@ -412,9 +411,17 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         const V pc = mi * vxk * f;
         const V pd = two * (ri - rhoj) * f * volj;  // density_diffusion_pair(ri, rho_j, F, vol_j)
         const V pr = two * (rhoj - ri) * f * voli;  // density_diffusion_pair(rho_j, ri, F, vol_i)
-        // MonaghanPi::switched(min(vx, 0), r2, hij, cbar, rhobar); min_pd(0, vx) is std::min(vx, 0.0),
-        // signed zeros and NaN included.
-        const V sw = _mm256_min_pd(zero, vxk), cbar = half * (ci + cj), rhobar = half * (ri + rhoj);
+        // MonaghanPi::switched(sw, r2, hij, cbar, rhobar) with sw = min(vx, 0) (min_pd(0, vx) is
+        // std::min(vx, 0.0), signed zeros and NaN included) or MonaghanPi::sw(vx, cbar, hij) =
+        // vx S(t), t = offset - vx / delta. Outside the band (t <= 0 or t >= 1) S(t) is 0 or 1 exactly
+        // and vx S(t) is min(vx, 0) bit for bit (signed zeros included), so a group with no pair in
+        // the band takes min(vx, 0) and skips S's exponential.
+        const V cbar = half * (ci + cj), rhobar = half * (ri + rhoj);
+        V sw = _mm256_min_pd(zero, vxk);
+        if constexpr (Smooth) {
+          const V t = offset - vxk / ((SameH ? width_hi : width * hij) * cbar);
+          if (!_mm256_testz_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, one, _CMP_LT_OQ))) sw = vxk * smooth_step_lanes(t);
+        }
         const V t = hij * sw / ((rr + eta2 * hij * hij) * rhobar);
         const V pij = (beta * t * rhobar - alpha * cbar) * t;
         const V ps = mi * (qi + qj + pij) * f;
