@@ -547,6 +547,19 @@ double DistributedSystem<D>::owned_density(std::size_t o) const {
 }
 
 template <int D>
+std::vector<double> DistributedSystem<D>::whole_fluid_density() const {
+  struct Row {
+    std::uint64_t gid;
+    double rho;
+  };
+  std::vector<Row> mine(nfo_);
+  for (std::size_t o = 0; o < nfo_; ++o) mine[o] = {gid_[o], owned_density(o)};
+  std::vector<double> rho(whole_layout_.n, 0.0);
+  for (const Row& r : comm_.all_gather_v(mine)) rho[r.gid] = r.rho;
+  return rho;
+}
+
+template <int D>
 std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& whole) const {
   if (whole.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem::local_part: not a whole state");
   const StateLayout<D>& L = layout_;

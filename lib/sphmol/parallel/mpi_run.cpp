@@ -31,6 +31,7 @@ class MpiRun final : public PartitionedRun<D> {
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
   void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
+  std::vector<double> whole_fluid_density() override { return sys_.whole_fluid_density(); }
   int check(double t, double, int signal) override {
     if (!health_) throw std::logic_error("MpiRun::check before start_health_check");
     return (*health_)(t, y_.data(), signal);

@@ -164,9 +164,11 @@ HealthLimits::WallFrame common_wall_frame(const SphSystem<D>& sys) {
 }
 
 // `velocity_scale` and `free_surface` come from the case (Case::velocity_scale, Case::free_surface).
+// `density`: the fluid densities of an evaluation at y0 in the serial order, where `sys` itself was
+// not evaluated (a run over ranks); null: sys.density(), of its initial evaluation.
 template <int D>
 HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const SphSystem<D>& sys,
-                           const double* y0) {
+                           const double* y0, const std::vector<double>* density = nullptr) {
   HealthLimits lim;
   lim.frame = common_wall_frame(sys);
   const auto& L = sys.layout();
@@ -219,7 +221,7 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
     lim.elastic.clamp_negative = eos.clamp_negative;
   }
   double el0 = 0.0;
-  const auto& rho = sys.density();  // of the initial evaluation
+  const auto& rho = density ? *density : sys.density();  // of the initial evaluation
   const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
   for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el0 += m[i] * lim.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
   lim.energy = true;

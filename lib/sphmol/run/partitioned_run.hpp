@@ -29,6 +29,8 @@ class PartitionedRun {
   virtual std::vector<double>& state() = 0;
   // Collective: the whole state in the serial layout, on every rank.
   virtual void gather(std::vector<double>& whole) = 0;
+  // Collective: the latest evaluation's density of every fluid particle, in the serial order.
+  virtual std::vector<double> whole_fluid_density() = 0;
   // Collective, at an output time t: this rank's own particles with their fields at (t, state()),
   // for the observers that write per-rank files. Valid until the next call on the run.
   virtual OwnedPiece<D> owned_piece(double t) = 0;

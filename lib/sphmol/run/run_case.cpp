@@ -106,14 +106,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
   int agreed_signal = 0;
   // The physical bounds from the whole scene after an evaluation at t (the elastic energy reads its
-  // densities): the serial system was evaluated by the integrator's initialisation; over ranks every
-  // rank evaluates its whole scene once for them (after the partition, which takes the scene before
-  // any evaluation).
-  if (part) {
-    std::vector<double> first;
-    sys->refresh_fields(t, y.data(), first);
-  }
-  const HealthLimits limits = health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data());
+  // densities): the serial system was evaluated by the integrator's initialisation; over ranks the
+  // ranks' own particles were, and their densities are gathered in the serial order, so that no rank
+  // evaluates (or holds the neighbour list of) the whole scene for them.
+  std::vector<double> first_density;
+  if (part) first_density = part->whole_fluid_density();
+  const HealthLimits limits = health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data(),
+                                               part ? &first_density : nullptr);
   if (part) {
     part->start_health_check(*sys, y, t, limits);
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
