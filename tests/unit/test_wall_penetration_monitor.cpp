@@ -150,3 +150,40 @@ TEST_CASE("wall penetration monitor: a rank's rows watch its own particles by se
     CHECK(state->min_gap == gap / 2);
   }
 }
+
+TEST_CASE("wall penetration monitor: a reordered workspace flags particles by their serial index", "[analysis]") {
+  // With discretization.reorder the workspace holds the particles in Morton order (Workspace::order:
+  // workspace index -> serial index); the flags must name the particles, not their workspace rows.
+  const double Lx = 4.0, Ly = 3.0;
+  const std::size_t n = 500;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> ux(-0.3, Lx + 0.3), uy(-0.3, Ly + 0.5);
+  std::array<std::vector<double>, 2> serial;
+  for (std::size_t i = 0; i < n; ++i) {
+    serial[0].push_back(ux(rng));
+    serial[1].push_back(uy(rng));
+  }
+  std::vector<std::uint8_t> crossed(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = serial[0][i], y = serial[1][i];
+    crossed[i] = (y < 0.0 || (y < Ly && (x < 0.0 || x > Lx))) ? 1 : 0;
+  }
+  REQUIRE(std::count(crossed.begin(), crossed.end(), std::uint8_t{1}) > 20);
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::shuffle(order.begin(), order.end(), rng);
+  Workspace<2> w;
+  w.n = w.n_fluid = n;
+  w.order = order.data();
+  for (int d = 0; d < 2; ++d) {
+    w.x[d].resize(n);
+    for (std::size_t i = 0; i < n; ++i) w.x[d][i] = serial[d][order[i]];
+  }
+  auto state = std::make_shared<WallPenetration>();
+  WallPenetrationMonitor monitor(Lx, Ly, n, state);
+  const auto term = monitor.watch(WatchedRows{});
+#pragma omp parallel num_threads(2)
+  term->apply(w);
+  CHECK(state->crossed == crossed);
+  CHECK(state->count == std::count(crossed.begin(), crossed.end(), std::uint8_t{1}));
+}
