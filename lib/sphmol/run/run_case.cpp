@@ -109,10 +109,11 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // densities): the serial system was evaluated by the integrator's initialisation; over ranks the
   // ranks' own particles were, and their densities are gathered in the serial order, so that no rank
   // evaluates (or holds the neighbour list of) the whole scene for them.
-  std::vector<double> first_density;
-  if (part) first_density = part->whole_fluid_density();
-  const HealthLimits limits = health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data(),
-                                               part ? &first_density : nullptr);
+  const HealthLimits limits = [&] {
+    // The gathered densities (one per fluid particle) are needed here only, not for the whole run.
+    const std::vector<double> first_density = part ? part->whole_fluid_density() : std::vector<double>{};
+    return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data(), part ? &first_density : nullptr);
+  }();
   if (part) {
     part->start_health_check(*sys, y, t, limits);
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
