@@ -357,8 +357,26 @@ void DistributedSystem<D>::plan() {
     rows.watching = watching_;
     for (const auto& m : monitors_) local_->append_term(m->watch(rows));
   }
-  y_local_.assign(local_->size(), 0.0);
-  f_local_.assign(local_->size(), 0.0);
+  // The local system reads the owned rows from the rank's state and the halo rows from the
+  // exchange's buffer, and writes the owned rows' rates alone (rhs/split_state.hpp): halo particle
+  // q is row q of the buffer, an owned wall's density row its index among the owned walls.
+  SplitState<D> split;
+  split.owned = layout_;
+  split.width = state_blocks();
+  const std::size_t nwl = local_->layout().n_wall_density, nwo = layout_.n_wall_density;
+  split.fluid_source.resize(nf_local_);
+  split.wall_source.resize(nwl);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::uint32_t j = order[k];
+    const std::size_t source = j < no ? (k < nf_local_ ? j : j - nfo_) : (k < nf_local_ ? nfo_ : nwo) + (j - no);
+    if (k < nf_local_) split.fluid_source[k] = static_cast<std::uint32_t>(source);
+    else if (k - nf_local_ < nwl) split.wall_source[k - nf_local_] = static_cast<std::uint32_t>(source);
+  }
+  split.fluid_rate_row.assign(owned_at_.begin(), owned_at_.begin() + static_cast<long>(nfo_));
+  split.wall_rate_row.resize(nwo);
+  for (std::size_t w = 0; w < nwo; ++w) split.wall_rate_row[w] = static_cast<std::uint32_t>(owned_at_[nfo_ + w] - nf_local_);
+  local_->set_split_state(std::move(split));
+  y_local_.clear();  // made by refresh_local() only
   x_plan_ = x_now_;
   replanned_ = true;
   plan_due_ = false;
@@ -369,15 +387,34 @@ void DistributedSystem<D>::plan() {
 
 template <int D>
 void DistributedSystem<D>::exchange_into_local(const double* y) {
-  // The owned state to the ranks whose halo holds it, and both into the local system's state. One
-  // row per particle sent: a fluid particle's value in each block of the state (the local system's
-  // blocks are the same, from the same config), a wall's integrated density in the first entry.
-  // Only the rows sent are packed, and the owned state is copied into the local one while they
-  // travel; the buffers stay between evaluations (a fresh one per evaluation cost a page fault per
-  // 4 KiB of state).
+  // The halo rows as an evaluation receives them, then the owned and halo state into one local
+  // state (output times only: an evaluation reads both where they are).
+  exchange_halo(y);
   const std::size_t no = owned_.size(), width = state_blocks();
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& LL = local_->layout();
+  y_local_.resize(local_->size());
+  for (std::size_t b = 0; b < width; ++b)
+    for (std::size_t o = 0; o < nfo_; ++o) y_local_[b * nf_local_ + owned_at_[o]] = y[b * nfo_ + o];
+  if (L.n_wall_density > 0 && LL.n_wall_density > 0)
+    for (std::size_t o = nfo_; o < no; ++o) y_local_[LL.wall_density() + (owned_at_[o] - nf_local_)] = y[L.wall_density() + (o - nfo_)];
+  for (std::size_t q = 0; q < halo_->size(); ++q) {
+    const std::size_t k = halo_at_[q];
+    const double* r = halo_rows_.data() + q * width;
+    if (k < nf_local_) {
+      for (std::size_t b = 0; b < width; ++b) y_local_[b * nf_local_ + k] = r[b];
+    } else if (LL.n_wall_density > 0) {
+      y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
+    }
+  }
+}
+
+template <int D>
+void DistributedSystem<D>::exchange_halo(const double* y) {
+  // The owned state to the ranks whose halo holds it, as rows (exchange_into_local's rows), into
+  // halo_rows_, which the local system reads in place (rhs_split).
+  const std::size_t width = state_blocks();
+  const StateLayout<D>& L = layout_;
   const bool wall_density = L.n_wall_density > 0;
   const auto pack = [&](std::uint32_t o, double* row) {
     if (o < nfo_) {
@@ -387,33 +424,8 @@ void DistributedSystem<D>::exchange_into_local(const double* y) {
       if (wall_density) row[0] = y[L.wall_density() + (o - nfo_)];
     }
   };
-  const auto owned_into_local = [&] {
-    // Element-wise loops over the owned particles (and the halo's), split over the rank's threads.
-#pragma omp parallel
-    {
-      for (std::size_t b = 0; b < width; ++b) {
-        const double* from = y + b * nfo_;
-        double* to = y_local_.data() + b * nf_local_;
-#pragma omp for schedule(static) nowait
-        for (std::size_t o = 0; o < nfo_; ++o) to[owned_at_[o]] = from[o];
-      }
-    }
-    if (wall_density && LL.n_wall_density > 0)
-      for (std::size_t o = nfo_; o < no; ++o) y_local_[LL.wall_density() + (owned_at_[o] - nf_local_)] = y[L.wall_density() + (o - nfo_)];
-  };
   halo_rows_.resize(halo_->size() * width);
-  halo_->exchange_rows(comm_, width, pack, halo_rows_.data(), owned_into_local);
-  const double* hrec = halo_rows_.data();
-#pragma omp parallel for schedule(static)
-  for (std::size_t q = 0; q < halo_->size(); ++q) {
-    const std::size_t k = halo_at_[q];
-    const double* r = hrec + q * width;
-    if (k < nf_local_) {
-      for (std::size_t b = 0; b < width; ++b) y_local_[b * nf_local_ + k] = r[b];
-    } else if (LL.n_wall_density > 0) {
-      y_local_[LL.wall_density() + (k - nf_local_)] = r[0];
-    }
-  }
+  halo_->exchange_rows(comm_, width, pack, halo_rows_.data(), [] {});
 }
 
 template <int D>
@@ -455,51 +467,27 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   const double t_start = omp_get_wtime();
   prepare_local(t, y);
   const double t_planned = omp_get_wtime();
-  exchange_into_local(y);
+  exchange_halo(y);
   stats_.exchange_seconds += omp_get_wtime() - t_planned;
 
+  // The local system reads the owned rows from y and the halo rows from the exchange's buffer, and
+  // writes the owned rows' rates into ydot with their CFL extremes (SphSystem::rhs_split).
   if (op) {
-    local_->rhs_explicit(t, y_local_.data(), f_local_.data(), local_op_);
+    local_->rhs_explicit_split(t, y, halo_rows_.data(), ydot, local_op_);
     op->owned_rows(local_op_, local_row_, local_column_, nfo_, velocity_halo_);
   } else {
-    local_->rhs(t, y_local_.data(), f_local_.data());
+    local_->rhs_split(t, y, halo_rows_.data(), ydot);
   }
 
-  // The owned rows' rates, and their CFL extremes (as SphSystem::rhs takes them), reduced over ranks.
+  // The CFL extremes reduced over ranks: one reduction for the three, max |a|^2 as the minimum of
+  // its negative (min and max are exact).
   const double t_reduce = omp_get_wtime();
-  const std::size_t no = owned_.size(), width = state_blocks();
-  const StateLayout<D>& L = layout_;
-  const StateLayout<D>& LL = local_->layout();
-  if (L.n_wall_density > 0)
-    for (std::size_t o = nfo_; o < no; ++o)
-      ydot[L.wall_density() + (o - nfo_)] = f_local_[LL.wall_density() + (owned_at_[o] - nf_local_)];
-  const CflLimits& cfl = local_->cfl_limits();
-  const std::vector<double>& c = local_->sound_speed();
-  const std::vector<double>& hs = local_->smoothing_lengths();
-  const auto& v = local_->velocities();
-  double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = local_->smoothing_length();
-  // One pass over the owned rows: their rates, then their CFL extremes from the rates just copied.
-  // Minima and maxima: the same for any thread count.
-#pragma omp parallel for schedule(static) reduction(max : amax2) reduction(min : acoustic, hmin)
-  for (std::size_t o = 0; o < nfo_; ++o) {
-    const std::size_t k = owned_at_[o];
-    for (std::size_t b = 0; b < width; ++b) ydot[b * nfo_ + o] = f_local_[b * nf_local_ + k];
-    double v2 = 0.0, a2 = 0.0;
-    for (int d = 0; d < D; ++d) {
-      v2 += v[d][k] * v[d][k];
-      const double a = ydot[L.velocity(d) + o];
-      a2 += a * a;
-    }
-    amax2 = std::max(amax2, a2);
-    const double speed = std::max(cfl.sound_speed, c[k]) + std::sqrt(v2);
-    if (speed > 0.0) acoustic = std::min(acoustic, hs[k] / speed);
-    hmin = std::min(hmin, hs[k]);
-  }
-  // One reduction for the three: max |a|^2 as the minimum of its negative (min and max are exact).
-  const double mine[3] = {acoustic, -amax2, hmin};
+  const auto& e = local_->cfl_extremes();
+  const double mine[3] = {e.acoustic, -e.amax2, e.hmin};
   double all[3];
   MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MIN, comm_.handle());
   // As SphSystem: no viscous limit for the explicit part of an IMEX split.
+  const CflLimits& cfl = local_->cfl_limits();
   stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], op == nullptr);
   widest_step_ = cfl_step(cfl.widest(), all[0], -all[1], all[2], op == nullptr);
   if (rhs_evals_ == 1) first_stable_step_ = stable_step_;

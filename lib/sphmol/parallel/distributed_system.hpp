@@ -170,6 +170,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   bool moved_too_far() const;  // collective
   // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
   void prepare_local(double t, const double* y);
+  void exchange_halo(const double* y);        // collective: the halo's state rows into halo_rows_
   void exchange_into_local(const double* y);  // collective: the owned and halo state into y_local_
   // Collective: the largest h of every rank's particles at y, and (with ghost walls) of the fluid alone.
   double largest_h(const double* y);
@@ -225,7 +226,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
-  std::vector<double> y_local_, f_local_;
+  std::vector<double> y_local_;    // the local state, made at output times (refresh_local)
   std::vector<double> halo_rows_;  // the halo's state rows of the latest exchange
   double stable_step_ = 0.0, first_stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;

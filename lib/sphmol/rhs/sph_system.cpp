@@ -195,6 +195,16 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   const double* const e_s = layout_.has_energy ? y + layout_.energy() : nullptr;
   const double* const h_s = layout_.has_smoothing_length ? y + layout_.smoothing_length() : nullptr;
   const std::size_t nw = layout_.n_wall_density;
+  // A split state (rhs_split): row i of a block from the owned rows of y or from the other rows.
+  const bool split = splitting_;
+  const double* const other = split_other_;
+  const std::uint32_t* const fsrc = split_.fluid_source.data();
+  const std::size_t no = split_.owned.n, width = split_.width;
+  StateLayout<D> unit = layout_;  // block offsets in units of n: a block's index in a row
+  unit.n = 1;
+  const auto from_split = [&](std::size_t offset, std::size_t block, std::uint32_t s) {
+    return s < no ? y[offset + s] : other[(s - no) * width + block];
+  };
   const bool h_from_density = fields_.smoothing_length == SmoothingLengthMode::density;
   // The neighbour list's displacement test runs in the same region, after the gathers, when nothing
   // between them and the search changes the particles or the support (no generated particles,
@@ -217,7 +227,16 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       const double* vs = y + layout_.velocity(d);
       double* const wx = ws_.x[d].data();
       double* const wv = ws_.v[d].data();
-      if (!ord && !domain_.periodic[d]) {
+      if (split) {
+        const std::size_t xo = split_.owned.position(d), vo = split_.owned.velocity(d);
+        const std::size_t xb = static_cast<std::size_t>(d), vb = static_cast<std::size_t>(D + d);
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < nf; ++i) {
+          const std::uint32_t s = fsrc[i];
+          wx[i] = domain_.wrap(d, from_split(xo, xb, s));
+          wv[i] = from_split(vo, vb, s);
+        }
+      } else if (!ord && !domain_.periodic[d]) {
         // In storage order and not wrapped: plain copies, which vectorise (wrap is the identity).
 #pragma omp for schedule(static) nowait
         for (std::size_t i = 0; i < nf; ++i) {
@@ -249,21 +268,39 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
         for (std::size_t i = nf; i < nb; ++i) ws_.x[d][i] = domain_.wrap(d, P.wall_position(d, i, t));
       }
     }
-    auto gather = [&](const double* from, std::vector<double>& to) {
+    auto gather = [&](const double* from, std::size_t block, std::vector<double>& to) {
       double* dst = to.data();
+      if (split) {
+        const std::size_t offset = block * no;  // the block in the owned rows
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < nf; ++i) dst[i] = from_split(offset, block, fsrc[i]);
+        return;
+      }
 #pragma omp for schedule(static) nowait
       for (std::size_t i = 0; i < nf; ++i) dst[i] = from[ord ? ord[i] : i];
     };
-    if (rho_s) gather(rho_s, ws_.rho);
-    if (e_s) gather(e_s, ws_.e);
-    if (h_s) gather(h_s, ws_.hs);
+    if (rho_s) gather(rho_s, unit.density(), ws_.rho);
+    if (e_s) gather(e_s, unit.energy(), ws_.e);
+    if (h_s) gather(h_s, unit.smoothing_length(), ws_.hs);
     if (nw > 0) {
       // Wall densities (dynamic boundary particles), state index k = wall nf + k; floored at rho0
       // (smoothly: state_fields.hpp).
       const double* rw = y + layout_.wall_density();
-      const double floor = fields_.wall_density_floor, width = fields_.wall_density_floor_width;
+      const double floor = fields_.wall_density_floor, width_floor = fields_.wall_density_floor_width;
+      if (split) {
+        const std::uint32_t* const wsrc = split_.wall_source.data();
+        const std::size_t nwo = split_.owned.n_wall_density, wo = split_.owned.wall_density();
 #pragma omp for schedule(static) nowait
-      for (std::size_t k = 0; k < nw; ++k) ws_.rho[nf + k] = floor + smooth_max0(rw[ord ? ord[nf + k] - nf : k] - floor, width);
+        for (std::size_t k = 0; k < nw; ++k) {
+          const std::uint32_t s = wsrc[k];
+          const double r = s < nwo ? y[wo + s] : other[(s - nwo) * width];
+          ws_.rho[nf + k] = floor + smooth_max0(r - floor, width_floor);
+        }
+      } else {
+#pragma omp for schedule(static) nowait
+        for (std::size_t k = 0; k < nw; ++k)
+          ws_.rho[nf + k] = floor + smooth_max0(rw[ord ? ord[nf + k] - nf : k] - floor, width_floor);
+      }
     } else {
       // Walls without a density in the state start every evaluation from their own density: a term
       // that overwrites it (the extrapolated wall pressure) leaves walls without fluid alone, and
@@ -310,9 +347,10 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   if (record_) record_->begin(nf, D, pairs_->pairs().offset.data(), ord);
   ws_.implicit = record_;
 
-  // Derivatives are written in workspace order: straight into ydot, or into out_ and scattered below.
-  if (ord) out_.resize(layout_.size());
-  double* const out = ord ? out_.data() : ydot;
+  // Derivatives are written in workspace order: straight into ydot, or into out_ and scattered below
+  // (reordered, or only the owned rows of a split state).
+  if (ord || split) out_.resize(layout_.size());
+  double* const out = ord || split ? out_.data() : ydot;
   for (int d = 0; d < D; ++d) {
     ws_.dxdt[d] = out + layout_.position(d);
     ws_.dvdt[d] = out + layout_.velocity(d);
@@ -359,7 +397,30 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       }
       for (std::size_t q = k; q < e; ++q) terms_[q]->apply(ws_);  // each ends with a barrier
       if (last) {
-        if (blocks > 0) {
+        if (split) {
+          // The owned rows' rates and their CFL extremes in one pass; the other rows' rates are
+          // not wanted. Wall densities first (few), then the owned fluid rows.
+          const std::size_t wb = layout_.wall_density(), wbo = split_.owned.wall_density();
+          const std::uint32_t* const wrow = split_.wall_rate_row.data();
+#pragma omp for schedule(static) nowait
+          for (std::size_t q = 0; q < split_.owned.n_wall_density; ++q) ydot[wbo + q] = out_[wb + wrow[q]];
+          const std::size_t fluid_blocks = 2 * D + layout_.extra_blocks();
+          const std::uint32_t* const frow = split_.fluid_rate_row.data();
+#pragma omp for schedule(static) nowait reduction(max : amax2) reduction(min : acoustic, hmin)
+          for (std::size_t o = 0; o < no; ++o) {
+            const std::size_t i = frow[o];
+            for (std::size_t b = 0; b < fluid_blocks; ++b) ydot[b * no + o] = out_[b * nf + i];
+            double v2 = 0.0, a2 = 0.0;
+            for (int d = 0; d < D; ++d) {
+              v2 += ws_.v[d][i] * ws_.v[d][i];
+              a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
+            }
+            amax2 = std::max(amax2, a2);
+            const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
+            if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
+            hmin = std::min(hmin, ws_.hs[i]);
+          }
+        } else if (blocks > 0) {
           // Per-fluid blocks first, then the wall-density block (walls are ordered among
           // themselves). The loop runs over the state index, so each thread writes its own
           // contiguous part of ydot, the part the integrator's loops give it
@@ -375,6 +436,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
 #pragma omp for schedule(static) nowait
           for (std::size_t q = 0; q < nw_rates; ++q) ydot[wb + q] = out_[wb + at[nf + q] - nf];
         }
+        if (!split) {
 #pragma omp for schedule(static) nowait reduction(max : amax2) reduction(min : acoustic, hmin)
         for (std::size_t i = 0; i < nf; ++i) {
           double v2 = 0.0, a2 = 0.0;
@@ -387,6 +449,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
           if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
           hmin = std::min(hmin, ws_.hs[i]);
         }
+        }
       }
     }  // the region's end: every reduction combined, every rate written
     if (last) break;
@@ -395,6 +458,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   }
   ws_.implicit = nullptr;
   if (record_) record_->end();
+  extremes_ = {acoustic, amax2, hmin};
   // The viscous limit binds an explicit viscous term only: not the explicit part of an IMEX split.
   stable_step_ = cfl_step(cfl_, acoustic, amax2, hmin, !record_);
   widest_step_ = cfl_step(cfl_.widest(), acoustic, amax2, hmin, !record_);
@@ -407,6 +471,46 @@ void SphSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOp
   record_ = &op;
   try {
     rhs(t, y, fe);
+  } catch (...) {
+    record_ = nullptr;
+    throw;
+  }
+  record_ = nullptr;
+}
+
+template <int D>
+void SphSystem<D>::set_split_state(SplitState<D> split) {
+  if (reorder_) throw std::logic_error("SphSystem::set_split_state: not with reordering");
+  const StateLayout<D>& o = split.owned;
+  if (o.has_density != layout_.has_density || o.has_energy != layout_.has_energy ||
+      o.has_smoothing_length != layout_.has_smoothing_length || (o.n_wall_density > 0) != (layout_.n_wall_density > 0) ||
+      split.fluid_source.size() != layout_.n || split.wall_source.size() != layout_.n_wall_density ||
+      split.fluid_rate_row.size() != o.n || split.wall_rate_row.size() != o.n_wall_density ||
+      split.width < 2 * D + layout_.extra_blocks())
+    throw std::invalid_argument("SphSystem::set_split_state: the split does not fit the system's state");
+  split_ = std::move(split);
+}
+
+template <int D>
+void SphSystem<D>::rhs_split(double t, const double* y, const double* other, double* ydot) {
+  if (split_.width == 0) throw std::logic_error("SphSystem::rhs_split: no split state set");
+  splitting_ = true;
+  split_other_ = other;
+  try {
+    rhs(t, y, ydot);
+  } catch (...) {
+    splitting_ = false;
+    throw;
+  }
+  splitting_ = false;
+}
+
+template <int D>
+void SphSystem<D>::rhs_explicit_split(double t, const double* y, const double* other, double* fe, ViscousOperator& op) {
+  if (generator_) throw std::logic_error("SphSystem::rhs_explicit: generated particles have no implicit operator");
+  record_ = &op;
+  try {
+    rhs_split(t, y, other, fe);
   } catch (...) {
     record_ = nullptr;
     throw;
@@ -439,6 +543,7 @@ template <int D>
 void SphSystem<D>::set_reorder(bool on) {
   if (rhs_evals_ > 0) throw std::logic_error("SphSystem::set_reorder: must be set before the first evaluation");
   if (on && generator_) throw std::logic_error("SphSystem: reordering does not support generated particles");
+  if (on && split_.width > 0) throw std::logic_error("SphSystem::set_reorder: not with a split state");
   reorder_ = on;
   perm_.clear();
   inv_.clear();

@@ -16,6 +16,7 @@
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/monitor.hpp"
 #include "sphmol/rhs/particle_generator.hpp"
+#include "sphmol/rhs/split_state.hpp"
 #include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
 #include "sphmol/time/imex_system.hpp"
@@ -69,6 +70,19 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // same terms as rhs(), with the implicit ones recording into op instead of adding to dv/dt.
   void rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) override;
   std::vector<std::string> implicit_terms() const override;
+  // The state from two sources (rhs/split_state.hpp; a rank's share in a run over ranks): the rows
+  // of `split` in place of the state's, set again whenever the particle set is (not with
+  // reordering). rhs_split reads the owned rows from y (layout split.owned) and the others from
+  // `other`, and writes only the owned rows' rates, into ydot (that layout); the CFL extremes and
+  // the step limit are then the owned rows'. rhs() and refresh_fields() still take a whole state.
+  void set_split_state(SplitState<D> split);
+  void rhs_split(double t, const double* y, const double* other, double* ydot);
+  void rhs_explicit_split(double t, const double* y, const double* other, double* fe, ViscousOperator& op);
+  // The per-particle extremes of the latest evaluation that the CFL limit is made of (cfl_step).
+  struct CflExtremes {
+    double acoustic = 0.0, amax2 = 0.0, hmin = 0.0;
+  };
+  const CflExtremes& cfl_extremes() const { return extremes_; }
   double stable_step() const override { return stable_step_; }
   double widest_stable_step() const override { return widest_step_; }
   std::size_t velocities_begin() const override { return layout_.velocities_begin(); }
@@ -197,6 +211,10 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   long rhs_evals_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
   ViscousOperator* record_ = nullptr;  // set during rhs_explicit
+  SplitState<D> split_;                // set_split_state()
+  bool splitting_ = false;               // during rhs_split
+  const double* split_other_ = nullptr;  // the other rows of that evaluation
+  CflExtremes extremes_;
   // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
   // and walls within [n_fluid, n_base); empty when off. wp_ is particles_ in workspace order, out_ the
   // derivatives in workspace order before the scatter into ydot.
