@@ -167,6 +167,14 @@ TEST_CASE("distributed health: the numerical tests find a fault in one rank's st
       {L.position(0), dom.hi[0] + 0.5, "particle left the domain in direction 0"},
       {L.position(1), dom.lo[1] - 0.5, "particle left the domain in direction 1"},
   };
+  // The last good state is the last state that passed: a step that passes replaces it, one that
+  // fails leaves it (the check copies the state as its tests read it).
+  std::vector<double> moved = y_local;
+  for (std::size_t k = L.velocities_begin(); k < L.velocities_end(); ++k) moved[k] += 1e-3;
+  CHECK(verdict(moved).first.empty());
+  CHECK(check.last_good_state() == moved);
+  CHECK(verdict(y_local).first.empty());
+  CHECK(check.last_good_state() == y_local);
   for (const Fault& fault : faults) {
     INFO(comm.size() << " ranks, rank " << comm.rank() << ", expected " << fault.cause);
     std::vector<double> y = y_local;
@@ -174,6 +182,7 @@ TEST_CASE("distributed health: the numerical tests find a fault in one rank's st
     const auto [cause, particle] = verdict(y);
     CHECK(cause.rfind(fault.cause, 0) == 0);
     CHECK(particle == static_cast<long>(p));
+    CHECK(check.last_good_state() == y_local);
   }
   // A density <= 0 in the latest evaluation (the local system's density the check reads).
   std::vector<double> y = y_local;

@@ -76,20 +76,38 @@ SplitCase split_of(const StateLayout<2>& L, const std::vector<double>& y, std::s
   return s;
 }
 
+// The whole system, the one evaluated from a split state (both the tank with dynamic walls), and a
+// state with random velocities.
+struct Systems {
+  std::unique_ptr<SphSystem<2>> whole, local;
+  StateLayout<2> L;
+  std::vector<double> y;
+};
+
+Systems make_systems(unsigned seed) {
+  Config c = tank_config();
+  c.discretization.wall_pressure = "dynamic";
+  Systems p{make_tank(c), make_tank(c), {}, {}};
+  p.L = p.whole->layout();
+  p.y = p.whole->initial_state();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (std::size_t k = p.L.velocities_begin(); k < p.L.velocities_end(); ++k) p.y[k] = u(rng);
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("split state: the owned rows' rates from two sources equal the whole state's to the bit", "[split_state]") {
-  Config c = tank_config();
-  c.discretization.wall_pressure = "dynamic";
-  auto whole = make_tank(c);
-  auto local = make_tank(c);
-  const StateLayout<2> L = whole->layout();
+  Systems p = make_systems(17);
+  auto& whole = p.whole;
+  auto& local = p.local;
+  const StateLayout<2> L = p.L;
+  std::vector<double>& y = p.y;
   REQUIRE(L.has_density);
   REQUIRE(L.n_wall_density > 0);
-  std::vector<double> y = whole->initial_state();
-  std::mt19937 rng(17);
+  std::mt19937 rng(19);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
-  for (std::size_t k = L.velocities_begin(); k < L.velocities_end(); ++k) y[k] = u(rng);
   for (std::size_t i = 0; i < L.n; ++i) y[L.density() + i] *= 1.0 + 0.01 * u(rng);
   for (std::size_t k = 0; k < L.n_wall_density; ++k) y[L.wall_density() + k] *= 1.0 + 0.01 * u(rng);
   std::vector<double> f(L.size());
@@ -149,15 +167,13 @@ TEST_CASE("split state: the owned rows' rates from two sources equal the whole s
 }
 
 TEST_CASE("split state: the explicit part and the viscous operator from two sources", "[split_state][imex]") {
-  Config c = tank_config();
-  c.discretization.wall_pressure = "dynamic";
-  auto whole = make_tank(c);
-  auto local = make_tank(c);
-  const StateLayout<2> L = whole->layout();
-  std::vector<double> y = whole->initial_state();
-  std::mt19937 rng(23);
+  Systems p = make_systems(23);
+  auto& whole = p.whole;
+  auto& local = p.local;
+  const StateLayout<2> L = p.L;
+  const std::vector<double>& y = p.y;
+  std::mt19937 rng(29);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
-  for (std::size_t k = L.velocities_begin(); k < L.velocities_end(); ++k) y[k] = u(rng);
   std::vector<double> fe(L.size());
   ViscousOperator op_whole, op_local;
   whole->rhs_explicit(0.0, y.data(), fe.data(), op_whole);
@@ -179,11 +195,10 @@ TEST_CASE("split state: the explicit part and the viscous operator from two sour
 }
 
 TEST_CASE("split state: a split that does not fit the system is refused", "[split_state]") {
-  Config c = tank_config();
-  c.discretization.wall_pressure = "dynamic";
-  auto sys = make_tank(c);
-  const StateLayout<2> L = sys->layout();
-  std::vector<double> y = sys->initial_state(), ydot(L.size());
+  Systems p = make_systems(31);
+  auto& sys = p.local;
+  const StateLayout<2> L = p.L;
+  std::vector<double> y = p.y, ydot(L.size());
   REQUIRE_THROWS_AS(sys->rhs_split(0.0, y.data(), nullptr, ydot.data()), std::logic_error);
   SplitCase s = split_of(L, y);
   s.split.fluid_source.pop_back();

@@ -69,7 +69,7 @@ class DistributedHealthCheck {
     if (std::isfinite(initial) && !(cfl >= HealthCheck<D>::kCollapse * initial))
       throw BlowUp(t, -1, "step-size collapse: the CFL step fell from " + std::to_string(initial) + " s to " +
                               std::to_string(cfl) + " s");
-    last_good_.assign(y, y + sys_.size());
+    last_good_.swap(candidate_);  // the copy the tests made; the previous good state is reused next time
     last_good_t_ = t;
     int largest = 0;
     for (const Verdict& v : verdicts) largest = std::max(largest, v.signal);
@@ -110,20 +110,35 @@ class DistributedHealthCheck {
 
   // Whether any of first_failure()'s tests fails, with the same comparisons written without an early
   // exit or a store per particle, so that the loops vectorise; the failure itself is looked for only
-  // then. A bound of +-DBL_MAX in a periodic direction tests finiteness alone.
-  bool any_numerical_failure(const double* y) const {
+  // then. A bound of +-DBL_MAX in a periodic direction tests finiteness alone. The same loops copy y
+  // into candidate_, the last good state once every test has passed (as the serial check's scan):
+  // y is read once per step, not again for the copy.
+  bool any_numerical_failure(const double* y) {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
     constexpr double big = std::numeric_limits<double>::max();
+    candidate_.resize(L.size());
+    double* const keep = candidate_.data();
     int bad = 0;
     for (int d = 0; d < D; ++d) {
       const double* x = y + L.position(d);
       const double* v = y + L.velocity(d);
+      double* kx = keep + L.position(d);
+      double* kv = keep + L.velocity(d);
       const double lo = dom.periodic[d] ? -big : dom.lo[d], hi = dom.periodic[d] ? big : dom.hi[d];
       // & rather than &&: no branch per particle.
-      for (std::size_t i = 0; i < L.n; ++i) bad |= static_cast<int>(!((x[i] >= lo) & (x[i] <= hi) & (std::abs(v[i]) <= big)));
+      for (std::size_t i = 0; i < L.n; ++i) {
+        const double xi = x[i], vi = v[i];
+        kx[i] = xi;
+        kv[i] = vi;
+        bad |= static_cast<int>(!((xi >= lo) & (xi <= hi) & (std::abs(vi) <= big)));
+      }
     }
-    for (std::size_t k = L.velocities_end(); k < L.size(); ++k) bad |= static_cast<int>(!(std::abs(y[k]) <= big));
+    for (std::size_t k = L.velocities_end(); k < L.size(); ++k) {
+      const double yk = y[k];
+      keep[k] = yk;
+      bad |= static_cast<int>(!(std::abs(yk) <= big));
+    }
     for (std::size_t i = 0; i < rho_.size(); ++i) bad |= static_cast<int>(!(rho_[i] > 0.0));
     return bad != 0;
   }
@@ -229,7 +244,7 @@ class DistributedHealthCheck {
 
   Communicator comm_;
   const DistributedSystem<D>& sys_;
-  std::vector<double> last_good_;
+  std::vector<double> last_good_, candidate_;  // candidate_: the copy of the step being tested
   double last_good_t_;
   PhysicalBounds<D> bounds_;
   std::vector<double> rho_;  // the owned fluid's densities of the latest evaluation, in state order

@@ -272,7 +272,7 @@ double DistributedSystem<D>::mirror_margin() const {
 }
 
 template <int D>
-bool DistributedSystem<D>::moved_too_far() const {
+bool DistributedSystem<D>::moved_too_far(double t, const double* y) const {
   // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
   // hmax_ is the same on every rank, so this decision is too. The ghost margin's growth does not:
   // a mirror image moves exactly as far as its source (a reflection is an isometry), so a pair of a
@@ -281,16 +281,27 @@ bool DistributedSystem<D>::moved_too_far() const {
   const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
   if (!(room > 0.0)) return true;
   const double limit2 = 0.25 * room * room;
-  bool far = false;
-  for (std::size_t o = 0; o < owned_.size() && !far; ++o) {
+  // The positions as owned_positions() makes them, from y without storing them (the test runs at
+  // every evaluation, a plan rarely), and the largest displacement without an exit per particle,
+  // so that the fluid's loop vectorises.
+  double r2max = 0.0;
+  for (std::size_t o = 0; o < nfo_; ++o) {
     double r2 = 0.0;
     for (int d = 0; d < D; ++d) {
-      const double dx = domain_.min_image(d, x_now_[d][o] - x_plan_[d][o]);
+      const double dx = domain_.min_image(d, domain_.wrap(d, y[layout_.position(d) + o]) - x_plan_[d][o]);
       r2 += dx * dx;
     }
-    far = r2 > limit2;
+    r2max = std::max(r2max, r2);
   }
-  return !comm_.all(!far);
+  for (std::size_t o = nfo_; o < owned_.size(); ++o) {
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double dx = domain_.min_image(d, domain_.wrap(d, owned_.wall_position(d, o, t)) - x_plan_[d][o]);
+      r2 += dx * dx;
+    }
+    r2max = std::max(r2max, r2);
+  }
+  return !comm_.all(!(r2max > limit2));
 }
 
 template <int D>
@@ -430,13 +441,22 @@ void DistributedSystem<D>::exchange_halo(const double* y) {
 
 template <int D>
 void DistributedSystem<D>::prepare_local(double t, const double* y) {
-  owned_positions(t, y);
+  // The owned positions are stored when something reads them: the ghost margin or a plan.
+  const bool due = stats_.plans == 0 || plan_due_;  // the same on every rank
+  bool stored = false;
+  if (ghost_walls_ || due) {
+    owned_positions(t, y);
+    stored = true;
+  }
   if (variable_h_) hmax_ = largest_h(y);
   if (ghost_walls_) {
     margin_ = mirror_margin();
     stats_.mirror_margin_max = std::max(stats_.mirror_margin_max, margin_);
   }
-  if (stats_.plans == 0 || plan_due_ || moved_too_far()) plan();
+  if (due || moved_too_far(t, y)) {
+    if (!stored) owned_positions(t, y);
+    plan();
+  }
   if (variable_h_ && ghost_walls_)
     if (auto* g = dynamic_cast<GhostGenerator<D>*>(local_->generator())) g->set_reach_h(hmax_fluid_);
 }

@@ -165,9 +165,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::pair<std::uint64_t, std::uint64_t> pair_work() const;
 
  private:
-  // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped.
+  // Positions of the owned particles at t (fluid from y, walls from their motion), wrapped, into
+  // x_now_ (current after prepare_local() only when a plan was made or the scene has ghost walls).
   void owned_positions(double t, const double* y);
-  bool moved_too_far() const;  // collective
+  bool moved_too_far(double t, const double* y) const;  // collective
   // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
   void prepare_local(double t, const double* y);
   void exchange_halo(const double* y);        // collective: the halo's state rows into halo_rows_

@@ -370,6 +370,19 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   // Acoustic limit per particle with its own h and sound speed (the EOS sets c_i; an EOS that does
   // not falls back to the configured c), so compressible runs use the largest local c / h.
   double amax2 = 0.0, acoustic = std::numeric_limits<double>::infinity(), hmin = ws_.h;
+  // Row i's part of those extremes, into a reduction's copies (passed in: a capture would reach
+  // the shared variables, not each thread's).
+  const auto cfl_row = [this](std::size_t i, double& amax2_i, double& acoustic_i, double& hmin_i) {
+    double v2 = 0.0, a2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      v2 += ws_.v[d][i] * ws_.v[d][i];
+      a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
+    }
+    amax2_i = std::max(amax2_i, a2);
+    const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
+    if (speed > 0.0) acoustic_i = std::min(acoustic_i, ws_.hs[i] / speed);
+    hmin_i = std::min(hmin_i, ws_.hs[i]);
+  };
   for (std::size_t k = 0;;) {
     std::size_t e = k;  // terms [k, e) run in a team
     while (e < terms_.size() && terms_[e]->runs_in_team()) ++e;
@@ -410,15 +423,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
           for (std::size_t o = 0; o < no; ++o) {
             const std::size_t i = frow[o];
             for (std::size_t b = 0; b < fluid_blocks; ++b) ydot[b * no + o] = out_[b * nf + i];
-            double v2 = 0.0, a2 = 0.0;
-            for (int d = 0; d < D; ++d) {
-              v2 += ws_.v[d][i] * ws_.v[d][i];
-              a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
-            }
-            amax2 = std::max(amax2, a2);
-            const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
-            if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
-            hmin = std::min(hmin, ws_.hs[i]);
+            cfl_row(i, amax2, acoustic, hmin);
           }
         } else if (blocks > 0) {
           // Per-fluid blocks first, then the wall-density block (walls are ordered among
@@ -438,17 +443,7 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
         }
         if (!split) {
 #pragma omp for schedule(static) nowait reduction(max : amax2) reduction(min : acoustic, hmin)
-        for (std::size_t i = 0; i < nf; ++i) {
-          double v2 = 0.0, a2 = 0.0;
-          for (int d = 0; d < D; ++d) {
-            v2 += ws_.v[d][i] * ws_.v[d][i];
-            a2 += ws_.dvdt[d][i] * ws_.dvdt[d][i];
-          }
-          amax2 = std::max(amax2, a2);
-          const double speed = std::max(cfl_.sound_speed, ws_.c[i]) + std::sqrt(v2);
-          if (speed > 0.0) acoustic = std::min(acoustic, ws_.hs[i] / speed);
-          hmin = std::min(hmin, ws_.hs[i]);
-        }
+        for (std::size_t i = 0; i < nf; ++i) cfl_row(i, amax2, acoustic, hmin);
         }
       }
     }  // the region's end: every reduction combined, every rate written
@@ -465,17 +460,29 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   rhs_seconds_ += omp_get_wtime() - t_start;
 }
 
+namespace {
+
+// A member set for the length of a call, and set back however the call ends.
+template <class T>
+class SetDuring {
+ public:
+  SetDuring(T& slot, T value) : slot_(slot), old_(slot) { slot_ = value; }
+  ~SetDuring() { slot_ = old_; }
+  SetDuring(const SetDuring&) = delete;
+  SetDuring& operator=(const SetDuring&) = delete;
+
+ private:
+  T& slot_;
+  T old_;
+};
+
+}  // namespace
+
 template <int D>
 void SphSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {
   if (generator_) throw std::logic_error("SphSystem::rhs_explicit: generated particles have no implicit operator");
-  record_ = &op;
-  try {
-    rhs(t, y, fe);
-  } catch (...) {
-    record_ = nullptr;
-    throw;
-  }
-  record_ = nullptr;
+  const SetDuring<ViscousOperator*> recording(record_, &op);
+  rhs(t, y, fe);
 }
 
 template <int D>
@@ -494,28 +501,16 @@ void SphSystem<D>::set_split_state(SplitState<D> split) {
 template <int D>
 void SphSystem<D>::rhs_split(double t, const double* y, const double* other, double* ydot) {
   if (split_.width == 0) throw std::logic_error("SphSystem::rhs_split: no split state set");
-  splitting_ = true;
+  const SetDuring<bool> splitting(splitting_, true);
   split_other_ = other;
-  try {
-    rhs(t, y, ydot);
-  } catch (...) {
-    splitting_ = false;
-    throw;
-  }
-  splitting_ = false;
+  rhs(t, y, ydot);
 }
 
 template <int D>
 void SphSystem<D>::rhs_explicit_split(double t, const double* y, const double* other, double* fe, ViscousOperator& op) {
   if (generator_) throw std::logic_error("SphSystem::rhs_explicit: generated particles have no implicit operator");
-  record_ = &op;
-  try {
-    rhs_split(t, y, other, fe);
-  } catch (...) {
-    record_ = nullptr;
-    throw;
-  }
-  record_ = nullptr;
+  const SetDuring<ViscousOperator*> recording(record_, &op);
+  rhs_split(t, y, other, fe);
 }
 
 template <int D>
