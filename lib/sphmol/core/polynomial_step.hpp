@@ -5,8 +5,8 @@
 //   P'(t) = (2m + 1) binom(2m, m) t^m (1 - t)^m,
 // evaluated as the same sum in the form with positive terms only,
 //   P(t) = t^(m+1) sum_{j=0}^{m} binom(m + j, j) (1 - t)^j
-// (Horner in 1 - t; no cancellation, so P is accurate to a few ulp relative to itself near 0, and
-// P(0) = 0, P(1) = 1 exactly). Its first m derivatives vanish at t = 0 and t = 1, so a floor built as
+// (Horner in 1 - t, positive terms: no cancellation, so P is accurate to a few ulp relative to itself
+// near 0; P(0) = 0, P(1) = 1 exactly). Its first m derivatives vanish at t = 0 and t = 1, so a floor built as
 // x P(x / delta) is C^m where the plain max has a kink, and f(t, y) with it: each of the fixed number
 // of crossings costs O(dt^(m+2)), which caps a fixed-step integrator at order m + 2, at m = 6 above
 // Verner 8(5)6's 6 (docs/verification.md, "Time-error floor").
@@ -42,14 +42,19 @@ constexpr std::array<double, kPolynomialStepOrder + 1> polynomial_step_coefficie
 // P(t) for a double or (AVX2) four lanes; NaN reads as t <= 0.
 template <class V>
 [[gnu::always_inline]] inline V polynomial_step_lanes(V t) {
+  // On the half nearer the end, x = min(c, 1 - c) <= 1/2 (1 - c is exact for c >= 1/2), and
+  // P(c) = 1 - P(1 - c) above 1/2: so P <= 1, P(t) + P(1 - t) = 1 to an ulp, and 1 - P near t = 1 is
+  // as accurate as P near 0.
   using lane_ops::constant;
-  const V c = lane_ops::clamp01(t), d = constant<V>(1.0) - c;
+  const V one = constant<V>(1.0), half = constant<V>(0.5);
+  const V c = lane_ops::clamp01(t), x = lane_ops::min(c, one - c), d = one - x;
   constexpr auto a = polynomial_step_coefficients();
   V h = constant<V>(a[kPolynomialStepOrder]);
   for (int j = kPolynomialStepOrder - 1; j >= 0; --j) h = h * d + constant<V>(a[j]);
-  V p = c;
-  for (int j = 0; j < kPolynomialStepOrder; ++j) p = p * c;  // c^(m+1)
-  return p * h;
+  V p = x;
+  for (int j = 0; j < kPolynomialStepOrder; ++j) p = p * x;  // x^(m+1)
+  const V q = p * h;
+  return lane_ops::select_gt(c, half, one - q, q);
 }
 inline double polynomial_step(double t) { return polynomial_step_lanes(t); }
 
