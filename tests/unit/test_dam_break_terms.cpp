@@ -279,7 +279,7 @@ TEST_CASE("Tait EOS: p and c of every particle are the per-particle formulas bit
 TEST_CASE("dynamic wall particles: the EOS floor rho0 is smooth, exact outside its band", "[boundary][dam_break]") {
   // max(rho_wall, rho0) is a kink of f(t, y) that caps every fixed-step integrator at order 2; the EOS
   // reads rho0 + g(rho - rho0), g(x) = x S(x / (width rho0)): rho0 at or below rho0, rho above
-  // rho0 (1 + width), in between strictly between (core/smooth_step.hpp).
+  // rho0 (1 + width), in between strictly between (core/polynomial_step.hpp).
   const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml";
   auto wall_pressures = [&](const std::string& width, const std::vector<double>& rho) {
     const Config c = load_config(file, {"discretization.spacing=0.05", "discretization.wall_density_floor_width=" + width});
@@ -305,7 +305,7 @@ TEST_CASE("dynamic wall particles: the EOS floor rho0 is smooth, exact outside i
     CHECK(smooth[k] < sharp[k]);
   }
   for (std::size_t k = 5; k < rho.size(); ++k) CHECK(smooth[k] == sharp[k]);
-  // Deep in the band the smooth floor is flat to every order (sharp: linear in rho - rho0).
+  // Deep in the band the smooth floor is flat to order m (core/polynomial_step.hpp; sharp: linear in rho - rho0).
   CHECK(sharp[2] / sharp[3] == Approx(0.2).epsilon(1e-3));
   CHECK(smooth[2] / smooth[3] < 1e-3);
 }

@@ -132,7 +132,7 @@ struct DiscretizationConfig {
   // "dynamic": dynamic boundary particles (Crespo et al. 2007): wall densities in the ODE state,
   // evolved by continuity with the fluid, pressure from the EOS (boundary/dynamic_wall_density.hpp).
   std::string wall_pressure = "rest";
-  // Width of the C-infinity floor max(rho_wall, rho0) of dynamic wall particles, in units of rho0 (>= 0;
+  // Width of the smooth (C^6) floor max(rho_wall, rho0) of dynamic wall particles, in units of rho0 (>= 0;
   // 0 = the plain max; rhs/sph_system.cpp).
   double wall_density_floor_width = 1e-4;
   bool wall_density_floor_width_given = false;  // for the check that some wall is dynamic (scenes: per body)

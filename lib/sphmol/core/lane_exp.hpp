@@ -49,6 +49,13 @@ V constant(double a) {
 #endif
     return a;
 }
+// t clamped to [0, 1], with -0.0 and NaN mapped to +0.0 (the steps' argument: a NaN from a zero-width
+// band reads as t <= 0).
+template <class V>
+[[gnu::always_inline]] inline V clamp01(V t) {
+  const V zero = constant<V>(0.0);
+  return select_gt(t, zero, min(t, constant<V>(1.0)), zero);
+}
 }  // namespace lane_ops
 
 template <class V>

@@ -2,10 +2,14 @@
 // A C-infinity step: S(t) = 0 for t <= 0, 1 for t >= 1, and in between
 //   S(t) = psi(t) / (psi(t) + psi(1 - t)),  psi(t) = exp(-1/t)   (Tu 2011, §13.1),
 // written with one exponential as 1 / (1 + exp(1/t - 1/(1 - t))), the exponent in one division as
-// ((1 - t) - t) / (t (1 - t)). Every derivative of S vanishes at t = 0 and t = 1, so a switch,
-// cut-off or floor built as x S(x / delta) is C-infinity where the plain min / max / cut-off has a
-// kink: a fixed-step integrator of order p then keeps order p across it (a kink, crossed a fixed
-// number of times, caps every method at order 2; docs/verification.md).
+// ((1 - t) - t) / (t (1 - t)). Every derivative of S vanishes at t = 0 and t = 1, so a switch or
+// cut-off built as x S(x / delta) is C-infinity where the plain min / cut-off has a kink: a fixed-step
+// integrator of order p then keeps order p across it (a kink, crossed a fixed number of times, caps
+// every method at order 2; docs/verification.md). The viscosity switch and the Gaussian kernels'
+// taper use it. Its derivatives grow faster than k!, so a band shows Verner's order only once a step
+// covers a small part of a crossing; the dynamic walls' density floor uses the C^6 polynomial step of
+// core/polynomial_step.hpp instead, and the switch and the taper keep this one, with which the shock
+// tubes' bands and bounds were measured (docs/verification.md, "A polynomial step").
 // Branch-free (the clamp is a min/max, 1/0 = inf, and the exponential of core/lane_exp.hpp gives
 // exp(+inf) = inf and exp(-inf) < 1e-307, so S(0) = 0 and S(1) = 1 exactly) and with no library
 // call, so it vectorises where the caller's loop does, and smooth_step(V) takes four lanes at once
@@ -19,10 +23,7 @@ namespace sphmol {
 // S(t) for a double or (AVX2) four lanes; NaN (0/0, from a zero-width band at x = 0) reads as t <= 0.
 template <class V>
 [[gnu::always_inline]] inline V smooth_step_lanes(V t) {
-  using namespace lane_ops;
-  const V zero = constant<V>(0.0), one = constant<V>(1.0);
-  const V c = select_gt(t, zero, min(t, one), zero);  // also maps -0.0 and NaN to +0.0
-  const V d = one - c;
+  const V one = lane_ops::constant<V>(1.0), c = lane_ops::clamp01(t), d = one - c;
   return one / (one + lane_exp((d - c) / (c * d)));  // 1/c - 1/(1 - c) in one division; +-inf at c = 0, 1
 }
 inline double smooth_step(double t) { return smooth_step_lanes(t); }
@@ -38,13 +39,5 @@ inline void smooth_step(double t, double& s, double& ds) {
   s = u > 0.0 ? e * inv : inv;
   ds = e * inv * inv * (1.0 / (t * t) + 1.0 / ((1.0 - t) * (1.0 - t)));
 }
-
-// A C-infinity min(x, 0): x S(-x / width). Equal to x for x <= -width, 0 for x >= 0, between x and 0
-// in between (so of the sign of min(x, 0)); width = 0 gives min(x, 0) exactly.
-inline double smooth_min0(double x, double width) { return x * smooth_step(-x / width); }
-
-// A C-infinity max(x, 0): x S(x / width). Equal to x for x >= width, 0 for x <= 0, in [0, x] between;
-// width = 0 gives max(x, 0) exactly.
-inline double smooth_max0(double x, double width) { return x * smooth_step(x / width); }
 
 }  // namespace sphmol

@@ -7,7 +7,7 @@
 #include <omp.h>
 #include <stdexcept>
 
-#include "sphmol/core/smooth_step.hpp"
+#include "sphmol/core/polynomial_step.hpp"
 #include "sphmol/neighbors/particle_reorder.hpp"
 #include "sphmol/rhs/pair_pass_plan.hpp"
 

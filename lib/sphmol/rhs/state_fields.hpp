@@ -16,7 +16,7 @@ struct StateFields {
   // Dynamic boundary particles (Crespo et al. 2007): wall densities in the state. The EOS and the
   // momentum equation read max(rho_wall, wall_density_floor): DualSPHysics clamps wall densities at
   // rho0 likewise, so that a wall never pulls fluid in with a negative pressure. With a width > 0 the
-  // max is the C-infinity one of core/smooth_step.hpp, floor + smooth_max0(rho - floor, width): exactly
+  // max is the smooth (C^6) one of core/polynomial_step.hpp, floor + smooth_max0(rho - floor, width): exactly
   // rho above floor + width, exactly floor at or below it (a kink in f(t, y) caps every fixed-step
   // integrator at order 2).
   bool wall_density = false;
