@@ -23,22 +23,7 @@ class ContinuityDensityIA final : public PairTermFor<D, ContinuityDensityIA<D, V
   }
   bool zero_beyond_support() const override { return C_->kernel == nullptr; }  // W(r, h_i) may reach past kappa h_ij
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
-    const auto& m = w.particles->mass;
-    const double* Ci = C_->of(i);
-    double s = 0.0;
-    for (std::uint32_t k = 0; k < r.n; ++k) {
-      const std::uint32_t j = r.j[k];
-      double dx[D], ci[D], r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        dx[d] = r.dx[d][k];
-        r2 += dx[d] * dx[d];
-      }
-      ia_times<D>(Ci, dx, ci);
-      double vc = 0.0;
-      for (int d = 0; d < D; ++d) vc += (w.v[d][i] - w.v[d][j]) * ci[d];
-      s += (Volume ? m[j] / w.rho[j] : m[j]) * C_->own(w, i, r.W[k], r2) * vc;
-    }
-    w.drhodt[i] -= (Volume ? w.rho[i] : 1.0) * s;
+    w.drhodt[i] += (Volume ? w.rho[i] : 1.0) * ia_divergence_sum<D, Volume>(w, i, r, *C_);
   }
 
  private:

@@ -20,22 +20,7 @@ class EnergyEquationIA final : public PairTermFor<D, EnergyEquationIA<D>> {
   std::string_view name() const override { return "energy_equation_integral_approach"; }
   bool zero_beyond_support() const override { return C_->kernel == nullptr; }  // W(r, h_i) may reach past kappa h_ij
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
-    const auto& m = w.particles->mass;
-    const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
-    double s = 0.0;  // sum_j m_j v_ij . (W_ij(h_i) C_i dx_ij)
-    for (std::uint32_t k = 0; k < r.n; ++k) {
-      const std::uint32_t j = r.j[k];
-      double dx[D], ci[D], r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        dx[d] = r.dx[d][k];
-        r2 += dx[d] * dx[d];
-      }
-      ia_times<D>(C_->of(i), dx, ci);
-      double vc = 0.0;
-      for (int d = 0; d < D; ++d) vc += (w.v[d][i] - w.v[d][j]) * ci[d];
-      s += m[j] * C_->own(w, i, r.W[k], r2) * vc;
-    }
-    w.dedt[i] -= pi * s;
+    w.dedt[i] += w.p[i] / (w.rho[i] * w.rho[i]) * ia_divergence_sum<D, false>(w, i, r, *C_);
   }
 
  private:

@@ -103,6 +103,28 @@ inline void ia_invert(const double (&tau)[D * D], double* C) {
     for (int b = 0; b < D; ++b) C[a * D + b] = a == b && trace > 0.0 ? D / trace : 0.0;
 }
 
+// sum_j w_j v_ij . A_ij = -sum_j w_j W_ij(h_i) v_ij . (C_i dx_ij) over row i, w_j = m_j (Volume = false)
+// or m_j / rho_j: the IA estimate of -rho_i div v_i (mass weights) or -div v_i (volume weights), read by
+// the continuity and energy equations.
+template <int D, bool Volume>
+inline double ia_divergence_sum(const Workspace<D>& w, std::size_t i, const PairRow<D>& r, const IntegralApproachField<D>& C) {
+  const auto& m = w.particles->mass;
+  const double* Ci = C.of(i);
+  double s = 0.0;
+  for (std::uint32_t k = 0; k < r.n; ++k) {
+    const std::uint32_t j = r.j[k];
+    double dx[D], ci[D], r2 = 0.0, vc = 0.0;
+    for (int d = 0; d < D; ++d) {
+      dx[d] = r.dx[d][k];
+      r2 += dx[d] * dx[d];
+    }
+    ia_times<D>(Ci, dx, ci);
+    for (int d = 0; d < D; ++d) vc += (w.v[d][i] - w.v[d][j]) * ci[d];
+    s -= (Volume ? m[j] / w.rho[j] : m[j]) * C.own(w, i, r.W[k], r2) * vc;
+  }
+  return s;
+}
+
 template <int D>
 class IntegralApproachMatrix final : public PairTermFor<D, IntegralApproachMatrix<D>> {
  public:
