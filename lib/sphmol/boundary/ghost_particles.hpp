@@ -184,6 +184,25 @@ class GhostGenerator final : public ParticleGenerator<D> {
   const std::vector<GhostPlane<D>>& planes() const { return planes_; }
   const std::vector<std::uint32_t>& sources() const { return source_; }
   const std::vector<std::uint32_t>& masks() const { return mask_; }
+  // R (row-major D x D) of the image made with `mask` (masks()): the product of the mirrors'
+  // reflections I - 2 n n^T, which commute (the mirrors of an image are pairwise at right angles). A
+  // tensor of the source maps to R T R^T at the image (boundary/ghost_integral_approach_matrix.hpp).
+  void reflection(std::uint32_t mask, double (&R)[D * D]) const {
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) R[a * D + b] = a == b ? 1.0 : 0.0;
+    for (std::size_t k = 0; k < mirrors_.size(); ++k) {
+      if (!(mask & (1u << k))) continue;
+      const auto& n = mirrors_[k].plane.normal;
+      double next[D * D];
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) {
+          double s = 0.0;  // (I - 2 n n^T) R
+          for (int c = 0; c < D; ++c) s += ((a == c ? 1.0 : 0.0) - 2.0 * n[a] * n[c]) * R[c * D + b];
+          next[a * D + b] = s;
+        }
+      for (int q = 0; q < D * D; ++q) R[q] = next[q];
+    }
+  }
 
  private:
   struct Mirror {

@@ -357,7 +357,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
     disc.check("smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
     if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation", "normalised_summation", "continuity"});
-    if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116"});
+    if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116", "integral_approach"});
     if (const auto v = disc.string("viscosity"))
       d.viscosity = disc.choice("viscosity", *v, {"strain_rate", "morris", "none"});
     if (const auto v = disc.real("xsph")) d.xsph = *v;

@@ -11,6 +11,7 @@
 #include "sphmol/boundary/dynamic_wall_density.hpp"
 #include "sphmol/boundary/ghost_hydrostatic_pressure.hpp"
 #include "sphmol/boundary/free_slip_walls.hpp"
+#include "sphmol/boundary/ghost_integral_approach_matrix.hpp"
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
@@ -18,11 +19,16 @@
 #include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/physics/artificial_conductivity.hpp"
+#include "sphmol/physics/artificial_conductivity_ia.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
+#include "sphmol/physics/artificial_viscosity_ia.hpp"
 #include "sphmol/physics/body_force.hpp"
 #include "sphmol/physics/continuity_density.hpp"
+#include "sphmol/physics/continuity_density_ia.hpp"
 #include "sphmol/physics/density_diffusion.hpp"
 #include "sphmol/physics/energy_equation.hpp"
+#include "sphmol/physics/energy_equation_ia.hpp"
+#include "sphmol/physics/integral_approach_matrix.hpp"
 #include "sphmol/physics/eos_ideal_gas.hpp"
 #include "sphmol/physics/normalised_summation_density.hpp"
 #include "sphmol/physics/pressure_gradient_116.hpp"
@@ -31,6 +37,7 @@
 #include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
 #include "sphmol/physics/pressure_gradient.hpp"
+#include "sphmol/physics/pressure_gradient_ia.hpp"
 #include "sphmol/physics/strain_rate.hpp"
 #include "sphmol/physics/strain_rate_viscosity.hpp"
 #include "sphmol/physics/summation_density.hpp"
@@ -120,13 +127,23 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
         g, fluid.body_force_ramp, rho_of_p, particles.treatment_mask(WallTreatment::extrapolated, global_walls)));
   }
   const bool m116 = disc.momentum == "symmetric_116";
-  if (!m116 && disc.momentum != "symmetric_117")
+  // The integral approach (physics/integral_approach_matrix.hpp): every gradient of the gas dynamics
+  // (continuity, pressure, artificial viscosity and conductivity, energy) through the matrices C_i.
+  const bool ia = disc.momentum == "integral_approach";
+  if (!m116 && !ia && disc.momentum != "symmetric_117")
     throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
+  if (ia) {
+    // Terms with no IA form would mix the two gradients.
+    if (disc.viscosity != "none")
+      throw std::invalid_argument("discretization.momentum: integral_approach needs viscosity: none (got '" + disc.viscosity + "')");
+    if (disc.density_diffusion > 0.0)
+      throw std::invalid_argument("discretization.momentum: integral_approach is not available with density_diffusion");
+  }
   const auto& av = disc.artificial_viscosity;
   // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
   // formulation), equal to the four separate terms to round-off.
   const bool signal_velocity = av.form == "monaghan_1997";
-  const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && disc.viscosity == "none" &&
+  const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && !ia && disc.viscosity == "none" &&
                       av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass";
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width(), av.band_offset()};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
@@ -134,7 +151,21 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
     else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
   }
-  if (disc.density == "continuity" && !wc_row) {
+  // The IA matrices: after the densities of every particle (ghost copies included) and before any
+  // term that reads them.
+  std::shared_ptr<IntegralApproachField<D>> ia_field;
+  if (ia) {
+    ia_field = std::make_shared<IntegralApproachField<D>>();
+    if (variable_h) ia_field->kernel = kernel_info<D>(disc.kernel).W;
+    const GhostGenerator<D>* gen = ghosts.get();
+    add("discretization.momentum", std::make_unique<IntegralApproachMatrix<D>>(
+        ia_field, gen ? std::function<std::size_t()>([gen] { return gen->base(); }) : nullptr));
+    if (ghosts) add("discretization.momentum", std::make_unique<GhostIntegralApproachMatrix<D>>(ghosts.get(), ia_field));
+  }
+  if (disc.density == "continuity" && ia) {
+    if (disc.continuity == "volume") add("discretization.continuity", std::make_unique<ContinuityDensityIA<D, true>>(ia_field));
+    else add("discretization.density", std::make_unique<ContinuityDensityIA<D, false>>(ia_field));
+  } else if (disc.density == "continuity" && !wc_row) {
     if (disc.continuity == "volume") add("discretization.continuity", std::make_unique<ContinuityDensity<D, true>>());
     else add("discretization.density", std::make_unique<ContinuityDensity<D>>());
   }
@@ -143,7 +174,8 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
         std::make_unique<DynamicWallDensity<D>>(particles.treatment_mask(WallTreatment::dynamic, global_walls)));
   if (disc.density_diffusion > 0.0 && !wc_row)
     add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
-  auto pressure = [m116]() -> std::unique_ptr<Term<D>> {
+  auto pressure = [m116, ia, &ia_field]() -> std::unique_ptr<Term<D>> {
+    if (ia) return std::make_unique<PressureGradientIA<D>>(ia_field);
     if (m116) return std::make_unique<PressureGradient116<D>>();
     return std::make_unique<PressureGradient117<D>>();
   };
@@ -202,15 +234,22 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   }
   if (av.enabled && !wc_row) {
     const SignalVelocityPi sv{av.alpha, av.beta, av.band_width(), av.band_offset()};
-    if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
+    if (ia && signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, true, SignalVelocityPi>>(sv, ia_field));
+    else if (ia && signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, false, SignalVelocityPi>>(sv, ia_field));
+    else if (ia && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, true>>(monaghan, ia_field));
+    else if (ia) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, false>>(monaghan, ia_field));
+    else if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
     else if (signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false, SignalVelocityPi>>(sv));
     else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(monaghan));
     else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(monaghan));
   }
-  if (disc.artificial_conductivity.enabled)
+  if (disc.artificial_conductivity.enabled && ia)
+    add("discretization.artificial_conductivity", std::make_unique<ArtificialConductivityIA<D>>(disc.artificial_conductivity.alpha, ia_field));
+  else if (disc.artificial_conductivity.enabled)
     add("discretization.artificial_conductivity", std::make_unique<ArtificialConductivity<D>>(disc.artificial_conductivity.alpha));
   if (disc.energy) {
-    if (m116) add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
+    if (ia) add("discretization.energy", std::make_unique<EnergyEquationIA<D>>(ia_field));
+    else if (m116) add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_116>>());
     else add("discretization.energy", std::make_unique<EnergyEquation<D, EnergyForm::symmetric_117>>());
   }
   if (disc.boundary == "virtual_repulsive") {
