@@ -177,6 +177,7 @@ std::size_t SphSystem<D>::active_pairs() const {
 template <int D>
 void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
+  ++rhs_calls_;
   const double t_start = omp_get_wtime();
   ws_.t = t;
   const std::size_t nf = layout_.n, nb = n_base_;
@@ -399,6 +400,24 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   stable_step_ = cfl_step(cfl_, acoustic, amax2, hmin, !record_);
   widest_step_ = cfl_step(cfl_.widest(), acoustic, amax2, hmin, !record_);
   rhs_seconds_ += omp_get_wtime() - t_start;
+}
+
+template <int D>
+void SphSystem<D>::set_fields(const ParticleFieldValues& f) {
+  const std::size_t nb = n_base_;
+  for (const auto* a : {&f.density, &f.pressure, &f.sound_speed, &f.energy, &f.smoothing_length})
+    if (a->size() != nb) throw std::invalid_argument("SphSystem::set_fields: needs one value per particle of the scene");
+  // Workspace index k holds particle perm_[k] when reordered.
+  const auto put = [&](const std::vector<double>& from, std::vector<double>& to) {
+    for (std::size_t k = 0; k < nb; ++k) to[k] = from[perm_.empty() ? k : perm_[k]];
+  };
+  put(f.density, ws_.rho);
+  put(f.pressure, ws_.p);
+  put(f.sound_speed, ws_.c);
+  put(f.energy, ws_.e);
+  put(f.smoothing_length, ws_.hs);
+  if (fields_.smoothing_length != SmoothingLengthMode::constant)
+    if (nb > 0) pairs_->set_support(support_ * *std::max_element(ws_.hs.begin(), ws_.hs.begin() + static_cast<std::ptrdiff_t>(nb)));
 }
 
 template <int D>

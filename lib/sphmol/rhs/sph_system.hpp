@@ -15,6 +15,7 @@
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/monitor.hpp"
+#include "sphmol/rhs/particle_field_values.hpp"
 #include "sphmol/rhs/particle_generator.hpp"
 #include "sphmol/rhs/state_fields.hpp"
 #include "sphmol/rhs/term.hpp"
@@ -89,6 +90,15 @@ class SphSystem final : public OdeSystem, public ImexSystem {
     rhs_seconds_ = seconds;
     search_seconds_ = search;
   }
+  // The per-particle fields of a state evaluated elsewhere (the ranks' own particles in a run over
+  // ranks), set without an evaluation: what density(), pressure(), sound_speed(), energy() and
+  // smoothing_lengths() return afterwards for the scene's own particles. Every array holds one value
+  // per particle of the scene in state order. With a variable h the pair list's radius follows the
+  // largest h, as an evaluation sets it, so that the summary reports the serial radius.
+  void set_fields(const ParticleFieldValues& f);
+  // Evaluations of every kind since construction: the integrator's and refresh_fields' (which
+  // rhs_evaluations() leaves out). A run over ranks checks with it that the whole scene is not evaluated.
+  long evaluations_including_refreshes() const { return rhs_calls_; }
   // Wall time spent inside rhs() since construction, and the part of it that went to the neighbour
   // list (staleness test, rebuilds, reordering): the run summary splits its cost with these.
   double rhs_seconds() const { return rhs_seconds_; }
@@ -194,7 +204,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   double support_ = 0.0;                 // kernel support in units of h
   double spacing_ = 0.0;                 // set_spacing()
   double stable_step_ = 0.0, widest_step_ = 0.0;
-  long rhs_evals_ = 0;
+  long rhs_evals_ = 0, rhs_calls_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
   ViscousOperator* record_ = nullptr;  // set during rhs_explicit
   // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
