@@ -18,24 +18,18 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
+#include "run_into.hpp"
 #include "support/files.hpp"
 #include "support/vtk_pieces.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
 namespace fs = std::filesystem;
+using sphmol::parallel::testing::run_into;
 
 namespace {
 
 std::string source(const std::string& path) { return std::string(SPHMOL_SOURCE_DIR) + "/" + path; }
-
-nlohmann::json run_into(const Config& c, const RunPartitioner* partitioner, const fs::path& dir) {
-  RunOptions opt;
-  opt.write_files = true;
-  opt.output_dir = dir.string();
-  opt.partitioner = partitioner;
-  return run_case(c, opt);
-}
 
 // The files a run wrote whose names start with `prefix`.
 std::vector<std::string> files_named(const nlohmann::json& summary, const std::string& prefix) {
