@@ -17,22 +17,16 @@
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
+#include "run_into.hpp"
 #include "short_shock_tube.hpp"
 #include "support/vtk_pieces.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
 namespace fs = std::filesystem;
+using sphmol::parallel::testing::run_into;
 
 namespace {
-
-nlohmann::json run_into(const Config& c, const RunPartitioner* partitioner, const fs::path& dir) {
-  RunOptions opt;
-  opt.write_files = true;
-  opt.output_dir = dir.string();
-  opt.partitioner = partitioner;
-  return run_case(c, opt);
-}
 
 // Which groups the serial run wrote files of (known on rank 0).
 struct Groups {

@@ -76,6 +76,22 @@ std::vector<std::byte> Communicator::all_gather_v_bytes(const void* v, std::size
   return out;
 }
 
+std::vector<std::byte> Communicator::gather_v_bytes(const void* v, std::size_t bytes, int root) const {
+  const int n = mpi_count(bytes, "gather_v");
+  std::vector<int> counts(static_cast<std::size_t>(size_)), displ(static_cast<std::size_t>(size_));
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm_);
+  std::size_t total = 0;
+  if (rank_ == root)
+    for (int r = 0; r < size_; ++r) {
+      displ[r] = mpi_count(total, "gather_v");
+      total += static_cast<std::size_t>(counts[r]);
+    }
+  mpi_count(total, "gather_v");
+  std::vector<std::byte> out(total);
+  MPI_Gatherv(v, n, MPI_BYTE, out.data(), counts.data(), displ.data(), MPI_BYTE, root, comm_);
+  return out;
+}
+
 std::vector<std::byte> Communicator::all_to_all_v(const std::vector<std::vector<std::byte>>& send,
                                                   std::vector<std::size_t>& from) const {
   if (send.size() != static_cast<std::size_t>(size_))

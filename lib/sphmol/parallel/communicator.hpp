@@ -46,6 +46,17 @@ class Communicator {
     return out;
   }
 
+  // Every rank's vector, concatenated in rank order, on rank `root` only (empty elsewhere): what
+  // only one rank reads, without a copy of the whole on every rank.
+  template <class T>
+  std::vector<T> gather_v(const std::vector<T>& v, int root = 0) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const std::vector<std::byte> b = gather_v_bytes(v.data(), v.size() * sizeof(T), root);
+    std::vector<T> out(b.size() / sizeof(T));
+    if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
+    return out;
+  }
+
   // Personalised all-to-all of bytes: send[r] goes to rank r; returns what every rank sent here,
   // concatenated in rank order, with from[r] the number of bytes that came from rank r.
   std::vector<std::byte> all_to_all_v(const std::vector<std::vector<std::byte>>& send, std::vector<std::size_t>& from) const;
@@ -53,6 +64,7 @@ class Communicator {
  private:
   void all_gather_bytes(const void* v, std::size_t bytes, void* out) const;
   std::vector<std::byte> all_gather_v_bytes(const void* v, std::size_t bytes) const;
+  std::vector<std::byte> gather_v_bytes(const void* v, std::size_t bytes, int root) const;
 
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;

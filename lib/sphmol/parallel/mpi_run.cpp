@@ -4,12 +4,14 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "sphmol/boundary/ghost_particles.hpp"
 #include "sphmol/parallel/communicator_reduction.hpp"
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
+#include "sphmol/parallel/whole_fields.hpp"
 #include "sphmol/io/double_codec.hpp"
 
 namespace sphmol::parallel {
@@ -26,7 +28,7 @@ class MpiRun final : public PartitionedRun<D> {
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
          double t0, double tolerance, double rebalance_threshold)
       : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), t0_(t0),
-        whole_terms_(whole.active_terms()) {}
+        whole_(&whole), whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
@@ -44,8 +46,12 @@ class MpiRun final : public PartitionedRun<D> {
     if (health_) sys_.gather(health_->last_good_state().data(), whole);
   }
   int largest_signal(int signal) override { return comm_.max(signal); }
+  void whole_fields(double t, SphSystem<D>& whole) override {
+    refresh(t);
+    gather_whole_fields(comm_, sys_, comm_.rank() == 0 ? &whole : nullptr);
+  }
   OwnedPiece<D> owned_piece(double t) override {
-    sys_.refresh_local(t, y_.data());
+    refresh(t);
     OwnedPiece<D> p;
     p.system = &sys_.local_system();
     p.y = sys_.local_state().data();
@@ -166,6 +172,15 @@ class MpiRun final : public PartitionedRun<D> {
   double search_seconds() const override { return sys_.stats().search_seconds; }
   long neighbor_rebuilds() const override { return sys_.stats().rebuilds; }
 
+  // The local system's fields at (t, y_): once per output time, for the whole system's fields and
+  // the VTK pieces alike. The state is the same while the evaluations and the share are.
+  void refresh(double t) {
+    const auto key = std::make_tuple(t, sys_.rhs_evaluations(), sys_.stats().repartitions, sys_.stats().plans);
+    if (refreshed_ && *refreshed_ == key) return;
+    sys_.refresh_local(t, y_.data());
+    refreshed_ = std::make_tuple(t, sys_.rhs_evaluations(), sys_.stats().repartitions, sys_.stats().plans);
+  }
+
   nlohmann::json describe() const override {
     const auto s = sys_.stats();
     const auto owned = comm_.all_gather(static_cast<std::uint64_t>(sys_.owned().size()));
@@ -177,12 +192,18 @@ class MpiRun final : public PartitionedRun<D> {
     const auto pairs = comm_.all_gather(own_pairs);
     const auto redundant = comm_.all_gather(halo_pairs);
     // Terms appended to the whole system other than by add_monitor (no shipped case does) are not in
-    // the local systems: they see only the evaluations at output times, on rank 0.
+    // the local systems, and the whole system is not evaluated: they do not run over ranks.
     const auto local = sys_.active_terms();
     std::vector<std::string> output_only;
     for (const auto& t : whole_terms_)
       if (std::find(local.begin(), local.end(), t) == local.end()) output_only.push_back(t);
-    return {{"terms_at_output_times_only", output_only},
+    // The whole system is never evaluated over ranks (its fields at output times are the ranks'):
+    // both counts are 0, summed over the ranks.
+    const auto whole_evaluations = comm_.sum(static_cast<std::uint64_t>(whole_->evaluations_including_refreshes()));
+    const auto whole_rebuilds = comm_.sum(static_cast<std::uint64_t>(whole_->pair_list().rebuilds()));
+    return {{"terms_not_run", output_only},
+            {"whole_scene_evaluations", whole_evaluations},
+            {"whole_scene_neighbour_rebuilds", whole_rebuilds},
             {"ranks", comm_.size()},
             {"decomposition", "recursive coordinate bisection by pair count (Zoltan)"},
             {"load_imbalance", s.imbalance},
@@ -199,8 +220,8 @@ class MpiRun final : public PartitionedRun<D> {
             {"verlet_pairs_halo_rows", redundant},
             {"exchange_seconds", exchange},
             {"rhs_seconds", rhs},
-            {"output", "each rank writes its own particles' VTK pieces; the whole state is gathered on rank 0, which "
-                       "measures and writes every other file"}};
+            {"output", "each rank writes its own particles' VTK pieces; the whole state and the fields of the ranks' own "
+                       "particles are gathered on rank 0, which measures and writes every other file"}};
   }
 
  private:
@@ -209,8 +230,10 @@ class MpiRun final : public PartitionedRun<D> {
   std::vector<double> y_;
   double t0_;
   std::optional<DistributedHealthCheck<D>> health_;  // from start_health_check()
+  const SphSystem<D>* whole_;  // the scene as every rank builds it (never evaluated here)
   std::vector<std::string> whole_terms_;
   long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
+  std::optional<std::tuple<double, long, long, long>> refreshed_;  // refresh(): (t, evaluations, repartitions, plans)
 };
 
 // What the distributed system does not support yet: a ConfigError naming the keys, on every rank.

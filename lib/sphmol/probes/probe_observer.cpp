@@ -283,20 +283,25 @@ void ProbeObserver<D>::at_output(const SphSystem<D>& sys, const double* y, doubl
 }
 
 template <int D>
-void ProbeObserver<D>::at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+std::vector<std::size_t> ProbeObserver<D>::due(double t) {
   std::vector<std::size_t> which;
   for (std::size_t k = 0; k < series_.size(); ++k) {
     Series& s = series_[k];
     if (!s.cfg.every) continue;
     // The loop stops exactly on the sample time; a sample passed over (none should be) is not made up.
-    bool due = false;
+    bool is_due = false;
     while (sample_time(s, s.next_k) <= t_end_ && sample_time(s, s.next_k) <= t + 1e-12 * *s.cfg.every) {
-      due = true;
+      is_due = true;
       ++s.next_k;
     }
-    if (due) which.push_back(k);
+    if (is_due) which.push_back(k);
   }
-  sample(which, sys, y, t);
+  return which;
+}
+
+template <int D>
+void ProbeObserver<D>::at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+  sample(due(t), sys, y, t);
   if (now_seconds() - last_flush_ >= kFlushSeconds) flush(out);
 }
 

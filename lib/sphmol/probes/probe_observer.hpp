@@ -28,6 +28,7 @@ class ProbeObserver final : public OutputObserver<D> {
   void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   double next_time() const override;
   void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  void pass_time(double t) override { due(t); }
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
@@ -46,6 +47,8 @@ class ProbeObserver final : public OutputObserver<D> {
     bool dirty = false;                    // rows not yet in the file
   };
   double sample_time(const Series& s, long k) const;
+  // The `every` series with a sample time at t (within round-off), moved past it.
+  std::vector<std::size_t> due(double t);
   void sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t);
   void flush(const OutputSink& out);
 

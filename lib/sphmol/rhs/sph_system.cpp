@@ -31,17 +31,11 @@ SphSystem<D>::SphSystem(Particles<D> particles, Domain<D> domain, double h, std:
   ws_.domain = &domain_;
   ws_.h = h;
   ws_.W0 = kernel_->value_at_zero(h);
-  for (int d = 0; d < D; ++d) {
-    ws_.x[d].assign(ws_.n, 0.0);
-    ws_.v[d] = particles_.v[d];  // wall velocities stay as prescribed; fluid entries are overwritten
-  }
-  ws_.rho = particles_.rho;  // walls keep their rest density
-  ws_.p.assign(ws_.n, 0.0);
-  ws_.c.assign(ws_.n, 0.0);
+  // e and h are the scene's (initial_state() and a run over ranks read them before any evaluation);
+  // the evaluation's own arrays are allocated by its first evaluation (allocate_workspace).
   ws_.e.assign(ws_.n, 0.0);
   ws_.hs.assign(ws_.n, h);
   support_ = kernel_->support();
-  for (auto& s : ws_.strain) s.assign(ws_.n, 0.0);
   moving_walls_ = std::any_of(particles_.motion.begin(), particles_.motion.end(), [](std::int32_t k) { return k >= 0; });
   if (particles_.has_turning_walls())
     for (int d = 0; d < D; ++d) normal_now_[d] = particles_.wall_normal[d];
@@ -59,8 +53,29 @@ void SphSystem<D>::configure_fields(const StateFields& fields, std::vector<doubl
   }
   if (fields.wall_density) layout_.n_wall_density = n_base_ - particles_.n_fluid;
   ws_.n_wall_density = layout_.n_wall_density;
-  h_ref_ = ws_.hs;
-  rho_ref_ = particles_.rho;
+  // The references of a variable h only (h(0) for the state's h and for h from the density).
+  if (fields.smoothing_length != SmoothingLengthMode::constant) h_ref_ = ws_.hs;
+  if (fields.smoothing_length == SmoothingLengthMode::density) rho_ref_ = particles_.rho;
+}
+
+template <int D>
+void SphSystem<D>::allocate_fields() {
+  if (!ws_.rho.empty()) return;
+  ws_.rho = particles_.rho;  // walls keep their rest density
+  ws_.p.assign(n_base_, 0.0);
+  ws_.c.assign(n_base_, 0.0);
+}
+
+template <int D>
+void SphSystem<D>::allocate_workspace() {
+  if (workspace_allocated_) return;
+  allocate_fields();
+  for (int d = 0; d < D; ++d) {
+    ws_.x[d].assign(n_base_, 0.0);
+    ws_.v[d] = particles_.v[d];  // wall velocities stay as prescribed; fluid entries are overwritten
+  }
+  for (auto& s : ws_.strain) s.assign(n_base_, 0.0);
+  workspace_allocated_ = true;
 }
 
 template <int D>
@@ -77,7 +92,7 @@ std::vector<double> SphSystem<D>::initial_state() const {
   // Energy and h(0) live in workspace order (reordering); back to state order.
   std::vector<double> e_tmp, h_tmp;
   const auto& e0 = state_order(ws_.e, e_tmp);
-  const auto& h0 = state_order(h_ref_, h_tmp);
+  const auto& h0 = layout_.has_smoothing_length ? state_order(h_ref_, h_tmp) : h_tmp;
   for (int d = 0; d < D; ++d)
     for (std::size_t i = 0; i < n; ++i) {
       y[layout_.position(d) + i] = particles_.x[d][i];
@@ -177,6 +192,8 @@ std::size_t SphSystem<D>::active_pairs() const {
 template <int D>
 void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
   ++rhs_evals_;
+  ++rhs_calls_;
+  allocate_workspace();
   const double t_start = omp_get_wtime();
   ws_.t = t;
   const std::size_t nf = layout_.n, nb = n_base_;
@@ -477,6 +494,25 @@ class SetDuring {
 };
 
 }  // namespace
+
+template <int D>
+void SphSystem<D>::set_fields(const ParticleFieldValues& f) {
+  const std::size_t nb = n_base_;
+  for (const auto* a : {&f.density, &f.pressure, &f.sound_speed, &f.energy, &f.smoothing_length})
+    if (a->size() != nb) throw std::invalid_argument("SphSystem::set_fields: needs one value per particle of the scene");
+  // Workspace index k holds particle perm_[k] when reordered.
+  allocate_fields();
+  const auto put = [&](const std::vector<double>& from, std::vector<double>& to) {
+    for (std::size_t k = 0; k < nb; ++k) to[k] = from[perm_.empty() ? k : perm_[k]];
+  };
+  put(f.density, ws_.rho);
+  put(f.pressure, ws_.p);
+  put(f.sound_speed, ws_.c);
+  put(f.energy, ws_.e);
+  put(f.smoothing_length, ws_.hs);
+  if (fields_.smoothing_length != SmoothingLengthMode::constant)
+    if (nb > 0) pairs_->set_support(support_ * *std::max_element(ws_.hs.begin(), ws_.hs.begin() + static_cast<std::ptrdiff_t>(nb)));
+}
 
 template <int D>
 void SphSystem<D>::rhs_explicit(double t, const double* y, double* fe, ViscousOperator& op) {

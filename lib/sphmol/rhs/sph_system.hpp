@@ -15,6 +15,7 @@
 #include "sphmol/neighbors/verlet_list.hpp"
 #include "sphmol/rhs/kernel_pass.hpp"
 #include "sphmol/rhs/monitor.hpp"
+#include "sphmol/rhs/particle_field_values.hpp"
 #include "sphmol/rhs/particle_generator.hpp"
 #include "sphmol/rhs/split_state.hpp"
 #include "sphmol/rhs/state_fields.hpp"
@@ -103,6 +104,15 @@ class SphSystem final : public OdeSystem, public ImexSystem {
     rhs_seconds_ = seconds;
     search_seconds_ = search;
   }
+  // The per-particle fields of a state evaluated elsewhere (the ranks' own particles in a run over
+  // ranks), set without an evaluation: what density(), pressure(), sound_speed(), energy() and
+  // smoothing_lengths() return afterwards for the scene's own particles. Every array holds one value
+  // per particle of the scene in state order. With a variable h the pair list's radius follows the
+  // largest h, as an evaluation sets it, so that the summary reports the serial radius.
+  void set_fields(const ParticleFieldValues& f);
+  // Evaluations of every kind since construction: the integrator's and refresh_fields' (which
+  // rhs_evaluations() leaves out). A run over ranks checks with it that the whole scene is not evaluated.
+  long evaluations_including_refreshes() const { return rhs_calls_; }
   // Wall time spent inside rhs() since construction, and the part of it that went to the neighbour
   // list (staleness test, rebuilds, reordering): the run summary splits its cost with these.
   double rhs_seconds() const { return rhs_seconds_; }
@@ -154,8 +164,13 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // The scene's own particles (fluid + wall); generated ones follow them in the arrays below.
   std::size_t base_particles() const { return n_base_; }
   // Positions and velocities of all particles, generated ones included, at the most recent evaluation.
-  const std::array<std::vector<double>, D>& positions() const { return ws_.x; }
-  const std::array<std::vector<double>, D>& velocities() const { return ws_.v; }
+  // (Before the first evaluation: zero positions, the particles' own velocities.)
+  const std::array<std::vector<double>, D>& positions() const {
+    if (!workspace_allocated_)
+      for (int d = 0; d < D; ++d) x_out_[d].assign(n_base_, 0.0);
+    return workspace_allocated_ ? ws_.x : x_out_;
+  }
+  const std::array<std::vector<double>, D>& velocities() const { return workspace_allocated_ ? ws_.v : particles_.v; }
 
   // The largest speed of any wall (wall particles over all time, and generated walls): moving walls
   // are the scene's energy input besides the body force (run/health_limits.hpp).
@@ -178,18 +193,29 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   const VerletList<D>& pair_list() const { return *pairs_; }
   // Pairs inside the kernel support at the most recent evaluation (directed: each pair twice).
   std::size_t active_pairs() const;
-  // The density and pressure of the most recent evaluation (all particles, in state order).
-  const std::vector<double>& density() const { return state_order(ws_.rho, rho_out_); }
-  const std::vector<double>& pressure() const { return state_order(ws_.p, p_out_); }
-  const std::vector<double>& sound_speed() const { return state_order(ws_.c, c_out_); }
+  // The density and pressure of the most recent evaluation (all particles, in state order); before
+  // any evaluation (or set_fields) the particles' own densities, zero pressure and sound speed.
+  const std::vector<double>& density() const { return ws_.rho.empty() ? particles_.rho : state_order(ws_.rho, rho_out_); }
+  const std::vector<double>& pressure() const { return ws_.p.empty() ? zeros(p_out_) : state_order(ws_.p, p_out_); }
+  const std::vector<double>& sound_speed() const { return ws_.c.empty() ? zeros(c_out_) : state_order(ws_.c, c_out_); }
   const std::vector<double>& energy() const { return state_order(ws_.e, e_out_); }
   const std::vector<double>& smoothing_lengths() const { return state_order(ws_.hs, hs_out_); }
   // The density of the most recent evaluation in workspace order (fluid first, then walls and
   // generated particles): for tests that do not depend on the order, without density()'s permutation.
-  const std::vector<double>& workspace_density() const { return ws_.rho; }
+  const std::vector<double>& workspace_density() const { return ws_.rho.empty() ? particles_.rho : ws_.rho; }
 
  private:
   void reorder_workspace();
+  // The evaluation's per-particle arrays (positions, velocities, density, pressure, sound speed,
+  // strain rate), made by the first evaluation: a system that is never evaluated (the whole scene
+  // each rank of a run over ranks holds) does not carry them. allocate_fields(): density, pressure
+  // and sound speed only (set_fields).
+  void allocate_workspace();
+  void allocate_fields();
+  const std::vector<double>& zeros(std::vector<double>& out) const {
+    out.assign(n_base_, 0.0);
+    return out;
+  }
   const std::vector<double>& state_order(const std::vector<double>& w, std::vector<double>& out) const;
 
   Particles<D> particles_;
@@ -208,7 +234,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   double support_ = 0.0;                 // kernel support in units of h
   double spacing_ = 0.0;                 // set_spacing()
   double stable_step_ = 0.0, widest_step_ = 0.0;
-  long rhs_evals_ = 0;
+  long rhs_evals_ = 0, rhs_calls_ = 0;
   double rhs_seconds_ = 0.0, search_seconds_ = 0.0;
   ViscousOperator* record_ = nullptr;  // set during rhs_explicit
   SplitState<D> split_;                // set_split_state()
@@ -228,6 +254,8 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   typename Particles<D>::Frames frames_;           // each motion's frame at the evaluation's time
   std::array<std::vector<double>, D> normal_now_;  // wall normals at that time (workspace order); empty unless walls turn
   mutable std::vector<double> rho_out_, p_out_, c_out_, e_out_, hs_out_;
+  bool workspace_allocated_ = false;               // allocate_workspace()
+  mutable std::array<std::vector<double>, D> x_out_;  // positions() before the first evaluation
 };
 
 extern template class SphSystem<1>;

@@ -93,6 +93,10 @@ class OutputObserver {
   // (infinity: none); the run loop stops there too and calls at_time (after refresh_fields).
   virtual double next_time() const { return std::numeric_limits<double>::infinity(); }
   virtual void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // Over several ranks, on the ranks other than 0 (which alone calls at_time): the sampling times
+  // up to t pass as at_time passes them, without a sample, so that next_time() and with it the
+  // times the run stops at stay the same on every rank.
+  virtual void pass_time(double t) {}
   // Plots made after the run (next to the case's), and what its files hold (the summary's csv_files).
   virtual std::vector<PlotScript> plots(const OutputSink& out) const { return {}; }
   virtual void annotate(nlohmann::json& summary) const {}

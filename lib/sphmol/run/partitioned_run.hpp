@@ -4,9 +4,10 @@
 // library stays MPI-free. The implementation lives in lib/sphmol/parallel (parallel/mpi_run.hpp).
 //
 // Every rank builds the whole scene; the integrator then advances each rank's own part of the
-// state. At output times the whole state is gathered, and the root rank measures, writes the
-// observers' files and the summary with the whole system, as a serial run does; observers that
-// write per-rank files (VTK pieces) get each rank's own particles instead (owned_piece()).
+// state. At output times the whole state is gathered with the fields of each rank's own particles
+// (whole_fields()), and the root rank measures, writes the observers' files and the summary with
+// the whole system, as a serial run does, without evaluating it; observers that write per-rank
+// files (VTK pieces) get each rank's own particles instead (owned_piece()).
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -31,6 +32,10 @@ class PartitionedRun {
   virtual void gather(std::vector<double>& whole) = 0;
   // Collective: the latest evaluation's density of every fluid particle, in the serial order.
   virtual std::vector<double> whole_fluid_density() = 0;
+  // Collective, at an output time t: the per-particle fields of the whole state at (t, state())
+  // set on `whole` on the root rank (SphSystem::set_fields), from the ranks' evaluations of their
+  // own particles: the whole system is never evaluated and never builds a neighbour list.
+  virtual void whole_fields(double t, SphSystem<D>& whole) = 0;
   // Collective, at an output time t: this rank's own particles with their fields at (t, state()),
   // for the observers that write per-rank files. Valid until the next call on the run.
   virtual OwnedPiece<D> owned_piece(double t) = 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -148,6 +149,16 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   const OutputSink own = root ? out : OutputSink{out.directory, opt.write_files};
   const double t_first = t;
   std::vector<double> scratch;
+  // The per-particle fields (density, pressure, ...) of the whole state y at t, of this very state
+  // and not of the integrator's last stage: the case's measurement and the observers read them.
+  // Serially an evaluation; over ranks (collective) the fields of each rank's own particles,
+  // gathered on the root: no rank evaluates the whole scene or builds its neighbour list.
+  const auto whole_fields = [&] {
+    if (part)
+      part->whole_fields(t, *sys);
+    else
+      sys->refresh_fields(t, y.data(), scratch);
+  };
 
   const auto wall_now = [&] {
     return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -220,10 +231,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       if (o->next_time() <= t) {
         if (!refreshed) {
           if (part) part->gather(y);  // every rank has the same observers: all of them gather
-          if (root) sys->refresh_fields(t, y.data(), scratch);
+          whole_fields();
         }
         refreshed = true;
-        if (root) o->at_time(*sys, y.data(), t, out);
+        if (root)
+          o->at_time(*sys, y.data(), t, out);
+        else
+          o->pass_time(t);
       }
   };
   // Observers with per-rank files (VTK pieces): every rank writes its own particles' part.
@@ -240,8 +254,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // The initial state: the observers (VTK files, probes) write t = 0 too; the case measures from the
   // first output time on. A restart continues from its checkpoint, which has them already.
   if (!restart) {
+    whole_fields();
     if (root) {
-      sys->refresh_fields(t, y.data(), scratch);
       for (auto& o : observers)
         if (on_root(o)) o->at_output(*sys, y.data(), t, out);
     }
@@ -262,15 +276,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     // An output or checkpoint time that was reached is handled even if a signal came in meanwhile,
     // so the interrupt checkpoint never misses a measurement at its own time.
     if (t >= times[next_out]) {
-      // Over ranks the case's monitors have watched each rank's own particles: combined for its measurement.
-      if (part) {
-        part->gather(y);
-        part->combine_monitors();
-      }
+      // Over ranks the case's monitors have watched each rank's own particles (the fields' evaluation
+      // at this state included, as the serial run's refresh is watched): combined for its measurement.
+      if (part) part->gather(y);
+      whole_fields();
+      if (part) part->combine_monitors();
       if (root) {
-        // The per-particle fields (density, pressure) of this very state, not of the integrator's
-        // last stage: both the case's measurement and the observers read them.
-        sys->refresh_fields(t, y.data(), scratch);
         nlohmann::json m = c.measure(*sys, y.data(), t, out);
         for (auto& o : observers)
           if (on_root(o)) o->at_output(*sys, y.data(), t, out);
@@ -358,16 +369,25 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["primary_error_kind"] = c.has_exact_reference() ? "exact_reference" : "quantity";
   j["conservation"] = conservation.to_json(*sys);
   j["reference"] = c.reference();
+  // Collective: on every rank, before the summary's entries that read it.
+  const nlohmann::json parallel = part ? part->describe() : nlohmann::json();
+  // The Verlet pairs: of the whole list serially, of the ranks' own rows over ranks (the whole
+  // system builds no list there).
+  std::uint64_t verlet_pairs = sys->pair_list().pairs().pairs();
+  if (part) {
+    verlet_pairs = 0;
+    for (const auto& p : parallel["verlet_pairs_owned_rows"]) verlet_pairs += p.get<std::uint64_t>();
+  }
   j["discretization"] = {{"kernel", std::string(sys->kernel_name())},
                          {"smoothing_length", sys->smoothing_length()},
                          {"neighbor_search", std::string(sys->pair_list().search_name())},
                          {"pair_list_radius", sys->pair_list().list_radius()},
-                         {"verlet_pairs", sys->pair_list().pairs().pairs()},
+                         {"verlet_pairs", verlet_pairs},
                          {"pair_passes", sys->pair_passes().empty() ? nlohmann::json("stored") : nlohmann::json(sys->pair_passes())}};
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
   c.annotate(j);
   for (const auto& o : observers) o->annotate(j);
-  if (part) j["parallel"] = part->describe();
+  if (part) j["parallel"] = parallel;
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
   // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
