@@ -14,7 +14,7 @@ fail() {
 }
 
 # Starts the dam break on 2 ranks into $work/NAME (further mpirun options after NAME) and waits for
-# its first checkpoint; sets pid (mpirun's).
+# a checkpoint; sets pid (mpirun's).
 start() {
   local name=$1
   shift
@@ -24,11 +24,12 @@ start() {
     --output "$work/$name" >"$work/$name.out" 2>&1 &
   pid=$!
   for _ in $(seq 600); do
-    [ -e "$work/$name/checkpoint-0.005/checkpoint.json" ] && return
-    kill -0 "$pid" 2>/dev/null || fail "$name: ended before its first checkpoint: $(cat "$work/$name.out")"
+    # Any checkpoint: the run keeps only its latest ones, and a fast run may have pruned the first.
+    compgen -G "$work/$name/checkpoint-*/checkpoint.json" >/dev/null && return
+    kill -0 "$pid" 2>/dev/null || fail "$name: ended before a checkpoint: $(cat "$work/$name.out")"
     sleep 0.1
   done
-  fail "$name: no first checkpoint after 60 s"
+  fail "$name: no checkpoint after 60 s"
 }
 
 # Waits (at most 60 s) for mpirun to end and checks its exit code, the summary and the checkpoint.

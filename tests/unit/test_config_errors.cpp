@@ -166,7 +166,7 @@ TEST_CASE("config errors: enumerations list the allowed values", "[config]") {
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  density: contiguity")),
              StartsWith("case.yaml:14: discretization.density: unknown value 'contiguity' (did you mean 'continuity'? allowed: summation, normalised_summation, continuity)"));
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  momentum: asymmetric")),
-             StartsWith("case.yaml:14: discretization.momentum: unknown value 'asymmetric' (allowed: symmetric_117, symmetric_116)"));
+             StartsWith("case.yaml:14: discretization.momentum: unknown value 'asymmetric' (allowed: symmetric_117, symmetric_116, integral_approach)"));
   CHECK_THAT(error_of(with("particles_across: 20", "particles_across: 20\n  boundary: ghost")),
              StartsWith("case.yaml:14: discretization.boundary: 'ghost' is not available for case 'couette'"));
   CHECK(error_of(with("particles_across: 20", "particles_across: 20\n  neighbor_search: cells")) ==
