@@ -51,15 +51,15 @@ TEST_CASE("symmetric pairs: the dam break's state equals the full rows' bit for 
 }
 
 TEST_CASE("symmetric pairs: the same with the smooth viscosity switch", "[integration][fused]") {
-  // The records evaluate the switch four pairs at a time (core/lane_exp.hpp), the full rows one pair
-  // at a time. The default band and a wide one that holds most pairs (so most groups of four evaluate
-  // S, some only in part of their lanes).
+  // The records evaluate the switch four pairs at a time (core/polynomial_step.hpp), the full rows one
+  // pair at a time. The default band and a wide one that holds most pairs (so most groups of four
+  // evaluate P, some only in part of their lanes).
   for (const char* band : {"discretization.artificial_viscosity.switch_width=1e-4",
                            "discretization.artificial_viscosity.switch_width=0.3"}) {
     INFO(band);
     const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                  {"discretization.spacing=0.04", "time.t_end=1.0", "discretization.artificial_viscosity.switch=smooth",
-                                  band, "discretization.artificial_viscosity.switch_offset=0.25"});
+                                  band, "discretization.artificial_viscosity.switch_offset=0.3"});
     check_same<2>(c, 300, 3);
   }
 }

@@ -2,7 +2,7 @@
 // order down to round-off. A kink of f (a C^m kernel edge, min(v_ij . x_ij, 0) in the artificial
 // viscosity, max(rho_wall, rho0) in the dynamic walls' EOS), crossed a number of times that does not
 // depend on the step, caps every method at order m + 1 (a kink: 2); the smooth forms of
-// core/smooth_step.hpp remove the caps. A jump of f (a kernel cut off with W != 0 or dW/dr != 0 at its
+// core/smooth_step.hpp and core/polynomial_step.hpp remove the caps (the latter's C^6 above Verner's 6). A jump of f (a kernel cut off with W != 0 or dW/dr != 0 at its
 // support: the 1-D tube's lattice pairs sit exactly on it at h = dx, and round-off decides whether
 // they count) leaves a time error that does not shrink with the step: before the kernels were made
 // C1 at the support, every level of this shock tube had an error of about 2e-4, for every method.
@@ -117,21 +117,25 @@ TEST_CASE("1-D shock tube as shipped (smooth viscosity switch): Verner 8(5)6 to 
   // Monaghan's viscosity acts on approaching pairs only. Through min(v_ij . x_ij, 0) (switch: sharp) f
   // has a kink where a pair turns and Verner is of order 2: 7.1e-7, 2.2e-7, 6.4e-8, 1.5e-8 from dt = 1e-3.
   // The shipped tubes take the smooth switch over a band their step resolves (switch_width 0.3,
-  // switch_offset 0.25: [-0.225, 0.075] cbar_ij h_ij): 3.5e-7, 7.2e-9, 6.1e-10, 1.6e-11 (orders 5.6, 3.5,
-  // 5.2; least squares 4.7), then round-off (4.6e-13 at dt = 6.25e-5). With the default band (1e-4) it
-  // is crossed within a fraction of a step in the shock, and the order stays 2.
+  // switch_offset 0.3: [-0.21, 0.09] cbar_ij h_ij): 2.6e-7, 8.2e-9, 4.2e-10, 9.4e-13 (orders 5.0, 4.3,
+  // 8.8; least squares 5.9), then round-off; with the exponential step of core/smooth_step.hpp and
+  // switch_offset 0.25, 3.5e-7, 7.2e-9, 6.1e-10, 1.6e-11 (5.6, 3.5, 5.2; 4.7). With the default band
+  // (1e-4) it is crossed within a fraction of a step in the shock, and the order stays 2.
   const auto j = time_study("tube_shipped_av", "shock_tube_1d.yaml", kTube, "arkode_erk:ARKODE_VERNER_8_5_6", 1e-3, 4);
   check_series(j, "arkode_erk:ARKODE_VERNER_8_5_6", 3.0, 1e-10, 4.5);
 }
 
-TEST_CASE("2-D shock tube as shipped (smooth viscosity switch): Verner 8(5)6 not capped at order 2",
+TEST_CASE("2-D shock tube as shipped (smooth viscosity switch): Verner 8(5)6 near order 5 from the first level",
           "[integration][time_order]") {
   // The Hernquist-Katz tube in 2D (160 x 5 particles, spacing 5e-3, free-slip mirror walls along the
   // tube), t_end = 0.05, dt = 1e-3 / 2^k. With switch: sharp Verner is of order 2 (6.7e-7, 1.5e-7,
-  // 4.5e-8, 1.0e-8); as shipped 5.8e-8, 6.0e-9, 3.2e-10, 5.7e-12 (orders 3.3, 4.2, 5.8), then
-  // round-off (1.2e-13 at dt = 6.25e-5). Three levels here (a minute of CPU with four).
+  // 4.5e-8, 1.0e-8). The switch's step sets the orders above round-off: with the C-infinity exponential
+  // step of core/smooth_step.hpp (switch_offset 0.25) 5.8e-8, 6.0e-9, 3.2e-10, 5.7e-12 (orders 3.3,
+  // 4.2, 5.8), which fails here; with the C^6 polynomial step of core/polynomial_step.hpp as shipped
+  // (switch_offset 0.3) 7.9e-8, 2.6e-9, 7.1e-11, 7.6e-13 (orders 4.9, 5.2, 6.5), then round-off
+  // (1.3e-13 at dt = 6.25e-5). Three levels here (a minute of CPU with four).
   const auto j = time_study("tube2d_shipped_av", "shock_tube.yaml", kTube, "arkode_erk:ARKODE_VERNER_8_5_6", 1e-3, 3);
-  check_series(j, "arkode_erk:ARKODE_VERNER_8_5_6", 3.0, 1e-9, 3.5);
+  check_series(j, "arkode_erk:ARKODE_VERNER_8_5_6", 4.5, 2e-10, 4.8);
 }
 
 TEST_CASE("short dam break: leapfrog order 2 and Bogacki-Shampine order 3", "[integration][time_order]") {

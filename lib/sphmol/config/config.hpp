@@ -63,7 +63,7 @@ struct ArtificialViscosityConfig {
   double alpha = 1.0;  // >= 0
   double beta = 1.0;   // >= 0 (monaghan_1997: default 2, Price 2008)
   double eta = 0.1;    // eta / h_ij, > 0 (monaghan_1992 only)
-  // The approaching-pair switch min(v_ij.x_ij, 0): "smooth" (C-infinity, band switch_width cbar h_ij;
+  // The approaching-pair switch min(v_ij.x_ij, 0): "smooth" (C^6, band switch_width cbar h_ij;
   // physics/artificial_viscosity.hpp) or "sharp" (the default: the smooth switch all but switches
   // the viscosity off for pairs slower than its band, which a scene near rest relies on for damping).
   std::string switch_form = "sharp";

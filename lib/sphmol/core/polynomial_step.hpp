@@ -14,8 +14,9 @@
 // its derivatives stay small: max |P^(k)| / k! = 2.9, 6.6, 24, 56, 141, 287 for k = 1 ... 6 (m = 6),
 // against 2.0, 4.9, 18, 95, 643, 6.7e3, so a step resolves a crossing of its band at a coarser step
 // and Verner's order shows at larger errors (docs/verification.md, "A polynomial step"). The dynamic
-// walls' density floor uses it (smooth_max0, below); the viscosity switch and the Gaussian kernels'
-// taper keep the C-infinity step: with this one the Sod tubes leave their bounds (the same section).
+// walls' density floor (smooth_max0, below) and the viscosity switch (physics/artificial_viscosity.hpp,
+// with the shock tubes' band offset 0.3, P(0.3) = 0.062) use it; the Gaussian kernels' taper keeps
+// the C-infinity step: with this one the 2D Sod tube leaves its bounds (the same section).
 // Branch-free (the clamp is a min/max) multiplies and adds with no library call, so it vectorises where
 // the caller's loop does, and polynomial_step_lanes takes four lanes at once (AVX2), each the scalar's
 // number bit for bit (the build's -ffp-contract=off keeps the operations unfused in both).

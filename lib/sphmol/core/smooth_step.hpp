@@ -5,11 +5,11 @@
 // ((1 - t) - t) / (t (1 - t)). Every derivative of S vanishes at t = 0 and t = 1, so a switch or
 // cut-off built as x S(x / delta) is C-infinity where the plain min / cut-off has a kink: a fixed-step
 // integrator of order p then keeps order p across it (a kink, crossed a fixed number of times, caps
-// every method at order 2; docs/verification.md). The viscosity switch and the Gaussian kernels'
-// taper use it. Its derivatives grow faster than k!, so a band shows Verner's order only once a step
-// covers a small part of a crossing; the dynamic walls' density floor uses the C^6 polynomial step of
-// core/polynomial_step.hpp instead, and the switch and the taper keep this one, with which the shock
-// tubes' bands and bounds were measured (docs/verification.md, "A polynomial step").
+// every method at order 2; docs/verification.md). The Gaussian kernels' taper uses it. Its
+// derivatives grow faster than k!, so a band shows Verner's order only once a step covers a small
+// part of a crossing; the dynamic walls' density floor and the viscosity switch use the C^6 polynomial
+// step of core/polynomial_step.hpp instead, and the taper keeps this one: with P there the 2D Sod
+// tube leaves its bounds (docs/verification.md, "A polynomial step").
 // Branch-free (the clamp is a min/max, 1/0 = inf, and the exponential of core/lane_exp.hpp gives
 // exp(+inf) = inf and exp(-inf) < 1e-307, so S(0) = 0 and S(1) = 1 exactly) and with no library
 // call, so it vectorises where the caller's loop does, and smooth_step(V) takes four lanes at once

@@ -16,15 +16,18 @@
 //
 // The switch. Both forms act on approaching pairs only, through min(v_ij . x_ij, 0): a kink in f(t, y)
 // where a pair turns, which caps every fixed-step integrator at order 2 (docs/verification.md, "Time-
-// error floor"). With width > 0 it is the C-infinity min of core/smooth_step.hpp,
-//   min(vx, 0) -> vx S(offset - vx / delta),  delta = width cbar_ij h_ij,
+// error floor"). With width > 0 it is the C^6 min of core/polynomial_step.hpp's step P,
+//   min(vx, 0) -> vx P(offset - vx / delta),  delta = width cbar_ij h_ij,
 // equal to min(vx, 0) outside the band [-(1 - offset) delta, offset delta] and of the sign of vx in it.
+// C^6 lifts the cap to order 8, above Verner 8(5)6's 6, and P's derivatives stay small where those of
+// the C-infinity step of core/smooth_step.hpp grow faster than k!, so Verner's order shows at a coarser
+// step (docs/verification.md, "A polynomial step").
 // offset = 0 (the default) puts the band on the approaching side: receding pairs still get nothing,
 // Pi_ij >= 0 and the heating >= 0 as before, but pairs approaching slower than about delta / 3 get
 // little viscosity. offset > 0 moves a part of the band to the receding side, where pairs slower than
 // offset delta get Pi_ij < 0 (the heating m_j Pi_ij F_ij vx / 2 stays >= 0 while beta t_ij rhobar_ij
-// < alpha cbar_ij, t_ij below: sw there is at most offset delta S(offset)), and the approaching pairs
-// get more of Pi_ij; at offset = 1/4, S(1/4) = 0.065, a shock tube's expanding pairs get at most 6.5 %
+// < alpha cbar_ij, t_ij below: sw there is at most offset delta P(offset)), and the approaching pairs
+// get more of Pi_ij; at offset = 0.3, P(0.3) = 0.062, a shock tube's expanding pairs get at most 6.2 %
 // of the viscosity the same rate of compression would (docs/verification.md, "The shock tubes' switch").
 // delta is a velocity (width cbar_ij) times a length (h_ij): the band is |v_ij| <~ width cbar_ij h_ij /
 // |x_ij|, a fixed fraction of the sound speed at every resolution and velocity scale. width = 0 is the
@@ -33,18 +36,25 @@
 #include <cmath>
 #include <type_traits>
 
-#include "sphmol/core/smooth_step.hpp"
+#include "sphmol/core/polynomial_step.hpp"
 #include "sphmol/rhs/pair_term.hpp"
 
 namespace sphmol {
 
+// The switch's step, P of core/polynomial_step.hpp: the one function both the scalar switch below and
+// the vectorised pair loops of physics/weakly_compressible_row.hpp call.
+template <class V>
+[[gnu::always_inline]] inline V switch_step_lanes(V t) {
+  return polynomial_step_lanes(t);
+}
+
 // The switch of both Pi forms: min(vx, 0) for delta = 0, else the band [-(1 - offset) delta, offset delta]
 // (above). For a double or (AVX2) four lanes, each lane the scalar's number bit for bit (the pair loops
-// of physics/weakly_compressible_row.hpp). At offset = 0 it is smooth_min0(vx, delta): 0 - a and -a
-// differ only in the sign of a zero, which S reads as 0 either way.
+// of physics/weakly_compressible_row.hpp). At delta = 0 and vx = 0, t = 0/0 is NaN, which P reads as
+// t <= 0: sw = 0, min(vx, 0) with the sign of vx's zero.
 template <class V>
 [[gnu::always_inline]] inline V switched_vx_lanes(V vx, V delta, V offset) {
-  return vx * smooth_step_lanes(offset - vx / delta);
+  return vx * switch_step_lanes(offset - vx / delta);
 }
 inline double switched_vx(double vx, double delta, double offset) { return switched_vx_lanes(vx, delta, offset); }
 

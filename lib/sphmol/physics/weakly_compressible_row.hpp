@@ -179,7 +179,7 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
     double vi[D];
     for (int d = 0; d < D; ++d) vi[d] = pi.v[d];
     // The viscosity's switch: min(vx, 0), or its smooth form (physics/artificial_viscosity.hpp), whose
-    // exponential (core/lane_exp.hpp) is arithmetic with no call, so the loop vectorises either way;
+    // polynomial step (core/polynomial_step.hpp) is arithmetic with no call, so the loop vectorises either way;
     // chosen once per block.
     const auto pairs = [&]<bool Smooth>() {
       for (std::uint32_t k = 0; k < n; ++k) {
@@ -413,14 +413,14 @@ class WeaklyCompressibleRow final : public PairTermFor<D, WeaklyCompressibleRow<
         const V pr = two * (rhoj - ri) * f * voli;  // density_diffusion_pair(rho_j, ri, F, vol_i)
         // MonaghanPi::switched(sw, r2, hij, cbar, rhobar) with sw = min(vx, 0) (min_pd(0, vx) is
         // std::min(vx, 0.0), signed zeros and NaN included) or MonaghanPi::sw(vx, cbar, hij) =
-        // vx S(t), t = offset - vx / delta. Outside the band (t <= 0 or t >= 1) S(t) is 0 or 1 exactly
-        // and vx S(t) is min(vx, 0) bit for bit (signed zeros included), so a group with no pair in
-        // the band takes min(vx, 0) and skips S's exponential.
+        // vx P(t), t = offset - vx / delta. Outside the band (t <= 0 or t >= 1) P(t) is 0 or 1 exactly
+        // and vx P(t) is min(vx, 0) bit for bit (signed zeros included), so a group with no pair in
+        // the band takes min(vx, 0) and skips P's polynomial.
         const V cbar = half * (ci + cj), rhobar = half * (ri + rhoj);
         V sw = _mm256_min_pd(zero, vxk);
         if constexpr (Smooth) {
           const V t = offset - vxk / ((SameH ? width_hi : width * hij) * cbar);
-          if (!_mm256_testz_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, one, _CMP_LT_OQ))) sw = vxk * smooth_step_lanes(t);
+          if (!_mm256_testz_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, one, _CMP_LT_OQ))) sw = vxk * switch_step_lanes(t);
         }
         const V t = hij * sw / ((rr + eta2 * hij * hij) * rhobar);
         const V pij = (beta * t * rhobar - alpha * cbar) * t;
