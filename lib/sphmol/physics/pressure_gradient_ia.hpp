@@ -23,7 +23,7 @@ class PressureGradientIA final : public PairTermFor<D, PressureGradientIA<D>> {
   bool zero_beyond_support() const override { return C_->kernel == nullptr; }  // W(r, h_i) may reach past kappa h_ij
   void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
     const auto& m = w.particles->mass;
-        const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
+    const double pi = w.p[i] / (w.rho[i] * w.rho[i]);
     double a[D] = {};
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
