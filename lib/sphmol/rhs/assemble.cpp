@@ -234,14 +234,16 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   }
   if (av.enabled && !wc_row) {
     const SignalVelocityPi sv{av.alpha, av.beta, av.band_width(), av.band_offset()};
-    if (ia && signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, true, SignalVelocityPi>>(sv, ia_field));
-    else if (ia && signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, false, SignalVelocityPi>>(sv, ia_field));
-    else if (ia && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, true>>(monaghan, ia_field));
-    else if (ia) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, false>>(monaghan, ia_field));
-    else if (signal_velocity && disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true, SignalVelocityPi>>(sv));
-    else if (signal_velocity) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false, SignalVelocityPi>>(sv));
-    else if (disc.energy) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, true>>(monaghan));
-    else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, false>>(monaghan));
+    // The term for a Pi form and the energy flag, with the integral approach's gradients or the kernel's.
+    const auto add_viscosity = [&]<bool WithEnergy>(const auto& pi) {
+      using Pi = std::decay_t<decltype(pi)>;
+      if (ia) add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosityIA<D, WithEnergy, Pi>>(pi, ia_field));
+      else add("discretization.artificial_viscosity", std::make_unique<ArtificialViscosity<D, WithEnergy, Pi>>(pi));
+    };
+    if (signal_velocity && disc.energy) add_viscosity.template operator()<true>(sv);
+    else if (signal_velocity) add_viscosity.template operator()<false>(sv);
+    else if (disc.energy) add_viscosity.template operator()<true>(monaghan);
+    else add_viscosity.template operator()<false>(monaghan);
   }
   if (disc.artificial_conductivity.enabled && ia)
     add("discretization.artificial_conductivity", std::make_unique<ArtificialConductivityIA<D>>(disc.artificial_conductivity.alpha, ia_field));
