@@ -57,8 +57,10 @@ class Outflow {
 
   // Takes out the fluid outside the domain at (t, y): velocities zeroed in y, SphSystem::retire().
   // Returns whether any particle was taken out; the caller then restarts the integrator. Throws
-  // BlowUp once more than max_fraction of the fluid mass has left.
-  bool take_out(SphSystem<D>& sys, double* y, double t) {
+  // BlowUp once more than max_fraction of the fluid mass has left. at_start: the state the run
+  // starts from (a checkpoint's), whose particles outside left before it: counted apart, with no
+  // exit time of this run.
+  bool take_out(SphSystem<D>& sys, double* y, double t, bool at_start = false) {
     const std::vector<std::size_t> leaving = fluid_outside_domain(sys, y);
     if (leaving.empty()) return false;
     const auto& L = sys.layout();
@@ -68,7 +70,9 @@ class Outflow {
       mass_ += m[i];
     }
     sys.retire(leaving);
-    if (count_ == 0) {
+    if (at_start) {
+      at_start_ += leaving.size();
+    } else if (count_ == at_start_) {
       t_first_ = t;
       first_ = leaving.front();
     }
@@ -76,10 +80,10 @@ class Outflow {
     if (fraction() > max_fraction_) {
       char buf[320];
       std::snprintf(buf, sizeof buf,
-                    "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain since t = %g s, more "
-                    "than health.max_outflow_fraction = %g (a closed box losing fluid, or an open one losing that "
-                    "much, is not a sound run)",
-                    count_, fraction(), t_first_, max_fraction_);
+                    "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain, more than "
+                    "health.max_outflow_fraction = %g (a closed box losing fluid, or an open one losing that much, "
+                    "is not a sound run)",
+                    count_, fraction(), max_fraction_);
       throw BlowUp(t, static_cast<long>(leaving.front()), buf);
     }
     return true;
@@ -88,29 +92,39 @@ class Outflow {
   std::size_t count() const { return count_; }
   double fraction() const { return fluid_mass_ > 0.0 ? mass_ / fluid_mass_ : 0.0; }
   // The summary's "outflow" object.
+  // t_first and first_particle: the first exit during this run (null when none; a restart's
+  // particles out at its start are counted in at_start).
   nlohmann::json to_json() const {
+    const bool exit = count_ > at_start_;
     return {{"particles", count_},
+            {"at_start", at_start_},
             {"mass", mass_},
             {"mass_fraction", fraction()},
             {"max_mass_fraction", max_fraction_},
-            {"t_first", count_ > 0 ? nlohmann::json(t_first_) : nlohmann::json(nullptr)},
-            {"first_particle", count_ > 0 ? nlohmann::json(first_) : nlohmann::json(nullptr)}};
+            {"t_first", exit ? nlohmann::json(t_first_) : nlohmann::json(nullptr)},
+            {"first_particle", exit ? nlohmann::json(first_) : nlohmann::json(nullptr)}};
   }
   // The summary's warning when fluid has left ("" when none has).
   std::string warning() const {
     if (count_ == 0) return "";
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "outflow: %zu fluid particle(s) (%.4g of the fluid mass) left the domain from t = %g s on; they were "
-                  "taken out of the run and stay frozen where they left (summary \"outflow\")",
-                  count_, fraction(), t_first_);
+    char buf[320];
+    if (count_ == at_start_)
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s) (%.4g of the fluid mass) had left the domain before the run's "
+                    "start; they stay out of the run, frozen where they left (summary \"outflow\")",
+                    count_, fraction());
+    else
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s) (%.4g of the fluid mass) left the domain, the first at t = %g s; "
+                    "they were taken out of the run and stay frozen where they left (summary \"outflow\")",
+                    count_, fraction(), t_first_);
     return buf;
   }
 
  private:
   double max_fraction_;
   double fluid_mass_ = 0.0, mass_ = 0.0;
-  std::size_t count_ = 0, first_ = 0;
+  std::size_t count_ = 0, first_ = 0, at_start_ = 0;
   double t_first_ = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -89,7 +89,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // again before its first evaluation. Serial runs only: over ranks the health check ends the run
   // when a particle leaves.
   Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
-  if (!part) outflow.take_out(*sys, y.data(), t);
+  if (!part) outflow.take_out(*sys, y.data(), t, true);
   integrator->initialize(ode, t, y_step);
   // A fixed time.dt runs as set even beyond the CFL bound (the stability studies rely on it), but a
   // step beyond the widest stable CFL step at the start is said: refining a file that fixes dt
