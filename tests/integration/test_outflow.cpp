@@ -58,9 +58,13 @@ std::size_t outside(const std::vector<double>& y, std::size_t n, std::size_t& wh
 }  // namespace
 
 TEST_CASE("outflow: a particle shot through an open face is taken out and the run goes on", "[integration][outflow]") {
-  for (const std::string integrator : {"leapfrog", "leapfrog_kdk", "arkode_erk"}) {
+  // Every integrator starts again after the exit (Integrator::restart); the IMEX ones need a viscous term.
+  for (const std::string integrator : {"leapfrog", "leapfrog_kdk", "arkode_erk", "cvode_adams", "leapfrog_imex", "arkode_imex"}) {
     DYNAMIC_SECTION(integrator) {
-      const Config c = shot_scene({"time.integrator=" + integrator});
+      std::vector<std::string> set = {"time.integrator=" + integrator};
+      if (integrator.find("imex") != std::string::npos)
+        set.insert(set.end(), {"fluid.kinematic_viscosity=1e-4", "discretization.viscosity=morris", "discretization.wall_model=prescribed"});
+      const Config c = shot_scene(set);
       RunOptions opt;
       opt.write_files = false;
       std::vector<double> y;
