@@ -180,13 +180,16 @@ TEST_CASE("distributed system: a water column partly behind its bottom mirror ev
   INFO(beyond << " image pairs beyond a halo of the support plus the skin");
   CHECK((beyond > 0) == (comm.size() > 1));
   split.rhs(0.0, y.data(), f.data());
-  split.gather(f.data(), f_whole);
+  // The whole rates on rank 0 only: the other ranks take part in the gather and receive nothing.
+  const bool root = split.gather(f.data(), f_whole);
+  CHECK(root == (comm.rank() == 0));
+  CHECK((root || f_whole.empty()));
   std::vector<double> f_serial(serial->size());
   serial->rhs(0.0, y0.data(), f_serial.data());
   INFO(comm.size() << " ranks, rank " << comm.rank() << ", " << f_serial.size() << " values");
   CHECK(std::all_of(f_serial.begin(), f_serial.end(), [](double v) { return std::isfinite(v); }));
   CHECK(split.stats().mirror_margin_max > 0.0);
-  CHECK(differing_bits(f_whole, f_serial) == 0);
+  if (root) CHECK(differing_bits(f_whole, f_serial) == 0);
 
   // Then 0.02 s of leapfrog steps, the particles moving (and the halo planned again) as they go.
   const double t_end = 0.02;
@@ -200,5 +203,5 @@ TEST_CASE("distributed system: a water column partly behind its bottom mirror ev
   CHECK(std::all_of(y_serial.begin(), y_serial.end(), [](double v) { return std::isfinite(v); }));
   CHECK(split_steps->stats().steps == serial_steps->stats().steps);
   INFO("halo plans " << split.stats().plans);
-  CHECK(differing_bits(y_whole, y_serial) == 0);
+  if (root) CHECK(differing_bits(y_whole, y_serial) == 0);
 }

@@ -85,25 +85,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   range_ = stats_.depth * whole.pair_list().list_radius();
   skin_ = config.discretization.skin * h;
 
-  // Work per particle: its row of the neighbour list (support + skin) plus one, from a search over
-  // the whole scene at (t0, y0), which every rank holds.
   if (y0.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem: y0 is not a whole state");
-  std::array<std::vector<double>, D> xw;
-  for (int d = 0; d < D; ++d) {
-    xw[d].resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      xw[d][i] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
-  }
-  SearchInput<D> in;
-  for (int d = 0; d < D; ++d) in.x[d] = xw[d].data();
-  in.kind = P.kind.data();
-  in.n = n;
-  in.domain = &domain_;
-  in.radius = whole.pair_list().list_radius();
-  PairList rows;
-  make_neighbor_search<D>(config.discretization.neighbor_search)->build(in, rows);
-
-  // Each rank starts from an equal slice of the global ids, which RCB then redistributes.
+  // Each rank starts from an equal slice of the global ids, which RCB cuts by particle count.
   const auto R = static_cast<std::size_t>(comm.size()), r = static_cast<std::size_t>(comm.rank());
   const std::size_t lo = n * r / R, hi = n * (r + 1) / R;
   std::vector<std::uint32_t> slice(hi - lo);
@@ -111,14 +94,66 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   const std::size_t slice_fluid = std::clamp(P.n_fluid, lo, hi) - lo;
   owned_ = select_particles(P, slice, slice_fluid);
   gid_.assign(slice.begin(), slice.end());
-  std::vector<double> weight(hi - lo);
-  for (std::size_t k = 0; k < weight.size(); ++k) weight[k] = 1.0 + (rows.offset[lo + k + 1] - rows.offset[lo + k]);
-  std::array<const double*, D> xs;
-  for (int d = 0; d < D; ++d) xs[d] = xw[d].data() + lo;
-  const RcbResult<D> cut = rcb_->partition(xs, weight.data(), gid_.data(), gid_.size());
-  migrate(comm, owned_, gid_, cut.destination, {&weight});
-  stats_.imbalance = stats_.imbalance_seen = load_imbalance(comm, std::accumulate(weight.begin(), weight.end(), 0.0));
+  {
+    std::array<std::vector<double>, D> xw;
+    std::array<const double*, D> xs;
+    for (int d = 0; d < D; ++d) {
+      xw[d].resize(hi - lo);
+      for (std::size_t i = lo; i < hi; ++i)
+        xw[d][i - lo] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
+      xs[d] = xw[d].data();
+    }
+    std::vector<double> count(hi - lo, 1.0);
+    const RcbResult<D> cut = rcb_->partition(xs, count.data(), gid_.data(), gid_.size());
+    migrate(comm, owned_, gid_, cut.destination, {});
+  }
   set_layout();
+  balance_by_pairs(t0, local_part(y0));
+}
+
+template <int D>
+void DistributedSystem<D>::balance_by_pairs(double t0, const std::vector<double>& y) {
+  // Work per particle: its row of the neighbour list (support + skin) plus one, as imbalanced()
+  // counts it, from a search over each rank's own particles and its halo at (t0, y) (the halo of the
+  // count partition's plan, with the positions of the state): no rank searches the whole scene.
+  // Then RCB cuts again by that work.
+  const Stats before = stats_;
+  owned_positions(t0, y.data());
+  if (variable_h_) hmax_ = largest_h(y.data());
+  if (ghost_walls_) margin_ = mirror_margin();
+  plan();
+  const std::size_t no = owned_.size();
+  std::array<std::vector<double>, D> x;
+  SearchInput<D> in;
+  for (int d = 0; d < D; ++d) {
+    x[d] = x_now_[d];
+    const std::vector<double> xh = halo_->exchange(comm_, x_now_[d]);
+    x[d].insert(x[d].end(), xh.begin(), xh.end());
+    in.x[d] = x[d].data();
+  }
+  std::vector<Kind> kind = owned_.kind;
+  const std::vector<Kind> kh = halo_->exchange(comm_, owned_.kind);
+  kind.insert(kind.end(), kh.begin(), kh.end());
+  in.kind = kind.data();
+  in.n = kind.size();
+  in.domain = &domain_;
+  in.radius = range_ / stats_.depth;  // the list radius
+  PairList rows;
+  make_neighbor_search<D>(config_.discretization.neighbor_search)->build(in, rows);
+  weight_.resize(no);
+  for (std::size_t o = 0; o < no; ++o) weight_[o] = 1.0 + (rows.offset[o + 1] - rows.offset[o]);
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
+  const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
+  migrate(comm_, owned_, gid_, cut.destination, {&weight_});
+  set_layout();
+  local_.reset();
+  halo_.reset();
+  velocity_halo_.reset();
+  stats_ = before;
+  stats_.imbalance = stats_.imbalance_seen = load_imbalance(comm_, std::accumulate(weight_.begin(), weight_.end(), 0.0));
+  plan_due_ = true;
+  replanned_ = false;
 }
 
 template <int D>
@@ -582,7 +617,7 @@ std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& 
 }
 
 template <int D>
-void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) const {
+bool DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) const {
   const StateLayout<D>& L = layout_;
   const StateLayout<D>& W = whole_layout_;
   const std::size_t blocks = state_blocks();
@@ -596,7 +631,8 @@ void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) c
     else if (L.n_wall_density > 0)
       mine[o].value[0] = y[L.wall_density() + (o - nfo_)];
   }
-  const std::vector<GatherRow<D>> rows = comm_.all_gather_v(mine);
+  const std::vector<GatherRow<D>> rows = comm_.gather_v(mine);
+  if (comm_.rank() != 0) return false;
   whole.assign(W.size(), 0.0);
   for (const auto& r : rows) {
     if (r.gid < W.n)
@@ -604,6 +640,7 @@ void DistributedSystem<D>::gather(const double* y, std::vector<double>& whole) c
     else if (W.n_wall_density > 0)
       whole[W.wall_density() + (r.gid - W.n)] = r.value[0];
   }
+  return true;
 }
 
 template class DistributedSystem<1>;

@@ -107,9 +107,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   const StateLayout<D>& layout() const { return layout_; }
   const StateLayout<D>& whole_layout() const { return whole_layout_; }
   // This rank's part of a whole state (the serial layout), and (collective) the whole state from
-  // every rank's part, on every rank.
+  // every rank's part, on rank 0 only (the one that measures and writes); returns true there. On the
+  // other ranks `whole` is left as it was: no rank but the root holds a gathered copy of the scene.
   std::vector<double> local_part(const std::vector<double>& whole) const;
-  void gather(const double* y, std::vector<double>& whole) const;
+  bool gather(const double* y, std::vector<double>& whole) const;
 
   // Collective, between steps: true when the halo was planned again since the last call and the
   // load imbalance (pair work of the owned rows, over the mean) now exceeds the threshold.
@@ -179,6 +180,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // owned positions now); the halo reaches that much farther per pass.
   double mirror_margin() const;
   void plan();                 // collective: halo plan and a new local system
+  // Collective, at the start: a new partition by each owned particle's pair count, counted in the
+  // local systems at the whole state's local part y (this rank's share of it).
+  void balance_by_pairs(double t0, const std::vector<double>& y);
   // Collective: f at (t, y) into ydot, and with `op` the viscous operator of the owned rows.
   void evaluate(double t, const double* y, double* ydot, ViscousOperator* op);
 

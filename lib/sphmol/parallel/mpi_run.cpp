@@ -140,14 +140,15 @@ class MpiRun final : public PartitionedRun<D> {
   nlohmann::json whole_integrator_state(const nlohmann::json& state) override {
     nlohmann::json js = state;
     if (!js.contains("f")) return js;  // ARKODE, CVODE: no per-particle arrays (a step size, counters)
+    // Gathered on the root, which writes the checkpoint; the other ranks take part and keep theirs.
     std::vector<double> whole;
-    sys_.gather(decode_doubles(js.at("f").get<std::string>()).data(), whole);
-    js["f"] = encode_doubles(whole);
+    const bool root = sys_.gather(decode_doubles(js.at("f").get<std::string>()).data(), whole);
+    if (root) js["f"] = encode_doubles(whole);
     for (const char* key : kPositionLength) {
       if (!js.contains(key)) continue;
       std::vector<double> c = decode_doubles(js.at(key).get<std::string>());
       c.resize(sys_.size(), 0.0);
-      sys_.gather(c.data(), whole);
+      if (!sys_.gather(c.data(), whole)) continue;
       whole.resize(D * sys_.whole_layout().n);
       js[key] = encode_doubles(whole);
     }

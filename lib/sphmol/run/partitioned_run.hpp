@@ -28,7 +28,8 @@ class PartitionedRun {
   // The system the integrator advances (this rank's particles) and its state vector.
   virtual OdeSystem& system() = 0;
   virtual std::vector<double>& state() = 0;
-  // Collective: the whole state in the serial layout, on every rank.
+  // Collective: the whole state in the serial layout, on the root rank (the one that measures and
+  // writes); the other ranks' `whole` is left as it was.
   virtual void gather(std::vector<double>& whole) = 0;
   // Collective: the latest evaluation's density of every fluid particle, in the serial order.
   virtual std::vector<double> whole_fluid_density() = 0;
@@ -55,7 +56,7 @@ class PartitionedRun {
   virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
                                   const HealthLimits& limits) = 0;
   // Collective, after check() threw: the last state that passed the checks, whole in the serial
-  // layout, on every rank (for the root to write as the serial run does, run/last_good_state.hpp).
+  // layout, on the root (which writes it as the serial run does, run/last_good_state.hpp).
   virtual void gather_last_good(std::vector<double>& whole) = 0;
   // Collective: the largest of the ranks' `signal` (0: none), where no step is taken (after the last).
   virtual int largest_signal(int signal) = 0;
@@ -64,7 +65,7 @@ class PartitionedRun {
   // on the new share (state() changes then).
   virtual void rebalance(Integrator& integrator, double t) = 0;
   // Checkpoints: the integrator's state (save_state()) with its per-particle arrays in the serial
-  // layout of the whole state (collective, on every rank), and this rank's part of such a state
+  // layout of the whole state (collective; whole on the root, which writes the checkpoint), and this rank's part of such a state
   // (for restore_state()), so that a checkpoint is the same whatever rank count writes or reads it.
   virtual nlohmann::json whole_integrator_state(const nlohmann::json& state) = 0;
   virtual nlohmann::json local_integrator_state(const nlohmann::json& whole) = 0;

@@ -173,7 +173,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   std::vector<std::string> written = restart ? restart->written : std::vector<std::string>{};  // pruning: run/checkpoint.hpp
   const auto checkpoint = [&] {
     // Over ranks every rank takes part in gathering the whole state and the integrator's state in
-    // the serial layout; rank 0 writes them.
+    // the serial layout on rank 0, which writes them.
     nlohmann::json integrator_state;
     if (part) {
       part->gather(y);
@@ -237,7 +237,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     for (auto& o : observers)
       if (o->next_time() <= t) {
         if (!refreshed) {
-          if (part) part->gather(y);  // every rank has the same observers: all of them gather
+          if (part) part->gather(y);  // collective: every rank has the same observers; the root receives
           whole_fields();
         }
         refreshed = true;
