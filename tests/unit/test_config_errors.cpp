@@ -62,7 +62,7 @@ TEST_CASE("config errors: wrong types", "[config]") {
         "case.yaml:8: geometry: expected a map of keys (channel_height, channel_length, wall_velocity), got a list");
   CHECK(error_of("- 1\n- 2\n") ==
         "case.yaml:1: the config: expected a map of keys (case, dimension, fluid, discretization, "
-        "time, output, probes, geometry, shock_tube, scene), got a list");
+        "time, output, health, probes, geometry, shock_tube, scene), got a list");
 }
 
 TEST_CASE("config errors: missing required values point at the parent section", "[config]") {

@@ -116,6 +116,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
     new_mask_.clear();
     std::vector<std::uint32_t>& near = near_;
     for (std::size_t i = 0; i < w.n_fluid; ++i) {
+      if (pt.kind[i] == Kind::Out) continue;  // taken out (outflow): no image
       near.clear();
       for (std::size_t m = 0; m < mirrors_.size(); ++m)
         if (distance(mirrors_[m], w, i) < width) near.push_back(static_cast<std::uint32_t>(m));

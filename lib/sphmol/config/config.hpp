@@ -204,6 +204,13 @@ struct OutputConfig {
   double checkpoint_every = 0.0;  // simulated time between checkpoints [s]; 0 = none
 };
 
+// The run's health checks (run/health_check.hpp) beyond those derived from the scene.
+struct HealthConfig {
+  // Fluid that leaves the domain through a non-periodic face is taken out of the run (outflow,
+  // run/outflow.hpp); beyond this fraction of the fluid mass the run ends as blown up.
+  double max_outflow_fraction = 0.05;
+};
+
 struct Config {
   std::string source;  // file path the config came from ("<string>" for in-memory)
   std::string case_name;   // a registered case module (cases/registry.cpp)
@@ -212,6 +219,7 @@ struct Config {
   DiscretizationConfig discretization;
   TimeConfig time;
   OutputConfig output;
+  HealthConfig health;
   // The case's own sections (geometry, initial states, ...), read by its module.
   std::shared_ptr<const CaseSettings> case_settings;
   // The case's settings as its own type; a mismatch is a programming error.

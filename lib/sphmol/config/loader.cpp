@@ -242,7 +242,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   if (root_mark.line < 0) root_mark = YAML::Mark();  // empty document: point at line 1
   // The shared sections, and every section some case module owns; once the case is known, only
   // its own sections are allowed.
-  const std::vector<std::string> shared = {"case", "dimension", "fluid", "discretization", "time", "output", "probes"};
+  const std::vector<std::string> shared = {"case", "dimension", "fluid", "discretization", "time", "output", "health", "probes"};
   std::vector<std::string> all_keys = shared;
   for (const auto& m : case_modules())
     for (const auto& k : m.sections)
@@ -696,6 +696,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.boolean("plots")) o.plots = *v;
     if (const auto v = out.real("checkpoint_every")) o.checkpoint_every = *v;
     out.check("checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
+  }
+  // health (run/health_check.hpp, run/outflow.hpp)
+  {
+    MapReader health = top.section("health", {"max_outflow_fraction"});
+    auto& h = c.health;
+    if (const auto v = health.real("max_outflow_fraction")) h.max_outflow_fraction = *v;
+    health.check("max_outflow_fraction", h.max_outflow_fraction >= 0 && h.max_outflow_fraction <= 1, h.max_outflow_fraction,
+                 "in [0, 1]: the fraction of the fluid mass that may leave the domain; 0 = none");
   }
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);

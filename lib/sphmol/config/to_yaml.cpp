@@ -141,6 +141,8 @@ std::string to_yaml(const Config& c) {
     << "  vtk_ghosts: " << (o.vtk_ghosts ? "true" : "false") << "\n"
     << "  plots: " << (o.plots ? "true" : "false") << "\n"
     << "  checkpoint_every: " << num(o.checkpoint_every) << "\n";
+  y << "health:\n"
+    << "  max_outflow_fraction: " << num(c.health.max_outflow_fraction) << "\n";
   y << probes_to_yaml(c.probes);  // probes/probe_config.hpp
   return y.str();
 }

@@ -14,7 +14,11 @@
 
 namespace sphmol {
 
-enum class Kind : std::uint8_t { Fluid = 0, Wall = 1 };
+// Out: a fluid particle taken out of the simulation after it left the domain through a
+// non-periodic face (outflow, run/outflow.hpp). It keeps its place among the fluid rows and its
+// mass in the state, but the neighbour searches list no pair with it and SphSystem sets its rates
+// to zero, so it stays frozen where it left.
+enum class Kind : std::uint8_t { Fluid = 0, Wall = 1, Out = 2 };
 
 // How a wall body's particles act on the fluid (a scene's walls[i].treatment): wall particles whose
 // pressure is the rest pressure, extrapolated from the fluid (Adami et al. 2012) or evolved as dynamic

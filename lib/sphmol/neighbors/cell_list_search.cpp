@@ -109,7 +109,8 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     std::vector<std::size_t> cells;
     std::vector<std::uint32_t> cand;            // candidate neighbours of the cell, ascending
     std::array<std::vector<double>, D> cand_x;  // their coordinates, contiguous
-    std::vector<std::uint8_t> cand_fluid, cand_on;  // 1: a fluid particle; 1: listed in the row at hand
+    // 1: a fluid particle; 1: not taken out (Kind::Out, which forms no pair); 1: listed in the row at hand
+    std::vector<std::uint8_t> cand_fluid, cand_in, cand_on;
     for (std::size_t c = c_lo; c < c_hi; ++c) {
       if (cell_start_[c] == cell_start_[c + 1]) continue;
       std::array<int, D> cc;
@@ -151,11 +152,16 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         for (std::size_t k = 0; k < m; ++k) cand_x[d][k] = in.x[d][cand[k]];
       }
       cand_fluid.resize(m);
+      cand_in.resize(m);
       cand_on.resize(m);
-      for (std::size_t k = 0; k < m; ++k) cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid ? 1 : 0;
+      for (std::size_t k = 0; k < m; ++k) {
+        cand_fluid[k] = in.kind[cand[k]] == Kind::Fluid ? 1 : 0;
+        cand_in[k] = in.kind[cand[k]] != Kind::Out ? 1 : 0;
+      }
       for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
         const std::uint32_t i = cell_items_[q];
         const bool fluid_i = in.kind[i] == Kind::Fluid;
+        const std::uint8_t in_i = in.kind[i] != Kind::Out ? 1 : 0;
         std::array<double, D> xi;
         for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
         // A row holds at most m entries (room for them per row, not per cell: one crowded cell
@@ -174,7 +180,7 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         for (std::size_t k = 0; k < m; ++k) {
           std::array<double, D> dx;
           for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
-          on[k] = static_cast<std::uint8_t>(pd.within(dx) & (cand[k] != i) & (fi | cand_fluid[k]));
+          on[k] = static_cast<std::uint8_t>(pd.within(dx) & (cand[k] != i) & (fi | cand_fluid[k]) & in_i & cand_in[k]);
         }
         std::uint32_t* const row = local.get() + used;
         std::size_t len = 0;

@@ -35,8 +35,11 @@ template <int D>
 std::unique_ptr<NeighborSearch<D>> make_neighbor_search(std::string_view name);
 
 namespace detail {
-// Pairs of two boundary particles are never listed.
-inline bool listable(Kind a, Kind b) { return a == Kind::Fluid || b == Kind::Fluid; }
+// Pairs of two boundary particles are never listed, nor any pair with a particle taken out
+// (Kind::Out, core/particles.hpp).
+inline bool listable(Kind a, Kind b) {
+  return (a == Kind::Fluid || b == Kind::Fluid) && a != Kind::Out && b != Kind::Out;
+}
 
 // Shared pair predicate of every search, so all of them give identical pair sets. It takes the box
 // constants once per build, and the distance test (within) also applies to coordinates a search has

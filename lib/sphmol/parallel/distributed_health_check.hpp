@@ -223,8 +223,12 @@ class DistributedHealthCheck {
           return std::string("NaN/Inf in the ") + (std::isfinite(x[i]) ? "velocity" : "position") + " (component " +
                  std::to_string(d) + ")";
         if (!dom.periodic[d] && (x[i] < dom.lo[d] || x[i] > dom.hi[d]))
+          // A serial run takes such a particle out and goes on (run/outflow.hpp); over ranks that is
+          // not done, so the run ends here rather than continue with a different fluid than the serial run's.
           return "particle left the domain in direction " + std::to_string(d) + " (x = " + std::to_string(x[i]) +
-                 ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) + "])";
+                 ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) +
+                 "]): a run over MPI ranks does not take fluid that leaves the domain out of the run (outflow); "
+                 "run it on one rank";
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k)

@@ -212,7 +212,8 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
     vf[d] = y + L.velocity(d);
   }
   std::vector<double> volume(nf);
-  for (std::size_t i = 0; i < nf; ++i) volume[i] = P.mass[i] / rho[i];
+  // Fluid taken out of the run (run/outflow.hpp) has no volume: no probe sees it.
+  for (std::size_t i = 0; i < nf; ++i) volume[i] = sys.is_retired(i) ? 0.0 : P.mass[i] / rho[i];
   const FluidSampler<D> fluid(xf, volume.data(), nf, W_, h_, support_, sys.domain());
   const std::string tt = cell(t);
   for (const std::size_t k : which) {

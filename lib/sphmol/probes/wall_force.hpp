@@ -62,6 +62,7 @@ std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceStat
   const double eta2 = 0.01 * h * h;
   std::array<double, D> force{};
   for (std::size_t i = 0; i < P.n_fluid; ++i) {
+    if (P.kind[i] == Kind::Out) continue;  // taken out of the run (run/outflow.hpp): pairs with no wall
     geometry::Vec<D> xi;
     for (int d = 0; d < D; ++d) xi[d] = s.x[d][i];
     const double pi_i = s.p[i] / (s.rho[i] * s.rho[i]);

@@ -427,6 +427,23 @@ void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
       }
       for (std::size_t q = k; q < e; ++q) terms_[q]->apply(ws_);  // each ends with a barrier
       if (last) {
+        if (!retired_.empty()) {
+          // Particles taken out (retire()): every rate zero, before the scatter and the CFL extremes
+          // read them (the body force and the self terms would otherwise move them). A uniform
+          // branch: every thread meets the loop's closing barrier.
+          const std::size_t* const gone = retired_.data();
+#pragma omp for schedule(static)
+          for (std::size_t r = 0; r < retired_.size(); ++r) {
+            const std::size_t i = ord ? at[gone[r]] : gone[r];
+            for (int d = 0; d < D; ++d) {
+              ws_.dxdt[d][i] = 0.0;
+              ws_.dvdt[d][i] = 0.0;
+            }
+            if (ws_.drhodt) ws_.drhodt[i] = 0.0;
+            if (ws_.dedt) ws_.dedt[i] = 0.0;
+            if (ws_.dhdt) ws_.dhdt[i] = 0.0;
+          }
+        }
         if (split) {
           // The owned rows' rates and their CFL extremes in one pass; the other rows' rates are
           // not wanted. Wall densities first (few), then the owned fluid rows.
@@ -562,6 +579,22 @@ std::vector<std::string> SphSystem<D>::implicit_terms() const {
       add(*t);
   }
   return names;
+}
+
+template <int D>
+void SphSystem<D>::retire(const std::vector<std::size_t>& fluid) {
+  if (split_.width > 0) throw std::logic_error("SphSystem::retire: not with a split state");
+  bool changed = false;
+  for (const std::size_t i : fluid) {
+    if (i >= layout_.n) throw std::invalid_argument("SphSystem::retire: " + std::to_string(i) + " is not a fluid particle");
+    if (particles_.kind[i] == Kind::Out) continue;
+    particles_.kind[i] = Kind::Out;
+    // The workspace's copy of the particles (reordering) holds particle i at inv_[i].
+    if (reorder_) wp_.kind[inv_[i]] = Kind::Out;
+    retired_.push_back(i);
+    changed = true;
+  }
+  if (changed) pairs_->invalidate();  // the next evaluation lists its pairs without them
 }
 
 template <int D>

@@ -120,6 +120,16 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // Per OpenMP thread: seconds on rows of fused pair passes since construction (Workspace).
   const std::vector<double>& pair_thread_seconds() const { return ws_.pair_thread_seconds; }
 
+  // Outflow (run/outflow.hpp): fluid particles (state indices) that left the domain, taken out of the
+  // simulation between steps. Each becomes Kind::Out: no neighbour search lists a pair with it (so
+  // no pair sum, ghost image or wall extrapolation sees it) and every rate of it is zero from the
+  // next evaluation on, so that it stays where it is. Its state (the caller sets its velocity to
+  // zero) and mass stay. Indices already out are skipped. The integrator must be started again at
+  // (t, y) afterwards (Integrator::restart): f(t, y) changes here. Not with a split state.
+  void retire(const std::vector<std::size_t>& fluid);
+  // The fluid particles taken out so far, in the order retire() was given them.
+  const std::vector<std::size_t>& retired() const { return retired_; }
+  bool is_retired(std::size_t i) const { return particles_.kind[i] == Kind::Out; }
   // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
   void set_generator(std::unique_ptr<ParticleGenerator<D>> g);
   // Locality reordering (neighbors/particle_reorder.hpp): at every Verlet-list rebuild the workspace
@@ -203,6 +213,8 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // The density of the most recent evaluation in workspace order (fluid first, then walls and
   // generated particles): for tests that do not depend on the order, without density()'s permutation.
   const std::vector<double>& workspace_density() const { return ws_.rho.empty() ? particles_.rho : ws_.rho; }
+  // The particles' kinds in that workspace order (Kind::Out: taken out, retire()).
+  const std::vector<Kind>& workspace_kind() const { return ws_.particles->kind; }
 
  private:
   void reorder_workspace();
@@ -241,6 +253,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   bool splitting_ = false;               // during rhs_split
   const double* split_other_ = nullptr;  // the other rows of that evaluation
   CflExtremes extremes_;
+  std::vector<std::size_t> retired_;  // retire(): state indices of the fluid taken out
   // Reordering: perm_[k] is the particle (state index) at workspace index k, fluid within [0, n_fluid)
   // and walls within [n_fluid, n_base); empty when off. wp_ is particles_ in workspace order, out_ the
   // derivatives in workspace order before the scatter into ydot.

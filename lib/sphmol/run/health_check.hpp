@@ -1,11 +1,13 @@
 #pragma once
-// Blow-up detection after every accepted step: NaN/Inf in the state, a fluid particle outside the
-// domain in a non-periodic direction, density <= 0 in the latest RHS evaluation, or the CFL step
+// Blow-up detection after every accepted step: NaN/Inf in the state, density <= 0 in the latest RHS
+// evaluation, or the CFL step
 // collapsing below kCollapse times its initial value; then the physical bounds of the scene
 // (run/health_limits.hpp): a speed above the scene's velocity scale or the sound speed, a density
 // outside the EOS's weakly compressible range, kinetic energy beyond what the scene puts in. Throws
 // BlowUp naming the time, the particle and the cause; keeps a copy of the last state that passed,
-// for the run to write.
+// for the run to write. A fluid particle outside the domain in a non-periodic direction is not a
+// blow-up: the check notes it (exits()), and the run takes it out between steps (run/outflow.hpp).
+// Particles already taken out (Kind::Out) are left out of every test and sum.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,6 +37,7 @@ class HealthCheck {
 
   void operator()(double t, const double* y, double /*h*/) {
     const Scan s = scan(t, y);
+    exits_ = s.exits;
     if (!s.healthy) report(t, y);
     physical(t, y, s);
     const double cfl = sys_.stable_step();
@@ -45,6 +48,9 @@ class HealthCheck {
     last_good_t_ = t;
   }
 
+  // Whether a fluid particle not yet taken out was outside the domain in a non-periodic direction
+  // after the latest step (run/outflow.hpp takes it out).
+  bool exits() const { return exits_; }
   const std::vector<double>& last_good_state() const { return last_good_; }
   double last_good_time() const { return last_good_t_; }
   // Work done on the fluid by the body force since t0 (run/physical_bounds.hpp).
@@ -63,6 +69,7 @@ class HealthCheck {
     const auto& own = sys_.particles().rest_density;
     in.own = own.empty() ? nullptr : own.data();
     in.own_n = static_cast<long>(own.size());
+    if (!sys_.retired().empty()) in.kind = sys_.particles().kind.data();
     if (elastic && bounds_.elastic()) {
       const auto& rho = sys_.density();  // state order, as the masses
       in.rho = rho.data();
@@ -73,6 +80,7 @@ class HealthCheck {
   long sum_blocks() const { return (static_cast<long>(sys_.layout().n) + kSumBlock - 1) / kSumBlock; }
   struct Scan {
     bool healthy = true;
+    bool exits = false;  // a fluid particle not taken out is outside the domain (non-periodic direction)
     double rho_lo = std::numeric_limits<double>::infinity(), rho_hi = -std::numeric_limits<double>::infinity();
     Sums sums;  // of the velocities and densities; meaningful only when healthy
   };
@@ -101,6 +109,7 @@ class HealthCheck {
         lo = std::numeric_limits<double>::infinity();
         hi = -lo;
         for (long i = 0; i < nrho; ++i) {
+          if (sys_.is_retired(static_cast<std::size_t>(i))) continue;
           lo = std::min(lo, rho[i] / rest(i));
           hi = std::max(hi, rho[i] / rest(i));
         }
@@ -108,6 +117,7 @@ class HealthCheck {
       if (bounds_.outside_density(hi) || bounds_.outside_density(lo)) {
         const auto& rs = sys_.density();  // state order, to name the particle
         for (std::size_t i = 0; i < L.n && i < rs.size(); ++i) {
+          if (sys_.is_retired(i)) continue;
           const double ratio = rs[i] / rest(static_cast<long>(i));
           if (bounds_.outside_density(ratio)) throw bounds_.density_blow_up(t, static_cast<long>(i), ratio);
         }
@@ -129,6 +139,9 @@ class HealthCheck {
     // permute it serially after every step. Fluid entries come first in either order.
     const auto& rho = sys_.workspace_density();
     const long nrho = std::min(n, static_cast<long>(rho.size()));
+    // Particles taken out are skipped (their kinds in state and in workspace order).
+    const Kind* const kind = sys_.particles().kind.data();
+    const Kind* const wkind = sys_.workspace_kind().data();
     candidate_.resize(static_cast<std::size_t>(size));
     double* const keep = candidate_.data();
     bool bad = false;
@@ -138,13 +151,14 @@ class HealthCheck {
     const long nb = sum_blocks();
     parts_.resize(static_cast<std::size_t>(nb));
     Sums* const part = parts_.data();
-#pragma omp parallel reduction(|| : bad)
+    bool exits = false;
+#pragma omp parallel reduction(|| : bad, exits)
     {
       // Every test is an AND of comparisons without branches (into an integer as wide as a double,
       // which GCC vectorises), so that the loops vectorise: a value is finite when |v| <= the
       // largest double (false for NaN and Inf).
       constexpr double big = std::numeric_limits<double>::max();
-      std::int64_t ok = 1;
+      std::int64_t ok = 1, inside = 1;
       // Positions and velocities by the sums' blocks: the tests, the copy and the block's sums.
 #pragma omp for schedule(static) nowait
       for (long b = 0; b < nb; ++b) {
@@ -158,8 +172,8 @@ class HealthCheck {
           const double xlo = dom.lo[d], xhi = dom.hi[d];
           for (long i = i0; i < i1; ++i) {
             const double xi = x[i], vi = v[i];
-            ok &= static_cast<std::int64_t>((std::fabs(xi) <= big) & (std::fabs(vi) <= big) &
-                                            (open | ((xi >= xlo) & (xi <= xhi))));
+            ok &= static_cast<std::int64_t>((std::fabs(xi) <= big) & (std::fabs(vi) <= big));
+            inside &= static_cast<std::int64_t>(open | ((xi >= xlo) & (xi <= xhi)) | (kind[i] == Kind::Out));
             kx[i] = xi;
             kv[i] = vi;
           }
@@ -175,13 +189,15 @@ class HealthCheck {
 #pragma omp for simd schedule(static) nowait reduction(min : lo) reduction(max : hi) reduction(& : rho_ok)
       for (long i = 0; i < nrho; ++i) {
         const double r = rho[i];
-        rho_ok &= static_cast<std::int64_t>(r > 0.0);
-        lo = std::min(lo, r);
-        hi = std::max(hi, r);
+        const bool live = wkind[i] != Kind::Out;
+        rho_ok &= static_cast<std::int64_t>((r > 0.0) | !live);
+        lo = std::min(lo, live ? r : std::numeric_limits<double>::infinity());
+        hi = std::max(hi, live ? r : -std::numeric_limits<double>::infinity());
       }
       bad = ok == 0;
+      exits = inside == 0;
     }
-    Scan s{!bad && rho_ok != 0, lo, hi, {}};
+    Scan s{!bad && rho_ok != 0, exits, lo, hi, {}};
     for (long b = 0; b < nb; ++b) s.sums.add(part[b]);  // in block order
     return s;
   }
@@ -189,7 +205,6 @@ class HealthCheck {
   // Throws for the first particle that fails, in the order the tests are listed in the file comment.
   void report(double t, const double* y) const {
     const auto& L = sys_.layout();
-    const auto& dom = sys_.domain();
     const std::size_t n = L.n;
     for (int d = 0; d < D; ++d) {
       const double* x = y + L.position(d);
@@ -198,17 +213,13 @@ class HealthCheck {
         if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
           throw BlowUp(t, static_cast<long>(i), std::string("NaN/Inf in the ") + (std::isfinite(x[i]) ? "velocity" : "position") +
                                                     " (component " + std::to_string(d) + ")");
-        if (!dom.periodic[d] && (x[i] < dom.lo[d] || x[i] > dom.hi[d]))
-          throw BlowUp(t, static_cast<long>(i), "particle left the domain in direction " + std::to_string(d) + " (x = " +
-                                                    std::to_string(x[i]) + ", domain [" + std::to_string(dom.lo[d]) + ", " +
-                                                    std::to_string(dom.hi[d]) + "])");
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k)
       if (!std::isfinite(y[k])) throw BlowUp(t, static_cast<long>((k - L.velocities_end()) % n), "NaN/Inf in a state field");
     const auto& rho = sys_.density();
     for (std::size_t i = 0; i < n && i < rho.size(); ++i)
-      if (!(rho[i] > 0.0)) throw BlowUp(t, static_cast<long>(i), "density <= 0 (rho = " + std::to_string(rho[i]) + ")");
+      if (!(rho[i] > 0.0) && !sys_.is_retired(i)) throw BlowUp(t, static_cast<long>(i), "density <= 0 (rho = " + std::to_string(rho[i]) + ")");
   }
 
   const SphSystem<D>& sys_;
@@ -216,6 +227,7 @@ class HealthCheck {
   std::vector<Sums> parts_;  // scan()'s block sums
   double last_good_t_;
   double initial_cfl_;
+  bool exits_ = false;
   PhysicalBounds<D> bounds_;
 };
 

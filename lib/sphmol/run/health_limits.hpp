@@ -175,6 +175,7 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   const auto& m = sys.particles().mass;
   double mass = 0.0, ke0 = 0.0, e0 = 0.0, v0max = 0.0;
   for (std::size_t i = 0; i < L.n; ++i) {
+    if (sys.is_retired(i)) continue;  // taken out (run/outflow.hpp): no part of the fluid's energy
     double v2 = 0.0, w2 = 0.0;  // w: relative to the walls' frame when there is one
     for (int d = 0; d < D; ++d) {
       const double v = y0[L.velocity(d) + i], w = v - (lim.frame.on ? lim.frame.V(d, 0.0) : 0.0);
@@ -223,7 +224,8 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
   double el0 = 0.0;
   const auto& rho = density ? *density : sys.density();  // of the initial evaluation
   const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
-  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i) el0 += m[i] * lim.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
+  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
+    if (!sys.is_retired(i)) el0 += m[i] * lim.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
   lim.energy = true;
   // In the walls' frame the walls do no work; otherwise their maximum-principle bound.
   lim.energy_budget = ke0 + el0 + e0 + (lim.frame.on ? 0.0 : 0.5 * mass * V_wall * V_wall);

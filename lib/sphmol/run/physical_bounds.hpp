@@ -42,6 +42,8 @@ struct PhysicalInputs {
   long nrho = 0;
   const double* own = nullptr;     // Particles::rest_density; null when there is none
   long own_n = 0;
+  // The particles' kinds: those taken out (Kind::Out, run/outflow.hpp) count as massless. Null: none is.
+  const Kind* kind = nullptr;
 };
 
 template <int D>
@@ -66,16 +68,18 @@ class PhysicalBounds {
   // The sums over particles [lo, hi) (hi - lo <= kMaxBlock), in index order.
   PhysicalSums<D> sums(const StateLayout<D>& L, const double* y, const PhysicalInputs<D>& in, long lo, long hi) const {
     PhysicalSums<D> s;
+    const auto mass = [&in](long i) { return in.kind && in.kind[i] == Kind::Out ? 0.0 : in.mass[i]; };
     for (long i = lo; i < hi; ++i) {
       double v2 = 0.0, w2 = 0.0;
+      const double m = mass(i);
       for (int d = 0; d < D; ++d) {
         const double v = y[L.velocity(d) + i], w = v - in.V[d];
         v2 += v * v;
         w2 += w * w;
-        s.mv[d] += in.mass[i] * w;
+        s.mv[d] += m * w;
       }
       s.vmax2 = std::max(s.vmax2, v2);
-      s.ke += 0.5 * in.mass[i] * w2;
+      s.ke += 0.5 * m * w2;
     }
     // The elastic energy per unit mass of the block first (vectorised), then summed in order.
     const long e_hi = in.rho ? std::min(hi, in.nrho) : lo;
@@ -86,7 +90,7 @@ class PhysicalBounds {
       } else {
         for (long i = lo; i < e_hi; ++i) u[i - lo] = limits_.elastic.per_mass(in.rho[i], i < in.own_n ? in.own[i] : 0.0);
       }
-      for (long i = lo; i < e_hi; ++i) s.el += in.mass[i] * u[i - lo];
+      for (long i = lo; i < e_hi; ++i) s.el += mass(i) * u[i - lo];
     }
     return s;
   }

@@ -35,9 +35,10 @@ Flat flat_config(const Config& c) {
 
 bool changes_physics(const std::string& key) {
   // Allowed: the end time, tolerances, step control and integrator table (the integrator itself must
-  // match the checkpoint's integrator state, checked separately), the outputs (probes too), and choices that give
+  // match the checkpoint's integrator state, checked separately), the outputs (probes too), the health
+  // limits (they end a run, never change its steps), and choices that give
   // bit-identical right-hand sides (neighbour search, skin, reordering, pair-pass layout).
-  constexpr std::array<std::string_view, 2> free_sections = {"time.", "output."};
+  constexpr std::array<std::string_view, 3> free_sections = {"time.", "output.", "health."};
   constexpr std::array<std::string_view, 6> free_keys = {"discretization.neighbor_search", "discretization.skin",
                                                          "discretization.reorder", "discretization.pair_passes",
                                                          "discretization.combine_terms", "probes"};

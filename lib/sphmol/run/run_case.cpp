@@ -15,6 +15,7 @@
 #include "sphmol/run/conservation.hpp"
 #include "sphmol/run/health_check.hpp"
 #include "sphmol/run/last_good_state.hpp"
+#include "sphmol/run/outflow.hpp"
 #include <stdexcept>
 
 #include "sphmol/config/position_correction.hpp"
@@ -83,6 +84,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   const bool root = !part || opt.partitioner->root();
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
+  // Fluid that has left the domain is out of the run (run/outflow.hpp); a restarted run finds the
+  // particles an earlier part took out where they left, outside the domain, and takes them out
+  // again before its first evaluation. Serial runs only: over ranks the health check ends the run
+  // when a particle leaves.
+  Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
+  if (!part) outflow.take_out(*sys, y.data(), t, true);
   integrator->initialize(ode, t, y_step);
   // A fixed time.dt runs as set even beyond the CFL bound (the stability studies rely on it), but a
   // step beyond the widest stable CFL step at the start is said: refining a file that fixes dt
@@ -267,6 +274,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     while (t < stop && !(signal = signal_seen())) {
       stepping = true;
       t = integrator->step_toward(stop);
+      // Fluid that left the domain in this step is taken out, and the integrator starts again from
+      // the changed system at (t, y) (run/outflow.hpp). Over the limit: a BlowUp.
+      if (health && health->exits() && outflow.take_out(*sys, y.data(), t)) integrator->restart(ode, t, y_step);
       stepping = false;
       // Not after the last step: nothing would run on the new share.
       if (part && t < times.back()) part->rebalance(*integrator, t);
@@ -342,6 +352,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
 
   j["integrator"] = integrator->describe();
+  if (!part) {
+    j["outflow"] = outflow.to_json();
+    if (const std::string w = outflow.warning(); !w.empty()) warnings.push_back(w);
+  }
   for (const auto& w : warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;

@@ -198,12 +198,16 @@ std::vector<VtkArrayInfo> infos(const std::vector<Array>& arrays) {
 template <int D>
 std::string vtp_file(const SphSystem<D>& sys, const double* y, double t, VtkPart part) {
   const auto [first, last] = part_range(sys, part);
-  std::vector<std::size_t> rows(last - first);
-  std::vector<std::int64_t> ids(rows.size());
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    rows[k] = first + k;
+  std::vector<std::size_t> rows;
+  std::vector<std::int64_t> ids;
+  rows.reserve(last - first);
+  ids.reserve(last - first);
+  for (std::size_t i = first; i < last; ++i) {
+    // Fluid taken out of the run (run/outflow.hpp) is not written; the ids of the others stay theirs.
+    if (part == VtkPart::fluid && sys.is_retired(i)) continue;
+    rows.push_back(i);
     // Ghosts -1: they are made anew at every evaluation.
-    ids[k] = part == VtkPart::ghosts ? std::int64_t{-1} : static_cast<std::int64_t>(first + k);
+    ids.push_back(part == VtkPart::ghosts ? std::int64_t{-1} : static_cast<std::int64_t>(i));
   }
   return vtp_text(vtp_arrays(sys, y, t, part, rows, ids, false), rows.size());
 }

@@ -41,6 +41,9 @@ class ArkodeErk final : public Integrator {
   // (t, y) once more, as it does at a start, for its first stage (f is a function of (t, y) alone,
   // so that evaluation gives the values the run had).
   bool can_resize() const override { return true; }
+  // ERKStepResize at (t, y): the vectors and the first stage are computed anew, the step size and
+  // the counts are kept.
+  void restart(OdeSystem& sys, double t, double* y) override { resize(sys, t, y); }
   void resize(OdeSystem& sys, double t, double* y) override;
 
  private:

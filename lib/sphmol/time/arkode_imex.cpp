@@ -33,6 +33,20 @@ ArkodeImex::~ArkodeImex() {
   if (ctx_) SUNContext_Free(&ctx_);
 }
 
+void ArkodeImex::restart(OdeSystem& sys, double t, double* y) {
+  const IntegratorStats s = stats();
+  if (mem_) ARKStepFree(&mem_);
+  ls_.reset();
+  if (y_) N_VDestroy(y_);
+  if (ctx_) SUNContext_Free(&ctx_);
+  mem_ = nullptr;
+  y_ = nullptr;
+  ctx_ = nullptr;
+  initialize(sys, t, y);
+  steps_before_ = s.steps;
+  rejected_before_ = s.rejected_steps;
+}
+
 nlohmann::json ArkodeImex::describe() const {
   const auto pair = ark_pair_of(opt_.table);
   nlohmann::json j{{"name", name()}, {"table", opt_.table}};

@@ -49,6 +49,8 @@ class ArkodeImex final : public Integrator {
   void initialize(OdeSystem& sys, double t0, double* y) override;
   void advance(double tout) override;
   IntegratorStats stats() const override;
+  // ARKStep's stages are of the old f: freed, and ARKStep started again at (t, y), counts kept.
+  void restart(OdeSystem& sys, double t, double* y) override;
   double step_toward(double tout) override;
   // As arkode_erk: the step size is saved, the Runge-Kutta history is not (a restart agrees within
   // the tolerance).

@@ -18,11 +18,26 @@ void check(int flag, const char* what) {
 }
 }  // namespace
 
-CvodeAdams::~CvodeAdams() {
+CvodeAdams::~CvodeAdams() { release(); }
+
+void CvodeAdams::release() {
   if (mem_) CVodeFree(&mem_);
   if (nls_) SUNNonlinSolFree(nls_);
   if (y_) N_VDestroy(y_);
   if (ctx_) SUNContext_Free(&ctx_);
+  mem_ = nullptr;
+  nls_ = nullptr;
+  y_ = nullptr;
+  ctx_ = nullptr;
+  tstop_set_ = false;
+}
+
+void CvodeAdams::restart(OdeSystem& sys, double t, double* y) {
+  const IntegratorStats s = stats();
+  release();
+  initialize(sys, t, y);
+  steps_before_ = s.steps;
+  rejected_before_ = s.rejected_steps;
 }
 
 nlohmann::json CvodeAdams::describe() const {
@@ -101,10 +116,10 @@ IntegratorStats CvodeAdams::stats() const {
   IntegratorStats s;
   long v = 0, w = 0;
   CVodeGetNumSteps(mem_, &v);
-  s.steps = v;
+  s.steps = v + steps_before_;
   CVodeGetNumErrTestFails(mem_, &v);
   CVodeGetNumNonlinSolvConvFails(mem_, &w);
-  s.rejected_steps = v + w;
+  s.rejected_steps = v + w + rejected_before_;
   CVodeGetLastStep(mem_, &s.last_step);
   return s;
 }

@@ -33,8 +33,11 @@ class CvodeAdams final : public Integrator {
   // after every step; advance() takes exactly these steps.
   double step_toward(double tout) override;
   IntegratorStats stats() const override;
+  // CVODE's Adams history is of the old f: freed, and CVODE started again at (t, y), counts kept.
+  void restart(OdeSystem& sys, double t, double* y) override;
 
  private:
+  void release();
   static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);
 
   Options opt_;
@@ -46,6 +49,7 @@ class CvodeAdams final : public Integrator {
   double t_ = 0.0;
   double tstop_ = 0.0;  // the stop time set in CVODE (set again only when it changes)
   bool tstop_set_ = false;
+  long steps_before_ = 0, rejected_before_ = 0;  // counted before a restart
 };
 
 }  // namespace sphmol

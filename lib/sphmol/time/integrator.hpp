@@ -53,6 +53,12 @@ class Integrator {
   virtual bool can_resize() const { return false; }
   virtual void resize(OdeSystem& sys, double t, double* y) {}
 
+  // Between steps, an event changed the system (fluid particles taken out, run/outflow.hpp): at the
+  // same time t and state y, f(t, y) is no longer what the integrator last evaluated. Starts the
+  // steps again from (t, y) as initialize() does (the leapfrogs evaluate f there), keeping the step
+  // counts. The SUNDIALS integrators override it to free what their first start made.
+  virtual void restart(OdeSystem& sys, double t, double* y) { initialize(sys, t, y); }
+
  protected:
   void after_step(double t, const double* y, double h) const {
     if (hook_) hook_(t, y, h);

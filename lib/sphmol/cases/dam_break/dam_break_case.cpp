@@ -37,7 +37,8 @@ nlohmann::json DamBreakCase::measure(const SphSystem<2>& sys, const double* y, d
   const auto& m = sys.particles().mass;
   double xmax = -HUGE_VAL, mass = 0.0;
   for (std::size_t i = 0; i < L.n; ++i) {
-    xmax = std::max(xmax, y[L.position(0) + i]);
+    // The front of the fluid in the run; fluid that left the domain (run/outflow.hpp) keeps its mass.
+    if (!sys.is_retired(i)) xmax = std::max(xmax, y[L.position(0) + i]);
     if (std::isfinite(y[L.position(0) + i]) && std::isfinite(y[L.position(1) + i])) mass += m[i];
   }
   const double x_front = xmax + 0.5 * dx_;

@@ -69,7 +69,9 @@ DamBreakScene build_dam_break_scene(const Config& config) {
     const double rho = w.x[0] < a ? hydrostatic(w.x[1]) : rho0;
     s.particles.add(Kind::Wall, w.x, {0.0, 0.0}, m, rho, w.normal, w.depth);
   }
-  // Room above the tank for splashes; fluid leaving the domain is a blow-up (run/health_check.hpp).
+  // Room above the tank for splashes: a jet at the Ritter front speed 2 sqrt(gH) rises v^2 / 2g = 2H.
+  // Fluid that leaves anyway (a run-up jet the impact drives faster, a splash over the side walls) is
+  // taken out of the run (run/outflow.hpp).
   const double margin = layers * dx + 2.0 * support;
   s.domain.periodic = {false, false};
   s.domain.lo = {-margin, -margin};

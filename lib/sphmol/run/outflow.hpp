@@ -1,0 +1,131 @@
+#pragma once
+// Outflow: a fluid particle found outside the domain along a non-periodic axis at the end of an
+// accepted step has left through an open face. It is taken out of the simulation, as DualSPHysics
+// excludes its "out" particles (Domínguez et al. 2022): its velocity is set to zero and SphSystem::
+// retire() keeps it out of every pair (neighbour lists, ghost images, wall extrapolation) and zeroes
+// its rates, so it stays frozen where it left, with its mass in the state. The run then starts its
+// integrator again at (t, y) (Integrator::restart): between two such events f(t, y) stays a pure
+// function of the state.
+// The set taken out follows from the state alone: a particle taken out sits frozen outside the
+// domain, and every other one is inside at each step's end (the run takes the leavers out right
+// after the step). So a restart from a checkpoint takes out the particles outside the domain before
+// its first evaluation, and needs no field of its own.
+// A closed box that loses fluid, or an open one that loses much of it, is not a sound run: beyond
+// health.max_outflow_fraction of the fluid mass the run ends as blown up.
+// Walls are not in the state and never leave; a run over MPI ranks does not take fluid out (its
+// health check ends the run when a particle leaves, parallel/distributed_health_check.hpp).
+#include <cstddef>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/time/blow_up.hpp"
+
+namespace sphmol {
+
+// The fluid particles (state indices, ascending) outside the domain along a non-periodic axis that
+// have not been taken out yet.
+template <int D>
+std::vector<std::size_t> fluid_outside_domain(const SphSystem<D>& sys, const double* y) {
+  const auto& L = sys.layout();
+  const auto& dom = sys.domain();
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < L.n; ++i) {
+    if (sys.is_retired(i)) continue;
+    for (int d = 0; d < D; ++d) {
+      const double x = y[L.position(d) + i];
+      if (!dom.periodic[d] && (x < dom.lo[d] || x > dom.hi[d])) {
+        out.push_back(i);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+template <int D>
+class Outflow {
+ public:
+  // max_fraction: health.max_outflow_fraction, of the fluid mass M of the scene.
+  Outflow(const SphSystem<D>& sys, double max_fraction) : max_fraction_(max_fraction) {
+    const auto& m = sys.particles().mass;
+    for (std::size_t i = 0; i < sys.layout().n; ++i) fluid_mass_ += m[i];
+  }
+
+  // Takes out the fluid outside the domain at (t, y): velocities zeroed in y, SphSystem::retire().
+  // Returns whether any particle was taken out; the caller then restarts the integrator. Throws
+  // BlowUp once more than max_fraction of the fluid mass has left. at_start: the state the run
+  // starts from (a checkpoint's), whose particles outside left before it: counted apart, with no
+  // exit time of this run.
+  bool take_out(SphSystem<D>& sys, double* y, double t, bool at_start = false) {
+    const std::vector<std::size_t> leaving = fluid_outside_domain(sys, y);
+    if (leaving.empty()) return false;
+    const auto& L = sys.layout();
+    const auto& m = sys.particles().mass;
+    for (const std::size_t i : leaving) {
+      for (int d = 0; d < D; ++d) y[L.velocity(d) + i] = 0.0;
+      mass_ += m[i];
+    }
+    sys.retire(leaving);
+    if (at_start) {
+      at_start_ += leaving.size();
+    } else if (count_ == at_start_) {
+      t_first_ = t;
+      first_ = leaving.front();
+    }
+    count_ += leaving.size();
+    if (fraction() > max_fraction_) {
+      char buf[320];
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain, more than "
+                    "health.max_outflow_fraction = %g (a closed box losing fluid, or an open one losing that much, "
+                    "is not a sound run)",
+                    count_, fraction(), max_fraction_);
+      throw BlowUp(t, static_cast<long>(leaving.front()), buf);
+    }
+    return true;
+  }
+
+  std::size_t count() const { return count_; }
+  double fraction() const { return fluid_mass_ > 0.0 ? mass_ / fluid_mass_ : 0.0; }
+  // The summary's "outflow" object.
+  // t_first and first_particle: the first exit during this run (null when none; a restart's
+  // particles out at its start are counted in at_start).
+  nlohmann::json to_json() const {
+    const bool exit = count_ > at_start_;
+    return {{"particles", count_},
+            {"at_start", at_start_},
+            {"mass", mass_},
+            {"mass_fraction", fraction()},
+            {"max_mass_fraction", max_fraction_},
+            {"t_first", exit ? nlohmann::json(t_first_) : nlohmann::json(nullptr)},
+            {"first_particle", exit ? nlohmann::json(first_) : nlohmann::json(nullptr)}};
+  }
+  // The summary's warning when fluid has left ("" when none has).
+  std::string warning() const {
+    if (count_ == 0) return "";
+    char buf[320];
+    if (count_ == at_start_)
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s) (%.4g of the fluid mass) had left the domain before the run's "
+                    "start; they stay out of the run, frozen where they left (summary \"outflow\")",
+                    count_, fraction());
+    else
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s) (%.4g of the fluid mass) left the domain, the first at t = %g s; "
+                    "they were taken out of the run and stay frozen where they left (summary \"outflow\")",
+                    count_, fraction(), t_first_);
+    return buf;
+  }
+
+ private:
+  double max_fraction_;
+  double fluid_mass_ = 0.0, mass_ = 0.0;
+  std::size_t count_ = 0, first_ = 0, at_start_ = 0;
+  double t_first_ = std::numeric_limits<double>::quiet_NaN();
+};
+
+}  // namespace sphmol
