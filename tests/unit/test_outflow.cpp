@@ -194,3 +194,40 @@ TEST_CASE("outflow: fluid outside the domain along a periodic axis, or inside it
   y[L.position(1)] = sys->domain().hi[1] + 0.01;  // past the open face
   CHECK(fluid_outside_domain(*sys, y.data()) == std::vector<std::size_t>{0});
 }
+
+TEST_CASE("outflow: fluid beyond a face closed to outflow (a wall) ends the run as blown up", "[outflow][health]") {
+  // The shot scene with walls along x, the top left open: the right face is a wall, the top an
+  // outflow face (Domain::outflow).
+  const Config c = shot_scene({"scene.domain.boundaries=[wall, wall]", "scene.domain.open_faces=[y_hi]"});
+  auto cs = make_case<2>(c);
+  auto sys = cs->build(c);
+  const auto& dom = sys->domain();
+  REQUIRE_FALSE(dom.outflow[0][0]);
+  REQUIRE_FALSE(dom.outflow[0][1]);
+  REQUIRE_FALSE(dom.outflow[1][0]);
+  REQUIRE(dom.outflow[1][1]);
+  const auto& L = sys->layout();
+  std::vector<double> y0 = sys->initial_state();
+  const std::size_t p = bullet_of(*sys, y0);
+  const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
+
+  // Through the top: noted, taken out by the run.
+  std::vector<double> y = y0;
+  y[L.position(1) + p] = dom.hi[1] + 0.005;
+  HealthCheck<2> top(*sys, y0.data(), 0.0, lim);
+  CHECK_NOTHROW(top(1e-3, y.data(), 1e-3));
+  CHECK(top.exits());
+  CHECK(fluid_outside_domain(*sys, y.data()) == std::vector<std::size_t>{p});
+
+  // Through the right wall: a blow-up that says so.
+  y = y0;
+  y[L.position(0) + p] = dom.hi[0] + 0.005;
+  HealthCheck<2> side(*sys, y0.data(), 0.0, lim);
+  try {
+    side(1e-3, y.data(), 1e-3);
+    FAIL("no BlowUp");
+  } catch (const BlowUp& b) {
+    CHECK(b.particle == static_cast<long>(p));
+    CHECK_THAT(std::string(b.cause), Catch::Matchers::Contains("left the domain in direction 0 through a face closed to outflow"));
+  }
+}

@@ -1,5 +1,7 @@
 #pragma once
-// The simulation box: bounds and which directions are periodic.
+// The simulation box: bounds, which directions are periodic, and the faces fluid may leave through.
+// A fluid particle beyond an outflow face is taken out of the run (run/outflow.hpp); beyond any other
+// face of a non-periodic direction it has gone through a wall, and the run ends as blown up.
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -11,6 +13,13 @@ struct Domain {
   std::array<double, D> lo{};
   std::array<double, D> hi{};
   std::array<bool, D> periodic{};
+  // Per direction, the lower and the upper face: open to outflow (an open top, an open scene axis).
+  std::array<std::array<bool, 2>, D> outflow{};
+
+  // Whether x, along direction d, lies beyond a face of the box that is not open to outflow.
+  bool beyond_closed_face(int d, double x) const {
+    return !periodic[d] && ((x < lo[d] && !outflow[d][0]) || (x > hi[d] && !outflow[d][1]));
+  }
 
   double length(int d) const { return hi[d] - lo[d]; }
   // 1/L in periodic directions and 0 elsewhere, so the minimum-image shift below needs no branch.

@@ -5,9 +5,10 @@
 // (run/health_limits.hpp): a speed above the scene's velocity scale or the sound speed, a density
 // outside the EOS's weakly compressible range, kinetic energy beyond what the scene puts in. Throws
 // BlowUp naming the time, the particle and the cause; keeps a copy of the last state that passed,
-// for the run to write. A fluid particle outside the domain in a non-periodic direction is not a
-// blow-up: the check notes it (exits()), and the run takes it out between steps (run/outflow.hpp).
-// Particles already taken out (Kind::Out) are left out of every test and sum.
+// for the run to write. A fluid particle beyond a face of the domain that is open to outflow
+// (Domain::outflow) is not a blow-up: the check notes it (exits()), and the run takes it out between
+// steps (run/outflow.hpp); beyond any other face of a non-periodic direction it has gone through a
+// wall, which is. Particles already taken out (Kind::Out) are left out of every test and sum.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -169,11 +170,15 @@ class HealthCheck {
           double* kx = keep + L.position(d);
           double* kv = keep + L.velocity(d);
           const bool open = dom.periodic[d];
+          // A closed face: crossing it fails the check; an outflow face: noted (exits).
+          const bool closed_lo = !open && !dom.outflow[d][0], closed_hi = !open && !dom.outflow[d][1];
           const double xlo = dom.lo[d], xhi = dom.hi[d];
           for (long i = i0; i < i1; ++i) {
             const double xi = x[i], vi = v[i];
-            ok &= static_cast<std::int64_t>((std::fabs(xi) <= big) & (std::fabs(vi) <= big));
-            inside &= static_cast<std::int64_t>(open | ((xi >= xlo) & (xi <= xhi)) | (kind[i] == Kind::Out));
+            const bool live = kind[i] != Kind::Out;
+            ok &= static_cast<std::int64_t>((std::fabs(xi) <= big) & (std::fabs(vi) <= big) &
+                                            !(live & ((closed_lo & (xi < xlo)) | (closed_hi & (xi > xhi)))));
+            inside &= static_cast<std::int64_t>(open | ((xi >= xlo) & (xi <= xhi)) | !live);
             kx[i] = xi;
             kv[i] = vi;
           }
@@ -205,6 +210,7 @@ class HealthCheck {
   // Throws for the first particle that fails, in the order the tests are listed in the file comment.
   void report(double t, const double* y) const {
     const auto& L = sys_.layout();
+    const auto& dom = sys_.domain();
     const std::size_t n = L.n;
     for (int d = 0; d < D; ++d) {
       const double* x = y + L.position(d);
@@ -213,6 +219,10 @@ class HealthCheck {
         if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
           throw BlowUp(t, static_cast<long>(i), std::string("NaN/Inf in the ") + (std::isfinite(x[i]) ? "velocity" : "position") +
                                                     " (component " + std::to_string(d) + ")");
+        if (!sys_.is_retired(i) && dom.beyond_closed_face(d, x[i]))
+          throw BlowUp(t, static_cast<long>(i), "particle left the domain in direction " + std::to_string(d) +
+                                                    " through a face closed to outflow (x = " + std::to_string(x[i]) +
+                                                    ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) + "])");
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k)

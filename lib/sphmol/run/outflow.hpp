@@ -1,6 +1,7 @@
 #pragma once
 // Outflow: a fluid particle found outside the domain along a non-periodic axis at the end of an
-// accepted step has left through an open face. It is taken out of the simulation, as DualSPHysics
+// accepted step has left through a face open to outflow (Domain::outflow: the scene's open axes and
+// faces, the open top of a tank); beyond a closed face the health check ends the run as blown up. It is taken out of the simulation, as DualSPHysics
 // excludes its "out" particles (Domínguez et al. 2022): its velocity is set to zero and SphSystem::
 // retire() keeps it out of every pair (neighbour lists, ghost images, wall extrapolation) and zeroes
 // its rates, so it stays frozen where it left, with its mass in the state. The run then starts its
@@ -27,7 +28,8 @@
 namespace sphmol {
 
 // The fluid particles (state indices, ascending) outside the domain along a non-periodic axis that
-// have not been taken out yet.
+// have not been taken out yet. The health check has passed the step, so each is beyond a face open to
+// outflow (Domain::outflow) and none beyond a closed one.
 template <int D>
 std::vector<std::size_t> fluid_outside_domain(const SphSystem<D>& sys, const double* y) {
   const auto& L = sys.layout();

@@ -496,6 +496,10 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     const double grow = out.domain.periodic[d] ? 0.0 : max_thickness;
     out.domain.lo[d] = box.lo[d] - grow;
     out.domain.hi[d] = box.hi[d] + grow;
+    // Open axes and open faces let fluid out (run/outflow.hpp); beyond a wall face it is a blow-up.
+    for (int side = 0; side < 2; ++side)
+      out.domain.outflow[d][side] = dom.boundary[d] == AxisBoundary::open ||
+                                    (dom.boundary[d] == AxisBoundary::wall && dom.open[2 * d + side]);
   }
   return out;
 }

@@ -46,6 +46,8 @@ BoxSceneOf<D> build_box_scene(const Config& config, const std::array<double, D>&
     s.domain.periodic[d] = periodic;
     s.domain.lo[d] = periodic ? 0.0 : -layers * dx;
     s.domain.hi[d] = periodic ? box[d] : box[d] + layers * dx;
+    // A face without a wall (the open top of a tank) lets fluid out (run/outflow.hpp).
+    for (int side = 0; side < 2; ++side) s.domain.outflow[d][side] = !periodic && !walls[d][side].present;
   }
   s.walls = walls;
 
