@@ -368,8 +368,9 @@ TEST_CASE("health limits: the elastic energy of a block of particles is per_mass
 TEST_CASE("health check: the scan finds each failure it tests, with its cause, on 1, 2 and 3 threads", "[health][threads]") {
   // The dam break at dp = 0.04 (1,250 fluid particles, three blocks of the scan): a state that
   // passes, then one fault at a time in a particle of the middle block: NaN or Inf in a position, a
-  // velocity and the density field, a density <= 0. A particle outside the domain is no failure
-  // but an exit, which the check notes (run/outflow.hpp).
+  // velocity and the density field, a particle beyond a face closed to outflow, a density <= 0. A
+  // particle beyond a face open to outflow is no failure but an exit, which the check notes
+  // (run/outflow.hpp).
   const Evaluated e(shipped("dam_break", {"discretization.spacing=0.04"}));
   const auto& sys = e.sys;
   const auto& y0 = e.y0;
@@ -389,9 +390,14 @@ TEST_CASE("health check: the scan finds each failure it tests, with its cause, o
       {L.velocity(0) + p, inf, "NaN/Inf in the velocity (component 0)"},
       {L.velocity(1) + p, std::nan(""), "NaN/Inf in the velocity (component 1)"},
       {L.density() + p, std::nan(""), "NaN/Inf in a state field"},
+      // Below the floor: a face closed to outflow (the dam break's floor), so through a wall.
+      {L.position(1) + p, sys->domain().lo[1] - 0.5, "particle left the domain in direction 1 through a face closed to outflow"},
   };
+  // Beyond the dam break's open faces (a side, the top): exits, not failures.
+  REQUIRE(sys->domain().outflow[0][1]);
+  REQUIRE(sys->domain().outflow[1][1]);
   const std::vector<std::pair<std::size_t, double>> exits = {{L.position(0) + p, sys->domain().hi[0] + 0.5},
-                                                             {L.position(1) + p, sys->domain().lo[1] - 0.5}};
+                                                             {L.position(1) + p, sys->domain().hi[1] + 0.5}};
   for (const int threads : {1, 2, 3}) {
     INFO("threads " << threads);
     omp_set_num_threads(threads);
