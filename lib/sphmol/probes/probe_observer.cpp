@@ -211,6 +211,7 @@ std::size_t ProbeObserver<D>::columns(const Series& s) {
 
 template <int D>
 void ProbeObserver<D>::append_rows(Series& s, double t, const std::vector<double>& values) {
+  if (on_sample) on_sample(s.cfg.name, t, values);
   std::string& rows = s.rows;
   const ProbeConfig& c = s.cfg;
   const std::string tt = cell(t);

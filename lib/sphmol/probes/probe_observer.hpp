@@ -7,6 +7,7 @@
 // samples at the output times (and t = 0), or every `every` seconds from t = 0, when the run loop
 // stops for it (next_time / at_time). The files go through OutputSink::write (atomic, in the run's
 // ledger); the rows so far are the observer's checkpoint state, so a restart continues each series.
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -40,6 +41,11 @@ class ProbeObserver final : public OutputObserver<D> {
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
   void annotate(nlohmann::json& summary) const override;
+
+  // Called with every sample's values as its rows are made of them (probe name, t, values in the
+  // order of the row's columns): for tests that compare them bit for bit, which the files' 12
+  // digits do not show.
+  std::function<void(const std::string&, double, const std::vector<double>&)> on_sample;
 
   // The file a probe writes.
   static std::string file_name(const std::string& probe) { return "probe_" + probe + ".csv"; }
