@@ -15,6 +15,7 @@
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/probes/fluid_sampler.hpp"
 #include "sphmol/probes/height_gauge.hpp"
+#include "sphmol/probes/probe_terms.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 
 namespace sphmol {
@@ -293,72 +294,6 @@ geometry::Vec<D> ProbeObserver<D>::gauge_line(const Series& s) {
   return at;
 }
 
-namespace {
-
-// The probes' terms of one sample on one rank, in a byte buffer for rank 0: per series, the count,
-// the keys and the values (a fixed number per term).
-struct TermKey {
-  std::uint64_t a, b, c;  // summed in the order of (a, b, c)
-  bool operator<(const TermKey& o) const { return std::tie(a, b, c) < std::tie(o.a, o.b, o.c); }
-};
-
-struct Terms {
-  std::vector<TermKey> keys;
-  std::vector<double> values;
-  std::size_t stride = 1;
-  void add(const TermKey& k, std::initializer_list<double> v) {
-    keys.push_back(k);
-    values.insert(values.end(), v);
-  }
-  void write(std::vector<std::byte>& out) const {
-    const std::uint64_t n = keys.size();
-    const auto put = [&](const void* p, std::size_t bytes) {
-      const auto* b = static_cast<const std::byte*>(p);
-      out.insert(out.end(), b, b + bytes);
-    };
-    put(&n, sizeof n);
-    put(keys.data(), n * sizeof(TermKey));
-    put(values.data(), n * stride * sizeof(double));
-  }
-  // Appends the terms at `at` in `in`, moving `at` past them.
-  void read(const std::vector<std::byte>& in, std::size_t& at) {
-    std::uint64_t n = 0;
-    std::memcpy(&n, in.data() + at, sizeof n);
-    at += sizeof n;
-    const std::size_t k0 = keys.size(), v0 = values.size();
-    runs.push_back(k0);
-    keys.resize(k0 + n);
-    values.resize(v0 + n * stride);
-    if (n == 0) return;
-    std::memcpy(keys.data() + k0, in.data() + at, n * sizeof(TermKey));
-    at += n * sizeof(TermKey);
-    std::memcpy(values.data() + v0, in.data() + at, n * stride * sizeof(double));
-    at += n * stride * sizeof(double);
-  }
-  // The terms' indices in key order. Each rank makes its terms in key order (its own particles in
-  // global-id order, visited as the serial sums visit them), so the ranks' runs are merged.
-  std::vector<std::size_t> order() const {
-    std::vector<std::size_t> o(keys.size());
-    for (std::size_t k = 0; k < o.size(); ++k) o[k] = k;
-    const auto less = [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; };
-    std::vector<std::size_t> bounds = runs;
-    bounds.push_back(o.size());
-    bool sorted_runs = true;
-    for (std::size_t r = 0; r + 1 < bounds.size() && sorted_runs; ++r)
-      sorted_runs = std::is_sorted(keys.begin() + static_cast<long>(bounds[r]), keys.begin() + static_cast<long>(bounds[r + 1]));
-    if (!sorted_runs) {
-      std::sort(o.begin(), o.end(), less);
-      return o;
-    }
-    for (std::size_t r = 1; r + 1 < bounds.size(); ++r)
-      std::inplace_merge(o.begin(), o.begin() + static_cast<long>(bounds[r]), o.begin() + static_cast<long>(bounds[r + 1]), less);
-    return o;
-  }
-  std::vector<std::size_t> runs;  // where each rank's terms start
-};
-
-}  // namespace
-
 template <int D>
 void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
   // Every rank passes the sampling times alike; the same series are due on every rank.
@@ -401,12 +336,12 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
     fluid.emplace(xp, volume.data(), n, W_, h_, support_, whole.domain(), box);
   }
 
-  std::vector<Terms> terms(which.size());
+  std::vector<ProbeTerms> terms(which.size());
   std::string missing;  // a force pair whose wall is not on the rank (the halo reaches a list radius)
   for (std::size_t w = 0; w < which.size(); ++w) {
     const Series& s = series_[which[w]];
     const ProbeConfig& c = s.cfg;
-    Terms& T = terms[w];
+    ProbeTerms& T = terms[w];
     if (c.type == "point" || c.type == "line" || c.type == "plane") {
       // (point, cell, id) -> w and the sampled values, column by column.
       T.stride = 1 + columns(s);
@@ -479,20 +414,20 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
     throw std::logic_error("force probe over ranks: a rank lacks a wall neighbour of its own fluid" +
                            (missing.empty() ? std::string() : " (" + missing + ")"));
   std::vector<std::byte> mine;
-  for (const Terms& T : terms) T.write(mine);
+  for (const ProbeTerms& T : terms) T.write(mine);
   const std::vector<std::byte> all = piece.gather_bytes(mine);
   if (piece.rank != 0) return;
 
   // Rank 0: every rank's terms, added in the serial order.
-  std::vector<Terms> merged(which.size());
+  std::vector<ProbeTerms> merged(which.size());
   for (std::size_t w = 0; w < which.size(); ++w) merged[w].stride = terms[w].stride;
   std::size_t at = 0;
   for (int r = 0; r < piece.ranks; ++r)
-    for (Terms& T : merged) T.read(all, at);
+    for (ProbeTerms& T : merged) T.read(all, at);
   for (std::size_t w = 0; w < which.size(); ++w) {
     Series& s = series_[which[w]];
     const ProbeConfig& c = s.cfg;
-    const Terms& T = merged[w];
+    const ProbeTerms& T = merged[w];
     const std::vector<std::size_t> order = T.order();
     std::vector<double> values;
     if (c.type == "point" || c.type == "line" || c.type == "plane") {
