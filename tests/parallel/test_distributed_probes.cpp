@@ -2,8 +2,9 @@
 // at_time_pieces): each rank sends rank 0 only its terms of the probes' sums (its own fluid near the
 // sample points and gauge lines, its own fluid's pairs with the force probe's walls), which rank 0
 // adds in the serial order. On every rank count the probe files are the serial run's byte for byte
-// (point, line, height gauge and force probes, a periodic channel's line across its period, and
-// after a restart from a checkpoint written over the ranks), and a probe sample gathers neither the
+// (point, line, plane, height gauge and force probes, a 3D piston's force on its moving plate, a
+// periodic channel's line across its period, and after a restart from a checkpoint written over
+// the ranks), and a probe sample gathers neither the
 // whole state nor the whole fields: the summary's counts of those gathers do not grow with the
 // number of samples. The values themselves (the files print 12 digits) are the serial sample's to
 // the bit, at a state the leapfrog has moved. Rank 0 runs the serial references.
@@ -117,6 +118,16 @@ TEST_CASE("distributed probes: sampled from each rank's own particles, the seria
   }
   SECTION("the same with artificial viscosity (the force reads the sound speeds)") {
     check_probes_equal_serial(tank("0.004", {"discretization.artificial_viscosity.alpha=0.1"}), "tank-av", 9);
+  }
+  SECTION("a 3D tank with a moving piston: its force, gauges and a plane") {
+    std::string yaml = test_support::slurp(source("examples/piston_3d.yaml"));
+    REQUIRE(yaml.find("\nprobes:") != std::string::npos);
+    yaml += R"(
+  - {name: slab, type: plane, origin: [0.1, 0.02, 0.02], edge_1: [0.8, 0.0, 0.0], edge_2: [0.0, 0.15, 0.1], points: [7, 4], fields: [p, velocity], every: 0.005}
+)";
+    check_probes_equal_serial(load_config_string(yaml, {"time.t_end=0.03", "output.times=[0.015,0.03]", "output.plots=false",
+                                                        "output.vtk=false"}),
+                              "piston", 5);
   }
   SECTION("a periodic channel: a line across the period") {
     std::string yaml = test_support::slurp(source("verification/poiseuille.yaml"));
