@@ -367,6 +367,8 @@ void DistributedSystem<D>::plan() {
   halo_at_.resize(nh);
   for (std::size_t k = 0; k < order.size(); ++k)
     (order[k] < no ? owned_at_[order[k]] : halo_at_[order[k] - no]) = static_cast<std::uint32_t>(k);
+  local_gid_.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) local_gid_[k] = gid_of(order[k]);
   // The viscous operator's rows and columns of the local fluid particles: owned fluid o is row and
   // column o, halo particle q column nfo + q (velocity_halo.hpp).
   local_row_.assign(nf_local_, ViscousOperator::kNoRow);

@@ -128,8 +128,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void refresh_local(double t, const double* y);
   const SphSystem<D>& local_system() const { return *local_; }
   const std::vector<double>& local_state() const { return y_local_; }
-  // The local system's row of each owned particle.
+  // The local system's row of each owned particle, and the global id of each local row (fluid and
+  // walls, ascending; ghost images have none).
   const std::vector<std::uint32_t>& owned_rows() const { return owned_at_; }
+  const std::vector<std::uint64_t>& local_gid() const { return local_gid_; }
 
   // Owned particles: fluid first; the global id of each; the density of the latest evaluation.
   const Particles<D>& owned() const { return owned_; }
@@ -229,6 +231,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // the whole system's
   std::shared_ptr<bool> watching_ = std::make_shared<bool>(true);
   std::vector<std::uint32_t> owned_at_, halo_at_;  // local index of each owned / halo particle
+  std::vector<std::uint64_t> local_gid_;          // global id of each local row
   std::size_t nf_local_ = 0;
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_;    // the local state, made at output times (refresh_local)

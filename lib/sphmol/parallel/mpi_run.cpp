@@ -32,7 +32,10 @@ class MpiRun final : public PartitionedRun<D> {
 
   OdeSystem& system() override { return sys_; }
   std::vector<double>& state() override { return y_; }
-  void gather(std::vector<double>& whole) override { sys_.gather(y_.data(), whole); }
+  void gather(std::vector<double>& whole) override {
+    ++whole_state_gathers_;
+    sys_.gather(y_.data(), whole);
+  }
   std::vector<double> whole_fluid_density() override { return sys_.whole_fluid_density(); }
   int check(double t, double, int signal) override {
     if (!health_) throw std::logic_error("MpiRun::check before start_health_check");
@@ -47,10 +50,12 @@ class MpiRun final : public PartitionedRun<D> {
   }
   int largest_signal(int signal) override { return comm_.max(signal); }
   void whole_fields(double t, SphSystem<D>& whole) override {
+    ++whole_field_gathers_;
     refresh(t);
     gather_whole_fields(comm_, sys_, comm_.rank() == 0 ? &whole : nullptr);
   }
   OwnedPiece<D> owned_piece(double t) override {
+    ++owned_pieces_;
     refresh(t);
     OwnedPiece<D> p;
     p.system = &sys_.local_system();
@@ -80,10 +85,14 @@ class MpiRun final : public PartitionedRun<D> {
       for (std::size_t g = 0; g < sources.size(); ++g)
         if (sources[g] < owned_fluid.size() && owned_fluid[sources[g]]) p.ghost_rows.push_back(ghosts->base() + g);
     }
+    p.row_ids.assign(sys_.local_gid().begin(), sys_.local_gid().end());
     p.rank = comm_.rank();
     p.ranks = comm_.size();
     p.barrier = [this] { comm_.barrier(); };
     p.sum = [this](std::uint64_t v) { return comm_.sum(v); };
+    p.min = [this](double v) { return comm_.min(v); };
+    p.max = [this](double v) { return comm_.max(v); };
+    p.gather_bytes = [this](const std::vector<std::byte>& v) { return comm_.gather_v(v, 0); };
     return p;
   }
   void barrier() override { comm_.barrier(); }
@@ -221,8 +230,13 @@ class MpiRun final : public PartitionedRun<D> {
             {"verlet_pairs_halo_rows", redundant},
             {"exchange_seconds", exchange},
             {"rhs_seconds", rhs},
-            {"output", "each rank writes its own particles' VTK pieces; the whole state and the fields of the ranks' own "
-                       "particles are gathered on rank 0, which measures and writes every other file"}};
+            {"whole_state_gathers", whole_state_gathers_},
+            {"whole_field_gathers", whole_field_gathers_},
+            {"owned_pieces", owned_pieces_},
+            {"output", "each rank writes its own particles' VTK pieces; probes sample at their own times from each "
+                       "rank's own particles, rank 0 adding the ranks' terms in the serial order; at output times, "
+                       "checkpoints and the end the whole state and the fields of the ranks' own particles are "
+                       "gathered on rank 0, which measures and writes every other file"}};
   }
 
  private:
@@ -234,6 +248,9 @@ class MpiRun final : public PartitionedRun<D> {
   const SphSystem<D>* whole_;  // the scene as every rank builds it (never evaluated here)
   std::vector<std::string> whole_terms_;
   long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
+  // Collective calls (the same on every rank): whole states and whole fields gathered on rank 0,
+  // and pieces made (VTK outputs, probe samples).
+  long whole_state_gathers_ = 0, whole_field_gathers_ = 0, owned_pieces_ = 0;
   std::optional<std::tuple<double, long, long, long>> refreshed_;  // refresh(): (t, evaluations, repartitions, plans)
 };
 

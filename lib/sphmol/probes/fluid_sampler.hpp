@@ -9,6 +9,7 @@
 // directions wrap.
 #include <array>
 #include <limits>
+#include <utility>
 
 #include "sphmol/probes/point_bins.hpp"
 
@@ -24,6 +25,18 @@ class FluidSampler {
   FluidSampler(const std::array<const double*, D>& x, const double* volume, std::size_t n, KernelW W, double h,
                double support_h, const Domain<D>& domain)
       : bins_(x, n, support_h * h, domain), volume_(volume), W_(W), h_(h) {}
+  // Over ranks: a rank's own particles in the cells of the whole fluid's box (PointBins::bounds of
+  // every rank's fluid), so that weights() visits the whole sampler's neighbours in its order.
+  FluidSampler(const std::array<const double*, D>& x, const double* volume, std::size_t n, KernelW W, double h,
+               double support_h, const Domain<D>& domain, const std::pair<Vec, Vec>& box)
+      : bins_(x, n, support_h * h, domain, box), volume_(volume), W_(W), h_(h) {}
+
+  // The terms of the sums below: f(cell, j, w) with w = V_j W, in the order the sums add them
+  // (PointBins::for_each_near_ordered: by cell, then j).
+  template <class F>
+  void weights(const Vec& p, F&& f) const {
+    bins_.for_each_near_ordered(p, [&](int cell, std::size_t j, double r, const auto&) { f(cell, j, volume_[j] * W_(r, h_)); });
+  }
 
   // sum_j V_j W: the kernel sum of the fluid at p.
   double kernel_sum(const Vec& p) const {

@@ -2,11 +2,16 @@
 // Points binned into cells at least `radius` wide, so that the points within `radius` of any
 // position are found in the 3^D cells around it; periodic directions wrap (minimum image). Built
 // once per state by the probes (fluid_sampler.hpp, wall_force.hpp): one query costs its neighbours.
+// A query visits the cells in a fixed order and each cell's points in ascending index, so a sum
+// over the neighbours has a definite order; over ranks each rank bins its own points in the cells
+// of the whole set (the box of all ranks' points) and reports each neighbour's visit number
+// (for_each_near_ordered), so that the root can add the ranks' terms in that same order.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "sphmol/core/domain.hpp"
@@ -19,17 +24,33 @@ class PointBins {
  public:
   using Vec = geometry::Vec<D>;
 
+  // The smallest and largest coordinate of n points per axis (+inf, -inf without points): min and
+  // max are exact, so the box of several sets is that of their union.
+  static std::pair<Vec, Vec> bounds(const std::array<const double*, D>& x, std::size_t n) {
+    Vec lo, hi;
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::numeric_limits<double>::infinity();
+      hi[d] = -lo[d];
+      for (std::size_t j = 0; j < n; ++j) {
+        lo[d] = std::min(lo[d], x[d][j]);
+        hi[d] = std::max(hi[d], x[d][j]);
+      }
+    }
+    return {lo, hi};
+  }
+
   // x: D arrays of n positions (kept by pointer: they must outlive the bins).
   PointBins(const std::array<const double*, D>& x, std::size_t n, double radius, const Domain<D>& domain)
+      : PointBins(x, n, radius, domain, bounds(x, n)) {}
+  // The same with the cells of the box `box` (bounds() of a set that includes these points: the
+  // whole set's, over ranks), so that a query visits the cells of the whole set's bins.
+  PointBins(const std::array<const double*, D>& x, std::size_t n, double radius, const Domain<D>& domain,
+            const std::pair<Vec, Vec>& box)
       : x_(x), radius_(radius), domain_(domain) {
     for (int d = 0; d < D; ++d) {
-      lo_[d] = std::numeric_limits<double>::infinity();
-      double hi = -lo_[d];
-      for (std::size_t j = 0; j < n; ++j) {
-        lo_[d] = std::min(lo_[d], x[d][j]);
-        hi = std::max(hi, x[d][j]);
-      }
-      if (n == 0) lo_[d] = hi = 0.0;
+      lo_[d] = box.first[d];
+      double hi = box.second[d];
+      if (!(lo_[d] <= hi)) lo_[d] = hi = 0.0;  // no points at all
       if (domain.periodic[d]) {
         lo_[d] = domain.lo[d];
         hi = domain.hi[d];
@@ -58,6 +79,14 @@ class PointBins {
   // Calls f(j, r, dx) for every point j with r = |p - x_j| < radius, dx = p - x_j (minimum image).
   template <class F>
   void for_each_near(const Vec& p, F&& f) const {
+    for_each_near_ordered(p, [&](int, std::size_t j, double r, const std::array<double, D>& dx) { f(j, r, dx); });
+  }
+
+  // The same, in the same order, calling f(cell, j, r, dx) with the number of j's cell in the
+  // query's visit (0 to 3^D - 1): the visit is ordered by (cell, j).
+  template <class F>
+  void for_each_near_ordered(const Vec& p, F&& f) const {
+    int visit = 0;
     std::array<long, D> base{}, k{};
     for (int d = 0; d < D; ++d) {
       // Outside the points' box in a bounded direction: the nearest cell row still holds every
@@ -87,8 +116,9 @@ class PointBins {
             dx[d] = domain_.min_image(d, p[d] - x_[d][j]);
             r2 += dx[d] * dx[d];
           }
-          if (r2 < radius_ * radius_) f(j, std::sqrt(r2), dx);
+          if (r2 < radius_ * radius_) f(visit, j, std::sqrt(r2), dx);
         }
+      ++visit;
       int d = 0;
       for (; d < D; ++d) {
         if (++k[d] <= 1) break;

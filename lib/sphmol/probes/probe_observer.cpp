@@ -4,6 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <tuple>
 #include <iomanip>
 #include <sstream>
 
@@ -11,6 +15,7 @@
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/probes/fluid_sampler.hpp"
 #include "sphmol/probes/height_gauge.hpp"
+#include "sphmol/probes/probe_terms.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 
 namespace sphmol {
@@ -199,6 +204,36 @@ double ProbeObserver<D>::next_time() const {
 }
 
 template <int D>
+std::size_t ProbeObserver<D>::columns(const Series& s) {
+  std::size_t n = 0;
+  for (const auto& f : s.cfg.fields) n += f == "velocity" ? D : 1;
+  return n;
+}
+
+template <int D>
+void ProbeObserver<D>::append_rows(Series& s, double t, const std::vector<double>& values) {
+  if (on_sample) on_sample(s.cfg.name, t, values);
+  std::string& rows = s.rows;
+  const ProbeConfig& c = s.cfg;
+  const std::string tt = cell(t);
+  if (c.type == "point" || c.type == "line" || c.type == "plane") {
+    const std::size_t n = columns(s);
+    for (std::size_t q = 0; q < s.points.size(); ++q) {
+      rows += tt;
+      if (c.type != "point")
+        for (int d = 0; d < D; ++d) (rows += ',') += cell(s.points[q][d]);
+      for (std::size_t k = 0; k < n; ++k) (rows += ',') += cell(values[q * n + k]);
+      rows += "\n";
+    }
+  } else {  // height gauge: one value; force: D
+    rows += tt;
+    for (const double v : values) (rows += ',') += cell(v);
+    rows += "\n";
+  }
+  s.dirty = true;
+}
+
+template <int D>
 void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t) {
   if (which.empty()) return;
   const auto& P = sys.particles();
@@ -215,28 +250,20 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
   // Fluid taken out of the run (run/outflow.hpp) has no volume: no probe sees it.
   for (std::size_t i = 0; i < nf; ++i) volume[i] = sys.is_retired(i) ? 0.0 : P.mass[i] / rho[i];
   const FluidSampler<D> fluid(xf, volume.data(), nf, W_, h_, support_, sys.domain());
-  const std::string tt = cell(t);
   for (const std::size_t k : which) {
     Series& s = series_[k];
-    std::string& rows = s.rows;
     const ProbeConfig& c = s.cfg;
+    std::vector<double> values;
     if (c.type == "point" || c.type == "line" || c.type == "plane") {
-      for (const auto& x : s.points) {
-        rows += tt;
-        if (c.type != "point")
-          for (int d = 0; d < D; ++d) rows += "," + cell(x[d]);
+      for (const auto& x : s.points)
         for (const auto& f : c.fields) {
-          if (f == "p") rows += "," + cell(fluid.interpolate(x, p.data()));
-          if (f == "rho") rows += "," + cell(fluid.interpolate(x, rho.data()));
+          if (f == "p") values.push_back(fluid.interpolate(x, p.data()));
+          if (f == "rho") values.push_back(fluid.interpolate(x, rho.data()));
           if (f == "velocity")
-            for (int d = 0; d < D; ++d) rows += "," + cell(fluid.interpolate(x, vf[d]));
+            for (int d = 0; d < D; ++d) values.push_back(fluid.interpolate(x, vf[d]));
         }
-        rows += "\n";
-      }
     } else if (c.type == "height_gauge") {
-      geometry::Vec<D> at{};
-      for (int d = 0; d + 1 < D; ++d) at[d] = c.at[d];
-      rows += tt + "," + cell(free_surface_height<D>(fluid, at, s.bottom, s.top, 0.25 * h_)) + "\n";
+      values.push_back(free_surface_height<D>(fluid, gauge_line(s), s.bottom, s.top, 0.25 * h_));
     } else {
       // Every particle where the RHS sees it: the fluid from the state, the walls at time t.
       std::array<std::vector<double>, D> xa, va;
@@ -255,12 +282,188 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
       st.p = p.data();
       st.c = sys.sound_speed().data();
       const auto F = wall_body_force<D>(P, st, c.body_index, dWdr_, h_, support_, sys.domain(), model_);
-      rows += tt;
-      for (int d = 0; d < D; ++d) rows += "," + cell(F[d]);
-      rows += "\n";
+      values.assign(F.begin(), F.end());
     }
-    s.dirty = true;
+    append_rows(s, t, values);
   }
+}
+
+template <int D>
+geometry::Vec<D> ProbeObserver<D>::gauge_line(const Series& s) {
+  geometry::Vec<D> at{};
+  for (int d = 0; d + 1 < D; ++d) at[d] = s.cfg.at[d];
+  return at;
+}
+
+template <int D>
+void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
+  // Every rank passes the sampling times alike; the same series are due on every rank.
+  const std::vector<std::size_t> which = due(t);
+  if (which.empty()) return;
+  const auto& P = whole.particles();  // the scene's particles by global id (masses, walls' motion)
+  const SphSystem<D>& local = *piece.system;
+  const auto& LL = local.layout();
+  const std::vector<double>& rho = local.density();
+  const std::vector<double>& p = local.pressure();
+  const std::vector<double>& cs = local.sound_speed();
+  const double* y = piece.y;
+  // The rank's own fluid in global-id order: positions and velocities from its state, volumes as
+  // the serial sample makes them.
+  const std::size_t n = piece.fluid_rows.size();
+  std::array<std::vector<double>, D> x, v;
+  std::array<const double*, D> xp{};
+  std::vector<double> volume(n);
+  for (int d = 0; d < D; ++d) {
+    x[d].resize(n);
+    v[d].resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      x[d][k] = y[LL.position(d) + piece.fluid_rows[k]];
+      v[d][k] = y[LL.velocity(d) + piece.fluid_rows[k]];
+    }
+    xp[d] = x[d].data();
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    volume[k] = P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
+  // The sampler's bins in the cells of the whole fluid's box, as the serial sampler bins the whole
+  // fluid: its neighbours are visited in the serial order, by (cell, global id).
+  const bool sampled = std::any_of(which.begin(), which.end(), [&](std::size_t k) { return series_[k].cfg.type != "force"; });
+  std::optional<FluidSampler<D>> fluid;
+  if (sampled) {
+    auto box = PointBins<D>::bounds(xp, n);
+    for (int d = 0; d < D; ++d) {
+      box.first[d] = piece.min(box.first[d]);
+      box.second[d] = piece.max(box.second[d]);
+    }
+    fluid.emplace(xp, volume.data(), n, W_, h_, support_, whole.domain(), box);
+  }
+
+  std::vector<ProbeTerms> terms(which.size());
+  std::string missing;  // a force pair whose wall is not on the rank (the halo reaches a list radius)
+  for (std::size_t w = 0; w < which.size(); ++w) {
+    const Series& s = series_[which[w]];
+    const ProbeConfig& c = s.cfg;
+    ProbeTerms& T = terms[w];
+    if (c.type == "point" || c.type == "line" || c.type == "plane") {
+      // (point, cell, id) -> w and the sampled values, column by column.
+      T.stride = 1 + columns(s);
+      for (std::size_t q = 0; q < s.points.size(); ++q)
+        fluid->weights(s.points[q], [&](int cell, std::size_t k, double wk) {
+          T.keys.push_back({q, static_cast<std::uint64_t>(cell), static_cast<std::uint64_t>(piece.fluid_ids[k])});
+          T.values.push_back(wk);
+          const std::size_t row = piece.fluid_rows[k];
+          for (const auto& f : c.fields) {
+            if (f == "p") T.values.push_back(p[row]);
+            if (f == "rho") T.values.push_back(rho[row]);
+            if (f == "velocity")
+              for (int d = 0; d < D; ++d) T.values.push_back(v[d][k]);
+          }
+        });
+    } else if (c.type == "height_gauge") {
+      // (level, cell, id) -> w.
+      const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
+      geometry::Vec<D> at = gauge_line(s);
+      for (std::size_t q = 0; q < z.size(); ++q) {
+        at[D - 1] = z[q];
+        fluid->weights(at, [&](int cell, std::size_t k, double wk) {
+          T.add({q, static_cast<std::uint64_t>(cell), static_cast<std::uint64_t>(piece.fluid_ids[k])}, {wk});
+        });
+      }
+    } else {
+      // (fluid id, neighbour number) -> the pair's D terms. The body's walls from the whole scene at
+      // t (every rank alike, in the serial bins); the fields of those near an owned fluid particle
+      // from the local system, whose halo holds them as the RHS reads them.
+      T.stride = D;
+      const WallBodyBins<D> walls(P, c.body_index, [&](int d, std::size_t j) { return P.wall_position(d, j, t); },
+                                  support_ * h_, whole.domain());
+      const auto end = [&](std::size_t row) {
+        WallPairEnd<D> e;
+        e.rho = rho[row];
+        e.p = p[row];
+        e.c = model_.artificial_viscosity ? cs[row] : 0.0;
+        return e;
+      };
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto i = static_cast<std::size_t>(piece.fluid_ids[k]);
+        geometry::Vec<D> xi;
+        WallPairEnd<D> a = end(piece.fluid_rows[k]);
+        for (int d = 0; d < D; ++d) {
+          xi[d] = x[d][k];
+          a.v[d] = v[d][k];
+        }
+        std::uint64_t seq = 0;
+        walls.near(xi, [&](std::size_t j, double r, const std::array<double, D>& dx) {
+          const std::uint64_t number = seq++;
+          if (r == 0.0) return;  // as the serial sum
+          const auto at = std::lower_bound(piece.row_ids.begin(), piece.row_ids.end(), static_cast<std::int64_t>(j));
+          if (at == piece.row_ids.end() || *at != static_cast<std::int64_t>(j)) {
+            if (missing.empty())
+              missing = "wall particle " + std::to_string(j) + " near fluid particle " + std::to_string(i);
+            return;
+          }
+          WallPairEnd<D> b = end(static_cast<std::size_t>(at - piece.row_ids.begin()));
+          for (int d = 0; d < D; ++d) b.v[d] = P.v[d][j];
+          const std::array<double, D> f = wall_pair_force<D>(P, i, j, a, b, r, dx, dWdr_, h_, model_);
+          T.keys.push_back({i, number, 0});
+          T.values.insert(T.values.end(), f.begin(), f.end());
+        });
+      }
+    }
+  }
+  // On every rank alike, rather than one rank leaving the others in the gather.
+  if (std::any_of(which.begin(), which.end(), [&](std::size_t k) { return series_[k].cfg.type == "force"; }) &&
+      piece.max(missing.empty() ? 0.0 : 1.0) > 0.0)
+    throw std::logic_error("force probe over ranks: a rank lacks a wall neighbour of its own fluid" +
+                           (missing.empty() ? std::string() : " (" + missing + ")"));
+  std::vector<std::byte> mine;
+  for (const ProbeTerms& T : terms) T.write(mine);
+  const std::vector<std::byte> all = piece.gather_bytes(mine);
+  if (piece.rank != 0) return;
+
+  // Rank 0: every rank's terms, added in the serial order.
+  std::vector<ProbeTerms> merged(which.size());
+  for (std::size_t w = 0; w < which.size(); ++w) merged[w].stride = terms[w].stride;
+  std::size_t at = 0;
+  for (int r = 0; r < piece.ranks; ++r)
+    for (ProbeTerms& T : merged) T.read(all, at);
+  for (std::size_t w = 0; w < which.size(); ++w) {
+    Series& s = series_[which[w]];
+    const ProbeConfig& c = s.cfg;
+    const ProbeTerms& T = merged[w];
+    const std::vector<std::size_t> order = T.order();
+    std::vector<double> values;
+    if (c.type == "point" || c.type == "line" || c.type == "plane") {
+      // FluidSampler::interpolate, column by column.
+      const std::size_t cols = columns(s);
+      values.assign(s.points.size() * cols, 0.0);
+      std::size_t o = 0;
+      for (std::size_t q = 0; q < s.points.size(); ++q) {
+        const std::size_t first = o;
+        while (o < order.size() && T.keys[order[o]].a == q) ++o;
+        for (std::size_t col = 0; col < cols; ++col) {
+          double num = 0.0, den = 0.0;
+          for (std::size_t e = first; e < o; ++e) {
+            const double* tv = T.values.data() + order[e] * T.stride;
+            num += tv[1 + col] * tv[0];
+            den += tv[0];
+          }
+          values[q * cols + col] = den > 0.0 ? num / den : std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+    } else if (c.type == "height_gauge") {
+      // FluidSampler::kernel_sum at each level.
+      const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
+      std::vector<double> sum(z.size(), 0.0);
+      for (const std::size_t e : order) sum[T.keys[e].a] += T.values[e];
+      values.push_back(surface_height(z, sum));
+    } else {
+      std::array<double, D> force{};
+      for (const std::size_t e : order)
+        for (int d = 0; d < D; ++d) force[d] -= T.values[e * D + d];
+      values.assign(force.begin(), force.end());
+    }
+    append_rows(s, t, values);
+  }
+  if (now_seconds() - last_flush_ >= kFlushSeconds) flush(out);
 }
 
 template <int D>

@@ -7,6 +7,7 @@
 // samples at the output times (and t = 0), or every `every` seconds from t = 0, when the run loop
 // stops for it (next_time / at_time). The files go through OutputSink::write (atomic, in the run's
 // ledger); the rows so far are the observer's checkpoint state, so a restart continues each series.
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -29,10 +30,22 @@ class ProbeObserver final : public OutputObserver<D> {
   double next_time() const override;
   void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   void pass_time(double t) override { due(t); }
+  // Over ranks, at the `every` probes' times: each rank's terms of the serial sums (the kernel
+  // weights and values of its own fluid near each sample point, the force pairs of its own fluid
+  // with the body's walls) go to rank 0, which adds them in the serial order (by cell and global
+  // id, as the serial bins visit them; by fluid particle, then wall), so the files are the serial
+  // run's to the bit, without gathering the whole state.
+  bool samples_pieces() const override { return true; }
+  void at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
   void annotate(nlohmann::json& summary) const override;
+
+  // Called with every sample's values as its rows are made of them (probe name, t, values in the
+  // order of the row's columns): for tests that compare them bit for bit, which the files' 12
+  // digits do not show.
+  std::function<void(const std::string&, double, const std::vector<double>&)> on_sample;
 
   // The file a probe writes.
   static std::string file_name(const std::string& probe) { return "probe_" + probe + ".csv"; }
@@ -50,6 +63,11 @@ class ProbeObserver final : public OutputObserver<D> {
   // The `every` series with a sample time at t (within round-off), moved past it.
   std::vector<std::size_t> due(double t);
   void sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t);
+  // The sampled values of one row group (point, line, plane: columns() per point; height gauge: 1;
+  // force: D) as the series' rows at t.
+  void append_rows(Series& s, double t, const std::vector<double>& values);
+  static std::size_t columns(const Series& s);
+  static geometry::Vec<D> gauge_line(const Series& s);  // a height gauge's line (vertical coordinate 0)
   void flush(const OutputSink& out);
 
   std::vector<Series> series_;

@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sphmol/core/domain.hpp"
@@ -35,7 +36,8 @@ struct WallForceModel {
 };
 
 // The current state, all particles in Particles order (fluid [0, n_fluid), walls after): positions
-// (walls where the solver puts them at t), velocities, densities, pressures and sound speeds.
+// (the fluid's; the walls' are where the solver puts them at t), velocities, densities, pressures
+// and sound speeds.
 template <int D>
 struct WallForceState {
   std::array<const double*, D> x{}, v{};
@@ -44,54 +46,101 @@ struct WallForceState {
   const double* c = nullptr;  // read only with artificial viscosity
 };
 
-// dWdr(r, h): the kernel's radial derivative; support: its radius in units of h.
+// One fluid particle or wall particle of a pair as the force sums read it.
+template <int D>
+struct WallPairEnd {
+  std::array<double, D> v{};
+  double rho = 0.0, p = 0.0, c = 0.0;
+};
+
+// The body's part of one pair, -m_i a_ij (per axis; its sum over the pairs is the force): fluid
+// particle i and wall particle j, their indices in P (the whole scene's particles: masses, wall
+// normals and depths, viscosities), at distance r > 0 with dx = x_i - x_j.
+template <int D>
+std::array<double, D> wall_pair_force(const Particles<D>& P, std::size_t i, std::size_t j, const WallPairEnd<D>& a,
+                                      const WallPairEnd<D>& b, double r, const std::array<double, D>& dx,
+                                      double (*dWdr)(double, double), double h, const WallForceModel& model) {
+  const double eta2 = 0.01 * h * h;
+  const double F = dWdr(r, h) / r;
+  const double mj = P.mass[j];
+  const double pi_i = a.p / (a.rho * a.rho);
+  // Pressure: the coefficient of dx in a_ij.
+  double cx = model.momentum_116 ? -mj * (a.p + b.p) / (a.rho * b.rho) * F : -mj * (pi_i + b.p / (b.rho * b.rho)) * F;
+  double vx = 0.0;
+  for (int d = 0; d < D; ++d) vx += (a.v[d] - b.v[d]) * dx[d];
+  if (model.artificial_viscosity) cx -= mj * model.pi(vx, r * r, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho)) * F;
+  double cv = 0.0;
+  if (model.viscous) {
+    double beta = P.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
+    if (model.morris_wall_velocity && beta > 0.0) {
+      double dA = -P.wall_depth[j];
+      for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
+      beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;
+    }
+    // A wall pair takes the fluid particle's mu (physics/morris_viscosity.hpp).
+    const double mu = P.viscosity.empty() ? model.dynamic_viscosity : P.viscosity[i];
+    cv = mj * 2.0 * mu / (a.rho * b.rho) * F * r * r / (r * r + eta2) * beta;
+  }
+  std::array<double, D> f{};
+  for (int d = 0; d < D; ++d) f[d] = P.mass[i] * (cx * dx[d] + cv * (a.v[d] - b.v[d]));
+  return f;
+}
+
+// The wall particles of one body, binned by the kernel support; x(d, j): coordinate d of wall
+// particle j (index in P). Over ranks every rank builds them from the whole scene alone.
+template <int D>
+class WallBodyBins {
+ public:
+  template <class X>
+  WallBodyBins(const Particles<D>& P, int body, X&& x, double radius, const Domain<D>& domain) {
+    for (std::size_t j = P.n_fluid; j < P.size(); ++j)
+      if (P.body[j] == body) walls_.push_back(j);
+    std::array<const double*, D> xp{};
+    for (int d = 0; d < D; ++d) {
+      for (const std::size_t j : walls_) x_[d].push_back(x(d, j));
+      xp[d] = x_[d].data();
+    }
+    bins_.emplace(xp, walls_.size(), radius, domain);
+  }
+  // f(j, r, dx) for the body's walls j (indices in P) within the radius of xi, dx = xi - x_j, in
+  // the order the force sums them.
+  template <class F>
+  void near(const geometry::Vec<D>& xi, F&& f) const {
+    bins_->for_each_near(xi, [&](std::size_t k, double r, const std::array<double, D>& dx) { f(walls_[k], r, dx); });
+  }
+
+ private:
+  std::vector<std::size_t> walls_;
+  std::array<std::vector<double>, D> x_;
+  std::optional<PointBins<D>> bins_;
+};
+
+// dWdr(r, h): the kernel's radial derivative; support: its radius in units of h. Sums over the
+// fluid particles i in index order, and for each over its wall neighbours in the bins' order.
 template <int D>
 std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceState<D>& s, int body,
                                       double (*dWdr)(double, double), double h, double support,
                                       const Domain<D>& domain, const WallForceModel& model) {
-  std::vector<std::size_t> walls;
-  for (std::size_t j = P.n_fluid; j < P.size(); ++j)
-    if (P.body[j] == body) walls.push_back(j);
-  std::array<std::vector<double>, D> xw;
-  std::array<const double*, D> xp{};
-  for (int d = 0; d < D; ++d) {
-    for (const std::size_t j : walls) xw[d].push_back(s.x[d][j]);
-    xp[d] = xw[d].data();
-  }
-  const PointBins<D> bins(xp, walls.size(), support * h, domain);
-  const double eta2 = 0.01 * h * h;
+  const WallBodyBins<D> bins(P, body, [&](int d, std::size_t j) { return s.x[d][j]; }, support * h, domain);
+  const auto end = [&](std::size_t k) {
+    WallPairEnd<D> e;
+    for (int d = 0; d < D; ++d) e.v[d] = s.v[d][k];
+    e.rho = s.rho[k];
+    e.p = s.p[k];
+    e.c = model.artificial_viscosity ? s.c[k] : 0.0;
+    return e;
+  };
   std::array<double, D> force{};
   for (std::size_t i = 0; i < P.n_fluid; ++i) {
     if (P.kind[i] == Kind::Out) continue;  // taken out of the run (run/outflow.hpp): pairs with no wall
     geometry::Vec<D> xi;
     for (int d = 0; d < D; ++d) xi[d] = s.x[d][i];
-    const double pi_i = s.p[i] / (s.rho[i] * s.rho[i]);
-    bins.for_each_near(xi, [&](std::size_t k, double r, const std::array<double, D>& dx) {
+    const WallPairEnd<D> a = end(i);
+    bins.near(xi, [&](std::size_t j, double r, const std::array<double, D>& dx) {
       if (r == 0.0) return;  // coincident particles exert no force (dx = 0)
-      const std::size_t j = walls[k];
-      const double F = dWdr(r, h) / r;
-      const double mj = P.mass[j];
-      // Pressure: the coefficient of dx in a_ij.
-      double cx = model.momentum_116 ? -mj * (s.p[i] + s.p[j]) / (s.rho[i] * s.rho[j]) * F
-                                     : -mj * (pi_i + s.p[j] / (s.rho[j] * s.rho[j])) * F;
-      double vx = 0.0;
-      for (int d = 0; d < D; ++d) vx += (s.v[d][i] - s.v[d][j]) * dx[d];
-      if (model.artificial_viscosity)
-        cx -= mj * model.pi(vx, r * r, h, 0.5 * (s.c[i] + s.c[j]), 0.5 * (s.rho[i] + s.rho[j])) * F;
-      double cv = 0.0;
-      if (model.viscous) {
-        double beta = P.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
-        if (model.morris_wall_velocity && beta > 0.0) {
-          double dA = -P.wall_depth[j];
-          for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
-          beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;
-        }
-        // A wall pair takes the fluid particle's mu (physics/morris_viscosity.hpp).
-        const double mu = P.viscosity.empty() ? model.dynamic_viscosity : P.viscosity[i];
-        cv = mj * 2.0 * mu / (s.rho[i] * s.rho[j]) * F * r * r / (r * r + eta2) * beta;
-      }
+      const std::array<double, D> f = wall_pair_force<D>(P, i, j, a, end(j), r, dx, dWdr, h, model);
       // The body receives -m_i a_ij.
-      for (int d = 0; d < D; ++d) force[d] -= P.mass[i] * (cx * dx[d] + cv * (s.v[d][i] - s.v[d][j]));
+      for (int d = 0; d < D; ++d) force[d] -= f[d];
     });
   }
   return force;

@@ -93,6 +93,11 @@ class OutputObserver {
   // (infinity: none); the run loop stops there too and calls at_time (after refresh_fields).
   virtual double next_time() const { return std::numeric_limits<double>::infinity(); }
   virtual void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // Over several ranks an observer that samples_pieces() is called at its own times on every rank,
+  // with the rank's own particles at (t, the state), instead of at_time on rank 0 with the whole
+  // system: no whole state is gathered for it. `out` is the run's sink (enabled on rank 0 only).
+  virtual bool samples_pieces() const { return false; }
+  virtual void at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {}
   // Over several ranks, on the ranks other than 0 (which alone calls at_time): the sampling times
   // up to t pass as at_time passes them, without a sample, so that next_time() and with it the
   // times the run stops at stay the same on every rank.

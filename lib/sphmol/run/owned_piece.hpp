@@ -3,7 +3,8 @@
 // for the observers that write per-rank files (VTK pieces, run/vtk_observer.hpp). The rank's local
 // system holds its owned particles and halo copies of its neighbours' and has just been evaluated
 // at the output state, so the owned rows' fields (density, pressure, ...) are the whole system's;
-// only the owned rows are listed, so every particle is written by exactly one rank.
+// only the owned rows are listed, so every particle is written by exactly one rank. The probes
+// sample at their own times from the pieces too (probes/probe_observer.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -25,12 +26,20 @@ struct OwnedPiece {
   // by source, then by mirror set). A rank mirrors its halo fluid too; those images are written by
   // the halo particles' owners, so every image is written once.
   std::vector<std::size_t> ghost_rows;
+  // The global id of every fluid and wall row of `system` (owned and halo, ascending: the rows are
+  // in global-id order; ghost images have none), for the probes' pairs that reach into the halo.
+  std::vector<std::int64_t> row_ids;
   int rank = 0, ranks = 1;
   // Collective: returns on a rank once every rank has called it (a piece on disk before the
   // collection that names it).
   std::function<void()> barrier;
   // Collective: the sum of `v` over the ranks (whether any rank has ghost images to write).
   std::function<std::uint64_t(std::uint64_t)> sum;
+  // Collective: the smallest and the largest of `v` over the ranks (the probes' bins of the whole
+  // fluid's box), and every rank's bytes concatenated in rank order on rank 0 (empty elsewhere):
+  // the probes' terms, which rank 0 adds in the serial order.
+  std::function<double(double)> min, max;
+  std::function<std::vector<std::byte>(const std::vector<std::byte>&)> gather_bytes;
 };
 
 }  // namespace sphmol

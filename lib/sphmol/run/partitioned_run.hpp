@@ -7,7 +7,8 @@
 // state. At output times the whole state is gathered with the fields of each rank's own particles
 // (whole_fields()), and the root rank measures, writes the observers' files and the summary with
 // the whole system, as a serial run does, without evaluating it; observers that write per-rank
-// files (VTK pieces) get each rank's own particles instead (owned_piece()).
+// files (VTK pieces) get each rank's own particles instead (owned_piece()), as do the probes at
+// their own sampling times, which combine the ranks' terms on the root.
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -37,8 +38,9 @@ class PartitionedRun {
   // set on `whole` on the root rank (SphSystem::set_fields), from the ranks' evaluations of their
   // own particles: the whole system is never evaluated and never builds a neighbour list.
   virtual void whole_fields(double t, SphSystem<D>& whole) = 0;
-  // Collective, at an output time t: this rank's own particles with their fields at (t, state()),
-  // for the observers that write per-rank files. Valid until the next call on the run.
+  // Collective, at an output time or a probe sampling time t: this rank's own particles with their
+  // fields at (t, state()), for the observers that write per-rank files or sample each rank's own
+  // particles (probes with `every`). Valid until the next call on the run.
   virtual OwnedPiece<D> owned_piece(double t) = 0;
   // Collective: returns once every rank has called it.
   virtual void barrier() = 0;

@@ -234,8 +234,14 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   };
   const auto observe_own_times = [&] {
     bool refreshed = false;
+    std::optional<OwnedPiece<D>> piece;  // over ranks: the probes sample each rank's own particles
     for (auto& o : observers)
       if (o->next_time() <= t) {
+        if (part && o->samples_pieces()) {  // the same on every rank
+          if (!piece) piece = part->owned_piece(t);
+          o->at_time_pieces(*sys, *piece, t, out);
+          continue;
+        }
         if (!refreshed) {
           if (part) part->gather(y);  // collective: every rank has the same observers; the root receives
           whole_fields();

@@ -1,0 +1,253 @@
+// Probes over ranks at their own sampling times (`every`, probes/probe_observer.hpp,
+// at_time_pieces): each rank sends rank 0 only its terms of the probes' sums (its own fluid near the
+// sample points and gauge lines, its own fluid's pairs with the force probe's walls), which rank 0
+// adds in the serial order. On every rank count the probe files are the serial run's byte for byte
+// (point, line, plane, height gauge and force probes, a 3D piston's force on its moving plate, a
+// periodic channel's line across its period, and after a restart from a checkpoint written over
+// the ranks), and a probe sample gathers neither the
+// whole state nor the whole fields: the summary's counts of those gathers do not grow with the
+// number of samples. The values themselves (the files print 12 digits) are the serial sample's to
+// the bit, at a state the leapfrog has moved. Rank 0 runs the serial references.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sphmol/cases/case_module.hpp"
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#include "sphmol/probes/probe_observer.hpp"
+#include "sphmol/run/checkpoint.hpp"
+#include "sphmol/run/run_case.hpp"
+#include "sphmol/time/integrator.hpp"
+#include "run_into.hpp"
+#include "support/files.hpp"
+
+using namespace sphmol;
+using namespace sphmol::parallel;
+namespace fs = std::filesystem;
+using sphmol::parallel::testing::run_into;
+
+namespace {
+
+std::string source(const std::string& path) { return std::string(SPHMOL_SOURCE_DIR) + "/" + path; }
+
+std::vector<std::string> probe_files(const nlohmann::json& summary) {
+  std::vector<std::string> out;
+  for (const auto& f : summary["files"]) {
+    const std::string name = f.get<std::string>();
+    if (name.rfind("probe_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv") out.push_back(name);
+  }
+  return out;
+}
+
+// A scratch folder shared by the ranks (rank 0's process id), per test and rank count.
+fs::path scratch(const Communicator& comm, const std::string& name) {
+  const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
+  return fs::temp_directory_path() / ("sphmol-probes-" + name + "-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
+}
+
+// Rank 0: the probe files of the folders `a` and `b` (the serial run's list `files`) are the same
+// bytes. Returns how many were compared.
+std::size_t same_probe_files(const std::vector<std::string>& files, const fs::path& a, const fs::path& b) {
+  for (const auto& f : files) {
+    INFO(f);
+    const std::string serial = test_support::slurp(b / f);
+    CHECK(serial.size() > 0);
+    CHECK(test_support::slurp(a / f) == serial);
+  }
+  return files.size();
+}
+
+// The tank of examples/tank_obstacle_2d.yaml, coarse and short, with probes of every kind sampled
+// every `every` seconds (and a line and a force probe at the output times).
+Config tank(const std::string& every, const std::vector<std::string>& more = {}) {
+  std::string yaml = test_support::slurp(source("examples/tank_obstacle_2d.yaml"));
+  yaml = yaml.substr(0, yaml.find("\nprobes:")) + R"(
+probes:
+  - {name: bottom, type: point, at: [0.15, 0.05], fields: [p, rho, velocity], every: EVERY}
+  - {name: corner, type: point, at: [0.585, 0.015], fields: [velocity, p], every: EVERY}
+  - {name: dry, type: point, at: [0.3, 0.38], fields: [p], every: EVERY}
+  - {name: section, type: line, from: [0.05, 0.02], to: [0.55, 0.28], points: 9, fields: [rho, p], every: EVERY}
+  - {name: section_out, type: line, from: [0.05, 0.02], to: [0.55, 0.02], points: 7, fields: [p]}
+  - {name: surface, type: height_gauge, at: [0.15], every: EVERY}
+  - {name: surface_right, type: height_gauge, at: [0.5], range: [0.2, 0.35], every: EVERY}
+  - {name: block, type: force, body: block}
+  - {name: block_often, type: force, body: block, every: EVERY}
+)";
+  for (std::size_t at = yaml.find("EVERY"); at != std::string::npos; at = yaml.find("EVERY")) yaml.replace(at, 5, every);
+  std::vector<std::string> set = {"discretization.spacing=0.02", "time.t_end=0.02", "output.times=[0.01,0.02]",
+                                  "output.plots=false", "output.vtk=false"};
+  set.insert(set.end(), more.begin(), more.end());
+  return load_config_string(yaml, set);
+}
+
+// c over the ranks and (rank 0) serially: the same probe files. Returns the summary over the ranks.
+nlohmann::json check_probes_equal_serial(const Config& c, const std::string& name, std::size_t files_expected) {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const fs::path dir = scratch(comm, name);
+  const nlohmann::json split = run_into(c, &partitioner, dir / "split");
+  CHECK(split["status"] == "completed");
+  comm.barrier();
+  if (comm.rank() == 0) {
+    INFO(name << ", " << comm.size() << " ranks");
+    const nlohmann::json serial = run_into(c, nullptr, dir / "serial");
+    REQUIRE(serial["status"] == "completed");
+    const std::vector<std::string> files = probe_files(serial);
+    CHECK(probe_files(split) == files);
+    CHECK(same_probe_files(files, dir / "split", dir / "serial") == files_expected);
+  }
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(dir);
+  return split;
+}
+
+}  // namespace
+
+TEST_CASE("distributed probes: sampled from each rank's own particles, the serial files to the bit",
+          "[parallel][run][probes_reduced]") {
+  SECTION("a tank with a block: points, lines, height gauges and forces") {
+    check_probes_equal_serial(tank("0.002"), "tank", 9);
+  }
+  SECTION("the same with artificial viscosity (the force reads the sound speeds)") {
+    check_probes_equal_serial(tank("0.004", {"discretization.artificial_viscosity.alpha=0.1"}), "tank-av", 9);
+  }
+  SECTION("a 3D tank with a moving piston: its force, gauges and a plane") {
+    std::string yaml = test_support::slurp(source("examples/piston_3d.yaml"));
+    REQUIRE(yaml.find("\nprobes:") != std::string::npos);
+    yaml += R"(
+  - {name: slab, type: plane, origin: [0.1, 0.02, 0.02], edge_1: [0.8, 0.0, 0.0], edge_2: [0.0, 0.15, 0.1], points: [7, 4], fields: [p, velocity], every: 0.005}
+)";
+    check_probes_equal_serial(load_config_string(yaml, {"time.t_end=0.03", "output.times=[0.015,0.03]", "output.plots=false",
+                                                        "output.vtk=false"}),
+                              "piston", 5);
+  }
+  SECTION("a periodic channel: a line across the period") {
+    std::string yaml = test_support::slurp(source("verification/poiseuille.yaml"));
+    yaml += R"(
+probes:
+  - {name: across, type: line, from: [0.0, 5.0e-4], to: [5.0e-4, 5.0e-4], points: 11, fields: [velocity, rho], every: 0.005}
+  - {name: seam, type: point, at: [1.0e-6, 2.0e-5], fields: [velocity], every: 0.005}
+)";
+    check_probes_equal_serial(load_config_string(yaml, {"time.t_end=0.03", "output.times=[0.03]", "output.plots=false"}),
+                              "channel", 2);
+  }
+}
+
+TEST_CASE("distributed probes: a probe sample gathers neither the whole state nor the whole fields",
+          "[parallel][run][probes_reduced]") {
+  // The same run with 2 and with 10 samples per output interval: the gathers of the whole state and
+  // of the whole fields stay those of the output times, checkpoints and the end.
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const fs::path dir = scratch(comm, "gathers");
+  const nlohmann::json few = run_into(tank("0.005"), &partitioner, dir / "few");
+  const nlohmann::json many = run_into(tank("0.001"), &partitioner, dir / "many");
+  REQUIRE(few["status"] == "completed");
+  REQUIRE(many["status"] == "completed");
+  const auto& a = few["parallel"];
+  const auto& b = many["parallel"];
+  CHECK(b["whole_state_gathers"] == a["whole_state_gathers"]);
+  CHECK(b["whole_field_gathers"] == a["whole_field_gathers"]);
+  // Outputs at t = 0, 0.01 and 0.02 (with the case's measurement) and the end.
+  CHECK(a["whole_field_gathers"].get<long>() == 3);
+  CHECK(a["whole_state_gathers"].get<long>() == 3);
+  // One piece per sampling time: 0, 0.001, ..., 0.02.
+  CHECK(b["owned_pieces"].get<long>() == 21);
+  CHECK(a["owned_pieces"].get<long>() == 5);
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(dir);
+}
+
+TEST_CASE("distributed probes: a restart from a checkpoint written over the ranks continues the series",
+          "[parallel][run][probes_reduced][restart]") {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const fs::path dir = scratch(comm, "restart");
+  const Config c = tank("0.002", {"output.checkpoint_every=0.01"});
+  const nlohmann::json split = run_into(c, &partitioner, dir / "split");
+  REQUIRE(split["status"] == "completed");
+  comm.barrier();  // the checkpoint is on disk
+  RunOptions opt;
+  opt.write_files = true;
+  opt.output_dir = (dir / "continued").string();
+  opt.partitioner = &partitioner;
+  opt.restart_from = (dir / "split" / checkpoint_name(0.01)).string();
+  const nlohmann::json continued = run_case(c, opt);
+  CHECK(continued["status"] == "completed");
+  comm.barrier();
+  if (comm.rank() == 0) {
+    const nlohmann::json serial = run_into(c, nullptr, dir / "serial");
+    REQUIRE(serial["status"] == "completed");
+    const std::vector<std::string> files = probe_files(serial);
+    CHECK(same_probe_files(files, dir / "continued", dir / "serial") == 9);
+    CHECK(same_probe_files(files, dir / "split", dir / "serial") == 9);
+  }
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(dir);
+}
+
+TEST_CASE("distributed probes: the sampled values are the serial sample's to the bit", "[parallel][probes_reduced]") {
+  // The tank advanced a few leapfrog steps over the ranks and serially (the same state, to the bit),
+  // then sampled once each way; every value of every probe compared as bits.
+  const Communicator comm;
+  const Config c = tank("0.002");
+  const double t_sample = 0.004;
+  const auto advance = [&](OdeSystem& ode, double* y) {
+    auto integrator = make_integrator(c.time);
+    integrator->initialize(ode, 0.0, y);
+    double t = 0.0;
+    while (t < t_sample) t = integrator->step_toward(t_sample);
+    return t;
+  };
+  using Values = std::map<std::string, std::vector<double>>;
+  const auto recorder = [](Values& into) {
+    return [&into](const std::string& name, double, const std::vector<double>& v) { into[name] = v; };
+  };
+  const OutputSink none{"", false};
+
+  auto split_case = make_case<2>(c);
+  const auto whole = split_case->build(c);
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  auto part = partitioner.partition(c, *whole, whole->initial_state(), 0.0);
+  const double t = advance(part->system(), part->state().data());
+  REQUIRE(t == t_sample);
+  ProbeObserver<2> split(c, *whole);
+  Values got;
+  split.on_sample = recorder(got);
+  split.at_time_pieces(*whole, part->owned_piece(t), t, none);
+
+  if (comm.rank() == 0) {
+    auto serial_case = make_case<2>(c);
+    const auto sys = serial_case->build(c);
+    std::vector<double> y = sys->initial_state(), scratch;
+    REQUIRE(advance(*sys, y.data()) == t);
+    sys->refresh_fields(t, y.data(), scratch);
+    ProbeObserver<2> serial(c, *sys);
+    Values want;
+    serial.on_sample = recorder(want);
+    serial.at_time(*sys, y.data(), t, none);
+    REQUIRE(want.size() == 7);  // the `every` probes
+    CHECK(got.size() == want.size());
+    std::size_t finite = 0;
+    for (const auto& [name, w] : want) {
+      INFO(name << ", " << comm.size() << " ranks");
+      const std::vector<double>& g = got[name];
+      REQUIRE(g.size() == w.size());
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        INFO("value " << k << ": " << g[k] << " against " << w[k]);
+        CHECK(std::memcmp(&g[k], &w[k], sizeof(double)) == 0);
+        if (std::isfinite(w[k]) && w[k] != 0.0) ++finite;
+      }
+    }
+    CHECK(finite > 20);  // of 30; non-trivial sums: pressures, densities, speeds, heights, forces
+  }
+  comm.barrier();
+}
