@@ -6,6 +6,7 @@
 #include <string>
 
 #include "serial_reference.hpp"
+#include "shot_scene.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
@@ -16,24 +17,7 @@ using namespace sphmol::parallel::testing;
 
 TEST_CASE("distributed outflow: a particle leaving the domain ends a run over ranks with a clear cause", "[parallel][outflow]") {
   // A block at rest and one particle shot through the open face (x = 0.34 with the wall layer's room).
-  const Config c = load_config_string(R"yaml(case: scene
-dimension: 2
-fluid:
-  density: 1000.0
-  kinematic_viscosity: 0.0
-  eos: {type: tait, sound_speed: 20.0, gamma: 7.0, clamp_negative: true}  # no tension holds the shot particle back
-  body_force: [0.0, 0.0]
-scene:
-  domain: {lo: [0.0, 0.0], hi: [0.32, 0.4], boundaries: [open, open]}
-  fluid:
-    - shape: {type: box, lo: [0.1, 0.1], hi: [0.3, 0.3]}
-    - shape: {type: box, lo: [0.3, 0.18], hi: [0.32, 0.2]}
-      velocity: [3.0, 0.0]
-discretization: {spacing: 0.02, smoothing_ratio: 2.0, wall_layers: 1, density: continuity, viscosity: none,
-                 artificial_viscosity: {alpha: 0.1}}
-time: {t_end: 0.02, integrator: leapfrog}
-output: {times: [0.02], plots: false, profiles: false}
-)yaml");
+  const Config c = sphmol::testing::shot_scene({"time.t_end=0.02", "output.times=[0.02]"});
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
   const Finished serial = run(c, nullptr);

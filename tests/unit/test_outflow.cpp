@@ -16,34 +16,16 @@
 #include "sphmol/run/health_limits.hpp"
 #include "sphmol/run/outflow.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "shot_scene.hpp"
 
 using namespace sphmol;
 
 namespace {
 
-// A block of fluid at rest and one particle beside it at (0.31, 0.19), in a scene open along x whose
-// box ends at x = 0.32, half a spacing past that particle; the solver's domain extends one wall
-// layer further, to x = 0.34 (h = 2 dx: the kernel support 0.08 reaches past it from x = 0.29).
-Config shot_scene(const std::vector<std::string>& set = {}) {
-  const std::string yaml = R"yaml(case: scene
-dimension: 2
-fluid:
-  density: 1000.0
-  kinematic_viscosity: 0.0
-  eos: {type: tait, sound_speed: 20.0, gamma: 7.0, clamp_negative: true}  # no tension holds the shot particle back
-  body_force: [0.0, -9.81]
-scene:
-  domain: {lo: [0.0, 0.0], hi: [0.32, 0.4], boundaries: [open, open]}
-  fluid:
-    - shape: {type: box, lo: [0.1, 0.1], hi: [0.3, 0.3]}
-    - shape: {type: box, lo: [0.3, 0.18], hi: [0.32, 0.2]}
-      velocity: [3.0, 0.0]
-discretization: {spacing: 0.02, smoothing_ratio: 2.0, wall_layers: 1, density: continuity, viscosity: none,
-                 artificial_viscosity: {alpha: 0.1}}
-time: {t_end: 0.1, integrator: leapfrog}
-output: {times: [0.1], plots: false, profiles: false}
-)yaml";
-  return load_config_string(yaml, set);
+// The shot scene (tests/shot_scene.hpp) under gravity.
+Config shot_scene(std::vector<std::string> set = {}) {
+  set.insert(set.begin(), "fluid.body_force=[0.0, -9.81]");
+  return sphmol::testing::shot_scene(set);
 }
 
 std::size_t bullet_of(const SphSystem<2>& sys, const std::vector<double>& y) {
