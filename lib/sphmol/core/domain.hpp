@@ -16,7 +16,9 @@ struct Domain {
   // Per direction, the lower and the upper face: open to outflow (an open top, an open scene axis).
   std::array<std::array<bool, 2>, D> outflow{};
 
-  // Whether x, along direction d, lies beyond a face of the box that is not open to outflow.
+  // Whether x, along direction d, lies outside the box (never along a periodic direction), and
+  // whether beyond a face of the box that is not open to outflow.
+  bool outside(int d, double x) const { return !periodic[d] && (x < lo[d] || x > hi[d]); }
   bool beyond_closed_face(int d, double x) const {
     return !periodic[d] && ((x < lo[d] && !outflow[d][0]) || (x > hi[d] && !outflow[d][1]));
   }

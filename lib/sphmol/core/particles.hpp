@@ -14,8 +14,8 @@
 
 namespace sphmol {
 
-// Out: a fluid particle taken out of the simulation after it left the domain through a
-// non-periodic face (outflow, run/outflow.hpp). It keeps its place among the fluid rows and its
+// Out: a fluid particle taken out of the simulation after it left the domain through a face open
+// to outflow (Domain::outflow, run/outflow.hpp). It keeps its place among the fluid rows and its
 // mass in the state, but the neighbour searches list no pair with it and SphSystem sets its rates
 // to zero, so it stays frozen where it left.
 enum class Kind : std::uint8_t { Fluid = 0, Wall = 1, Out = 2 };

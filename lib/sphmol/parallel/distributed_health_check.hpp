@@ -225,7 +225,7 @@ class DistributedHealthCheck {
         if (dom.beyond_closed_face(d, x[i]))
           return "particle left the domain in direction " + std::to_string(d) + " through a face closed to outflow (x = " +
                  std::to_string(x[i]) + ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) + "])";
-        if (!dom.periodic[d] && (x[i] < dom.lo[d] || x[i] > dom.hi[d]))
+        if (dom.outside(d, x[i]))
           // A serial run takes such a particle out and goes on (run/outflow.hpp); over ranks that is
           // not done, so the run ends here rather than continue with a different fluid than the serial run's.
           return "particle left the domain in direction " + std::to_string(d) + " (x = " + std::to_string(x[i]) +

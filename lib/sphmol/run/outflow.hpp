@@ -1,8 +1,8 @@
 #pragma once
 // Outflow: a fluid particle found outside the domain along a non-periodic axis at the end of an
 // accepted step has left through a face open to outflow (Domain::outflow: the scene's open axes and
-// faces, the open top of a tank); beyond a closed face the health check ends the run as blown up. It is taken out of the simulation, as DualSPHysics
-// excludes its "out" particles (Domínguez et al. 2022): its velocity is set to zero and SphSystem::
+// faces, the open top of a tank; beyond a closed face the health check ends the run as blown up).
+// It is taken out of the simulation, as DualSPHysics excludes its "out" particles (Domínguez et al. 2022): its velocity is set to zero and SphSystem::
 // retire() keeps it out of every pair (neighbour lists, ghost images, wall extrapolation) and zeroes
 // its rates, so it stays frozen where it left, with its mass in the state. The run then starts its
 // integrator again at (t, y) (Integrator::restart): between two such events f(t, y) stays a pure
@@ -11,8 +11,8 @@
 // domain, and every other one is inside at each step's end (the run takes the leavers out right
 // after the step). So a restart from a checkpoint takes out the particles outside the domain before
 // its first evaluation, and needs no field of its own.
-// A closed box that loses fluid, or an open one that loses much of it, is not a sound run: beyond
-// health.max_outflow_fraction of the fluid mass the run ends as blown up.
+// An open tank that loses much of its fluid is not a sound run: beyond health.max_outflow_fraction
+// of the fluid mass the run ends as blown up.
 // Walls are not in the state and never leave; a run over MPI ranks does not take fluid out (its
 // health check ends the run when a particle leaves, parallel/distributed_health_check.hpp).
 #include <cstddef>
@@ -37,13 +37,11 @@ std::vector<std::size_t> fluid_outside_domain(const SphSystem<D>& sys, const dou
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < L.n; ++i) {
     if (sys.is_retired(i)) continue;
-    for (int d = 0; d < D; ++d) {
-      const double x = y[L.position(d) + i];
-      if (!dom.periodic[d] && (x < dom.lo[d] || x > dom.hi[d])) {
+    for (int d = 0; d < D; ++d)
+      if (dom.outside(d, y[L.position(d) + i])) {
         out.push_back(i);
         break;
       }
-    }
   }
   return out;
 }
@@ -83,8 +81,7 @@ class Outflow {
       char buf[320];
       std::snprintf(buf, sizeof buf,
                     "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain, more than "
-                    "health.max_outflow_fraction = %g (a closed box losing fluid, or an open one losing that much, "
-                    "is not a sound run)",
+                    "health.max_outflow_fraction = %g (an open tank losing that much is not a sound run)",
                     count_, fraction(), max_fraction_);
       throw BlowUp(t, static_cast<long>(leaving.front()), buf);
     }

@@ -26,15 +26,9 @@ void check(int flag, const char* what) {
 
 ArkodeImex::ArkodeImex(Options o) : opt_(std::move(o)) {}
 
-ArkodeImex::~ArkodeImex() {
-  if (mem_) ARKStepFree(&mem_);
-  ls_.reset();
-  if (y_) N_VDestroy(y_);
-  if (ctx_) SUNContext_Free(&ctx_);
-}
+ArkodeImex::~ArkodeImex() { release(); }
 
-void ArkodeImex::restart(OdeSystem& sys, double t, double* y) {
-  const IntegratorStats s = stats();
+void ArkodeImex::release() {
   if (mem_) ARKStepFree(&mem_);
   ls_.reset();
   if (y_) N_VDestroy(y_);
@@ -42,6 +36,11 @@ void ArkodeImex::restart(OdeSystem& sys, double t, double* y) {
   mem_ = nullptr;
   y_ = nullptr;
   ctx_ = nullptr;
+}
+
+void ArkodeImex::restart(OdeSystem& sys, double t, double* y) {
+  const IntegratorStats s = stats();
+  release();
   initialize(sys, t, y);
   steps_before_ = s.steps;
   rejected_before_ = s.rejected_steps;

@@ -59,6 +59,7 @@ class ArkodeImex final : public Integrator {
   long krylov_iterations() const;
 
  private:
+  void release();  // frees what initialize() made (the destructor, restart())
   static int fe_callback(double t, N_Vector y, N_Vector ydot, void* self);
   static int fi_callback(double t, N_Vector y, N_Vector ydot, void* self);
   static int weights_callback(N_Vector y, N_Vector w, void* self);
