@@ -54,6 +54,18 @@ bool Communicator::all(bool v) const {
   return out != 0;
 }
 
+std::vector<double> Communicator::max(const std::vector<double>& v) const {
+  std::vector<double> out(v.size());
+  MPI_Allreduce(v.data(), out.data(), mpi_count(v.size(), "max"), MPI_DOUBLE, MPI_MAX, comm_);
+  return out;
+}
+
+std::vector<std::uint64_t> Communicator::sum(const std::vector<std::uint64_t>& v) const {
+  std::vector<std::uint64_t> out(v.size());
+  MPI_Allreduce(v.data(), out.data(), mpi_count(v.size(), "sum"), MPI_UINT64_T, MPI_SUM, comm_);
+  return out;
+}
+
 void Communicator::barrier() const { MPI_Barrier(comm_); }
 
 void Communicator::all_gather_bytes(const void* v, std::size_t bytes, void* out) const {

@@ -26,6 +26,10 @@ class Communicator {
   int max(int v) const;
   double min(double v) const;
   bool all(bool v) const;  // true on every rank
+  // Element by element over the ranks (every rank passes as many values): the largest, and the sum
+  // modulo 2^64.
+  std::vector<double> max(const std::vector<double>& v) const;
+  std::vector<std::uint64_t> sum(const std::vector<std::uint64_t>& v) const;
   void barrier() const;
 
   // Every rank's value, in rank order.

@@ -93,6 +93,8 @@ class MpiRun final : public PartitionedRun<D> {
     p.min = [this](double v) { return comm_.min(v); };
     p.max = [this](double v) { return comm_.max(v); };
     p.gather_bytes = [this](const std::vector<std::byte>& v) { return comm_.gather_v(v, 0); };
+    p.max_each = [this](const std::vector<double>& v) { return comm_.max(v); };
+    p.sum_each = [this](const std::vector<std::uint64_t>& v) { return comm_.sum(v); };
     return p;
   }
   void barrier() override { comm_.barrier(); }

@@ -26,6 +26,12 @@ class ProbeObserver final : public OutputObserver<D> {
   ProbeObserver(const Config& config, const SphSystem<D>& sys);
 
   void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  // Only the probes without `every` sample at the output times.
+  bool samples_outputs() const override {
+    for (const auto& s : series_)
+      if (!s.cfg.every) return true;
+    return false;
+  }
   void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   double next_time() const override;
   void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;

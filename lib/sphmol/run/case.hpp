@@ -3,6 +3,7 @@
 // its reference at output times. Cases register by name (run/case_registry.hpp); the generic run
 // loop (run/run_case.cpp) integrates and calls the case and every output observer at output times.
 #include <memory>
+#include <stdexcept>
 #include <algorithm>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/run/owned_piece.hpp"
+#include "sphmol/run/whole_piece.hpp"
 
 namespace sphmol {
 
@@ -48,8 +50,22 @@ class Case {
   // Name of the reference solution (for the summary).
   virtual std::string reference() const = 0;
   // Error measures at an output time, under the documented keys of the case (e.g. e_rms, e_max).
-  // May write per-time files (profiles) through `out`.
-  virtual nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
+  // May write per-time files (profiles) through `out`. A case that measures from pieces measures
+  // the whole system as one piece (run/whole_piece.hpp).
+  virtual nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+    if (!measures_pieces()) throw std::logic_error("Case: measure() not implemented");
+    return measure_pieces(sys, whole_piece(sys, y), t, out);
+  }
+  // Whether the case measures from pieces: over several ranks measure_pieces() is then called on
+  // every rank with the rank's own particles (run/owned_piece.hpp), and its sums reduce over the
+  // ranks exactly (run/piece_reduction.hpp), so that no whole state is gathered for it and the
+  // measurement is the serial one to the bit. `whole`: the scene as built (its fields and state are
+  // not the output time's off rank 0); `out`: the run's sink, enabled on rank 0 only. Returns the
+  // measurement on every rank; a BlowUp it throws must be thrown on every rank alike.
+  virtual bool measures_pieces() const { return false; }
+  virtual nlohmann::json measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
+    throw std::logic_error("Case: measure_pieces() not implemented");
+  }
   // The summary's final_errors; by default the last measurement without its "t".
   virtual nlohmann::json final_errors(const nlohmann::json& errors) const {
     if (errors.empty()) return nlohmann::json::object();
@@ -82,6 +98,10 @@ class OutputObserver {
  public:
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
+  // Whether at_output reads the state (over several ranks the whole state is then gathered on rank 0
+  // at output times for it, unless it writes pieces); false for an observer that only samples at
+  // its own times from pieces (probes that all have `every`).
+  virtual bool samples_outputs() const { return true; }
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
   // Over several ranks: an observer that writes per-rank files (VTK pieces) is called on every rank
   // at output times with the rank's own particles (run/owned_piece.hpp) instead of at_output on

@@ -15,45 +15,71 @@
 #include <vector>
 
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/piece_reduction.hpp"
+#include "sphmol/run/whole_piece.hpp"
 
 namespace sphmol {
 
 // Sums over the fluid particles of the state y: mass, momentum, kinetic and internal energy, the sum
-// of m |v| (the momentum scale) and the largest speed.
+// of m |v| (the momentum scale) and the largest speed. Exact sums over the pieces of a run
+// (run/piece_reduction.hpp): a serial run (one piece) and a run over any number of ranks have the
+// same totals to the bit.
 template <int D>
 struct FluidTotals {
   std::array<double, D> momentum{};
   double mass = 0.0, kinetic = 0.0, internal = 0.0, momentum_scale = 0.0, max_speed = 0.0;
 };
 
+// Collective over the piece's ranks: the totals on every rank.
 template <int D>
-FluidTotals<D> fluid_totals(const SphSystem<D>& sys, const double* y) {
-  const auto& L = sys.layout();
-  const auto& m = sys.particles().mass;
-  FluidTotals<D> f;
-  for (std::size_t i = 0; i < L.n; ++i) {
+FluidTotals<D> fluid_totals(const OwnedPiece<D>& piece) {
+  const auto& L = piece.system->layout();
+  const auto& m = piece.system->particles().mass;
+  const double* y = piece.y;
+  PieceReduction r;
+  std::array<PieceReduction::Slot, D> momentum{};
+  for (int d = 0; d < D; ++d) momentum[d] = r.sum();
+  const auto mass = r.sum(), kinetic = r.sum(), internal = r.sum(), scale = r.sum(), speed = r.largest();
+  for (const std::size_t i : piece.fluid_rows) {
     double v2 = 0.0;
     for (int d = 0; d < D; ++d) {
       const double v = y[L.velocity(d) + i];
-      f.momentum[d] += m[i] * v;
+      r.add(momentum[d], m[i] * v);
       v2 += v * v;
     }
-    const double speed = std::sqrt(v2);
-    f.mass += m[i];
-    f.kinetic += 0.5 * m[i] * v2;
-    f.momentum_scale += m[i] * speed;
-    f.max_speed = std::max(f.max_speed, speed);
-    if (L.has_energy) f.internal += m[i] * y[L.energy() + i];
+    const double s = std::sqrt(v2);
+    r.add(mass, m[i]);
+    r.add(kinetic, 0.5 * m[i] * v2);
+    r.add(scale, m[i] * s);
+    r.add(speed, s);
+    if (L.has_energy) r.add(internal, m[i] * y[L.energy() + i]);
   }
+  r.reduce(piece);
+  FluidTotals<D> f;
+  for (int d = 0; d < D; ++d) f.momentum[d] = r.value(momentum[d]);
+  f.mass = r.value(mass);
+  f.kinetic = r.value(kinetic);
+  f.internal = r.value(internal);
+  f.momentum_scale = r.value(scale);
+  const double fastest = r.value(speed);
+  f.max_speed = fastest < 0.0 ? 0.0 : fastest;  // no fluid: -infinity
   return f;
+}
+
+// The whole system's totals (serial: the run's one piece).
+template <int D>
+FluidTotals<D> fluid_totals(const SphSystem<D>& sys, const double* y) {
+  return fluid_totals(whole_piece(sys, y));
 }
 
 template <int D>
 class ConservationLog {
  public:
-  void record(const SphSystem<D>& sys, const double* y, double t) {
-    const auto& L = sys.layout();
-    const FluidTotals<D> f = fluid_totals(sys, y);
+  void record(const SphSystem<D>& sys, const double* y, double t) { record(whole_piece(sys, y), t); }
+  // Collective over the piece's ranks: every rank records the whole run's totals.
+  void record(const OwnedPiece<D>& piece, double t) {
+    const auto& L = piece.system->layout();
+    const FluidTotals<D> f = fluid_totals(piece);
     const auto& p = f.momentum;
     const double ke = f.kinetic, scale = f.momentum_scale, internal = f.internal;
     times_.push_back(t);

@@ -4,7 +4,9 @@
 // system holds its owned particles and halo copies of its neighbours' and has just been evaluated
 // at the output state, so the owned rows' fields (density, pressure, ...) are the whole system's;
 // only the owned rows are listed, so every particle is written by exactly one rank. The probes
-// sample at their own times from the pieces too (probes/probe_observer.hpp).
+// sample at their own times from the pieces too (probes/probe_observer.hpp), and the case's
+// measurements and the conservation sums reduce over them (run/piece_reduction.hpp). A serial run
+// measures through one piece, the whole system (run/whole_piece.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -40,6 +42,10 @@ struct OwnedPiece {
   // the probes' terms, which rank 0 adds in the serial order.
   std::function<double(double)> min, max;
   std::function<std::vector<std::byte>(const std::vector<std::byte>&)> gather_bytes;
+  // Collective, element by element, on every rank: the largest of each value over the ranks (no NaN
+  // may be passed), and the sum of each value modulo 2^64 (run/piece_reduction.hpp's exact sums).
+  std::function<std::vector<double>(const std::vector<double>&)> max_each;
+  std::function<std::vector<std::uint64_t>(const std::vector<std::uint64_t>&)> sum_each;
 };
 
 }  // namespace sphmol

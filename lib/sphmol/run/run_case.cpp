@@ -232,14 +232,19 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     for (const auto& o : observers) tn = std::min(tn, o->next_time());
     return tn;
   };
+  // Over ranks: this rank's own particles at t, made once per stop for the case's measurement, the
+  // conservation sums, the probes and the VTK pieces (collective: every rank makes it alike).
+  std::optional<OwnedPiece<D>> stop_piece;
+  const auto own_piece = [&]() -> const OwnedPiece<D>& {
+    if (!stop_piece) stop_piece = part->owned_piece(t);
+    return *stop_piece;
+  };
   const auto observe_own_times = [&] {
     bool refreshed = false;
-    std::optional<OwnedPiece<D>> piece;  // over ranks: the probes sample each rank's own particles
     for (auto& o : observers)
       if (o->next_time() <= t) {
         if (part && o->samples_pieces()) {  // the same on every rank
-          if (!piece) piece = part->owned_piece(t);
-          o->at_time_pieces(*sys, *piece, t, out);
+          o->at_time_pieces(*sys, own_piece(), t, out);
           continue;
         }
         if (!refreshed) {
@@ -257,18 +262,23 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   const auto write_pieces = [&] {
     if (!part || !own.enabled) return;  // the same on every rank
     if (std::none_of(observers.begin(), observers.end(), [](const auto& o) { return o->writes_pieces(); })) return;
-    const OwnedPiece<D> piece = part->owned_piece(t);
     for (auto& o : observers)
-      if (o->writes_pieces()) o->at_output_pieces(*sys, piece, t, own);
+      if (o->writes_pieces()) o->at_output_pieces(*sys, own_piece(), t, own);
   };
   // Over ranks those observers write their pieces instead.
   const auto on_root = [&](const std::unique_ptr<OutputObserver<D>>& o) { return !part || !o->writes_pieces(); };
+  // Over ranks the whole state is gathered on rank 0 at an output time only for a case that
+  // measures the whole system or an observer that reads it there; a case that measures from pieces
+  // and the conservation sums reduce over the ranks' own particles (run/piece_reduction.hpp).
+  const bool observers_read_whole =
+      std::any_of(observers.begin(), observers.end(), [&](const auto& o) { return on_root(o) && o->samples_outputs(); });
+  const bool output_gathers = !part || !c.measures_pieces() || observers_read_whole;
   try {
   // The initial state: the observers (VTK files, probes) write t = 0 too; the case measures from the
   // first output time on. A restart continues from its checkpoint, which has them already.
   if (!restart) {
-    whole_fields();
-    if (root) {
+    if (!part || observers_read_whole) whole_fields();
+    if (root && (!part || observers_read_whole)) {
       for (auto& o : observers)
         if (on_root(o)) o->at_output(*sys, y.data(), t, out);
     }
@@ -277,6 +287,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   while (next_out < times.size()) {
     const double stop = std::min({times[next_out], next_cp, next_observer_time()});
+    stop_piece.reset();  // the state moves on (and over ranks the share may change)
     while (t < stop && !(signal = signal_seen())) {
       stepping = true;
       t = integrator->step_toward(stop);
@@ -294,17 +305,25 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     if (t >= times[next_out]) {
       // Over ranks the case's monitors have watched each rank's own particles (the fields' evaluation
       // at this state included, as the serial run's refresh is watched): combined for its measurement.
-      if (part) part->gather(y);
-      whole_fields();
+      if (output_gathers) {
+        if (part) part->gather(y);
+        whole_fields();
+      }
       if (part) part->combine_monitors();
+      nlohmann::json m;
+      if (part && c.measures_pieces())
+        m = c.measure_pieces(*sys, own_piece(), t, out);  // collective, on every rank
+      else if (root)
+        m = c.measure(*sys, y.data(), t, out);
+      if (part) conservation.record(own_piece(), t);  // collective
       if (root) {
-        nlohmann::json m = c.measure(*sys, y.data(), t, out);
-        for (auto& o : observers)
-          if (on_root(o)) o->at_output(*sys, y.data(), t, out);
+        if (output_gathers)
+          for (auto& o : observers)
+            if (on_root(o)) o->at_output(*sys, y.data(), t, out);
         progress.clear();
         if (opt.log) log_line(*opt.log, m, integrator->stats().steps, wall_now());
         errors.push_back(std::move(m));
-        conservation.record(*sys, y.data(), t);
+        if (!part) conservation.record(*sys, y.data(), t);
       }
       write_pieces();
       ++next_out;

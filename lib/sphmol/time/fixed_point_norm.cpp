@@ -157,6 +157,25 @@ double fixed_point_dot(const double* x, const double* y, std::size_t n) {
   return fixed_point_sum(fixed_point_products(x, y, n, shift), shift);
 }
 
+double largest_magnitude(const double* v, std::size_t n) {
+  return largest_term(n, [v](std::size_t i) { return std::abs(v[i]); });
+}
+
+FixedPointChunks fixed_point_values(const double* v, std::size_t n, int shift) {
+  check_length(n);
+  return grid_sum(n, shift, [v](std::size_t i) { return v[i]; });
+}
+
+double fixed_point_total(const double* v, std::size_t n) {
+  if (n == 0) return 0.0;
+  check_length(n);
+  const double largest = largest_magnitude(v, n);
+  if (largest == 0.0) return 0.0;
+  if (std::isinf(largest)) return std::numeric_limits<double>::quiet_NaN();
+  const int shift = fixed_point_shift(largest);
+  return fixed_point_sum(fixed_point_values(v, n, shift), shift);
+}
+
 void use_fixed_point_norm(N_Vector v) {
   require_serial(v, "use_fixed_point_norm");
   v->ops->nvwrmsnorm = &wrms_op;

@@ -21,6 +21,10 @@
 // does): truncated toward zero on the grid of the largest |x_i y_i|, summed modulo 2^128 (two's
 // complement, exact in any order while |sum| < 2^127, which 2^31 terms below 2^96 keep), in the same
 // three chunks. A NaN or infinite term makes the dot product NaN, which fails the Krylov solve.
+//
+// Plain signed sums of values v_i the same way (the measurements of a run, run/piece_reduction.hpp):
+// on the grid of the largest |v_i|, so that a serial run and a run split over any number of ranks
+// add the same integers and convert them to the same double.
 #include <sundials/sundials_nvector.h>
 
 #include <array>
@@ -50,6 +54,13 @@ FixedPointChunks fixed_point_products(const double* x, const double* y, std::siz
 double fixed_point_sum(const FixedPointChunks& chunks, int shift);
 // The whole dot product of one part.
 double fixed_point_dot(const double* x, const double* y, std::size_t n);
+
+// max_i |v_i| over n entries; +infinity if any value is NaN or infinite.
+double largest_magnitude(const double* v, std::size_t n);
+// The signed values' sum on the grid of `shift` (modulo 2^128), in chunks (fixed_point_sum converts).
+FixedPointChunks fixed_point_values(const double* v, std::size_t n, int shift);
+// The whole sum of one part (NaN if any value is not finite).
+double fixed_point_total(const double* v, std::size_t n);
 
 // Replaces the weighted RMS norm of a serial or OpenMP vector (and of every vector cloned from it)
 // with fixed_point_wrms.

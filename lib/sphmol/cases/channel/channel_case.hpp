@@ -12,7 +12,10 @@ class ChannelCase final : public Case<2> {
   std::string reference() const override { return ref_.name; }
   // Couette: the plate speed; Poiseuille: the centre-line speed F l^2 / (8 nu) of the steady profile.
   double velocity_scale(const Config& config) const override;
-  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state; the profile
+  // file's rows (one per fluid particle) are gathered on rank 0 when the run writes files.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<2>& whole, const OwnedPiece<2>& piece, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
   // profiles.png: SPH velocity (points) and the exact series (lines) across the channel at every
   // output time, from the profile CSVs in the output directory (also those of an earlier run that a

@@ -24,7 +24,9 @@ class TaylorGreenCase final : public Case<2> {
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override { return "taylor_green_vortex (exact)"; }
   double velocity_scale(const Config& config) const override { return config.settings<TaylorGreenSettings>().velocity_amplitude; }
-  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<2>& whole, const OwnedPiece<2>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "L1_velocity"; }
   void annotate(nlohmann::json& summary) const override;

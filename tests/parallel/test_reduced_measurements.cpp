@@ -1,0 +1,129 @@
+// The case's measurements and the conservation sums over ranks from each rank's own particles
+// (Case::measure_pieces, run/piece_reduction.hpp): exact sums over the ranks, so the summary's
+// errors and conservation log are the serial run's to the bit on any rank count, and an output time
+// gathers neither the whole state nor the whole fields when the case measures from pieces and every
+// observer writes pieces (VTK) or samples its own times from them (probes with `every`); only the
+// end still gathers the whole state (for the final observers and the final state). Rank 0 runs the
+// serial references.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sphmol/config/config.hpp"
+#include "sphmol/parallel/communicator.hpp"
+#include "sphmol/parallel/mpi_run.hpp"
+#include "sphmol/run/run_case.hpp"
+#include "run_into.hpp"
+#include "serial_reference.hpp"
+#include "support/files.hpp"
+
+using namespace sphmol;
+using namespace sphmol::parallel;
+using namespace sphmol::parallel::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+// c over the ranks and (rank 0) serially: the same measurements and conservation log, to the bit
+// (JSON numbers compare as doubles). Returns the summary over the ranks.
+nlohmann::json check_measurements_equal_serial(const Config& c) {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const Finished split = run(c, &partitioner);
+  REQUIRE(split.summary["status"] == "completed");
+  if (comm.rank() == 0) {
+    INFO(c.case_name << ", " << comm.size() << " ranks");
+    const Finished& serial = serial_run(c);
+    REQUIRE(serial.summary["status"] == "completed");
+    CHECK(same_bits(split.y, serial.y));
+    CHECK(split.summary["errors"].size() == c.output.times.size());
+    CHECK(split.summary["errors"] == serial.summary["errors"]);
+    CHECK(split.summary["final_errors"] == serial.summary["final_errors"]);
+    CHECK(split.summary["conservation"] == serial.summary["conservation"]);
+  }
+  return split.summary;
+}
+
+Config taylor_green() {
+  return load_config(verification("taylor_green.yaml"), {"discretization.particles_across=24", "time.t_end=0.06",
+                                                         "output.times=[0.02,0.04,0.06]", "output.plots=false"});
+}
+
+Config channel(const std::string& file) {
+  return load_config(verification(file), {"discretization.particles_across=20", "time.integrator=leapfrog", "time.t_end=0.03",
+                                          "output.times=[0.01,0.02,0.03]", "output.plots=false"});
+}
+
+}  // namespace
+
+TEST_CASE("reduced measurements: a case measured from pieces equals the serial measurement to the bit, without gathers",
+          "[parallel][run][measurements_reduced]") {
+  for (const Config& c : {taylor_green(), channel("couette.yaml"), channel("poiseuille.yaml")}) {
+    const nlohmann::json split = check_measurements_equal_serial(c);
+    // The final state only (the end's observers and the final state); no output time gathers.
+    CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 1);
+    CHECK(split["parallel"]["whole_field_gathers"].get<long>() == 0);
+    // One piece per output time (the case and the conservation sums share it).
+    CHECK(split["parallel"]["owned_pieces"].get<long>() == static_cast<long>(c.output.times.size()));
+  }
+}
+
+TEST_CASE("reduced measurements: a case on the gather path still has the serial conservation log to the bit",
+          "[parallel][run][measurements_reduced]") {
+  const Config c = load_config(verification("hydrostatic.yaml"), {"discretization.particles_across=10", "time.t_end=0.02",
+                                                                 "output.times=[0.01,0.02]", "output.plots=false"});
+  const nlohmann::json split = check_measurements_equal_serial(c);
+  // Its output times gather (the case measures the whole system), and the end.
+  CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 3);
+}
+
+TEST_CASE("reduced measurements: VTK pieces and probes with `every` leave the output times without gathers, the files "
+          "the serial run's",
+          "[parallel][run][measurements_reduced]") {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-reduced-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
+  std::string yaml = test_support::slurp(verification("couette.yaml"));
+  yaml += R"(
+probes:
+  - {name: middle, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity], every: 0.005}
+)";
+  const Config with_probe = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",
+                                                      "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false",
+                                                      "output.vtk=true"});
+  const nlohmann::json split = run_into(with_probe, &partitioner, dir / "split");
+  REQUIRE(split["status"] == "completed");
+  CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 1);
+  CHECK(split["parallel"]["whole_field_gathers"].get<long>() == 0);
+  comm.barrier();
+  if (comm.rank() == 0) {
+    const nlohmann::json serial = run_into(with_probe, nullptr, dir / "serial");
+    REQUIRE(serial["status"] == "completed");
+    CHECK(split["errors"] == serial["errors"]);
+    CHECK(split["conservation"] == serial["conservation"]);
+    // The profiles (one row per fluid particle, gathered on rank 0) and the probe's file.
+    std::size_t compared = 0;
+    for (const auto& f : serial["files"]) {
+      const std::string name = f.get<std::string>();
+      if (name.rfind("profile_t", 0) != 0 && name.rfind("probe_", 0) != 0) continue;
+      INFO(name);
+      CHECK(test_support::slurp(dir / "split" / name) == test_support::slurp(dir / "serial" / name));
+      ++compared;
+    }
+    CHECK(compared == 3);
+  }
+  // A probe without `every` samples the whole state at the output times: those gather again.
+  yaml += "  - {name: outputs, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity]}\n";
+  const Config gathering = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",
+                                                     "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"});
+  const Finished again = run(gathering, &partitioner);
+  REQUIRE(again.summary["status"] == "completed");
+  CHECK(again.summary["parallel"]["whole_state_gathers"].get<long>() == 3);
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove_all(dir);
+}
