@@ -19,6 +19,7 @@
 #include "sphmol/run/run_case.hpp"
 #include "run_into.hpp"
 #include "serial_reference.hpp"
+#include "short_shock_tube.hpp"
 #include "support/files.hpp"
 
 using namespace sphmol;
@@ -62,7 +63,14 @@ Config channel(const std::string& file) {
 
 TEST_CASE("reduced measurements: a case measured from pieces equals the serial measurement to the bit, without gathers",
           "[parallel][run][measurements_reduced]") {
-  for (const Config& c : {taylor_green(), channel("couette.yaml"), channel("poiseuille.yaml")}) {
+  const std::vector<Config> cases{
+      taylor_green(), channel("couette.yaml"), channel("poiseuille.yaml"),
+      load_config(verification("hydrostatic.yaml"),
+                  {"discretization.particles_across=10", "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"}),
+      load_config(verification("dam_break.yaml"),
+                  {"discretization.spacing=0.04", "time.t_end=0.06", "output.times=[0.03,0.06]", "output.plots=false"}),
+      load_config(verification("scene_tank.yaml"), {"time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"})};
+  for (const Config& c : cases) {
     const nlohmann::json split = check_measurements_equal_serial(c);
     // The final state only (the end's observers and the final state); no output time gathers.
     CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 1);
@@ -73,11 +81,11 @@ TEST_CASE("reduced measurements: a case measured from pieces equals the serial m
 }
 
 TEST_CASE("reduced measurements: a case on the gather path still has the serial conservation log to the bit",
-          "[parallel][run][measurements_reduced]") {
-  const Config c = load_config(verification("hydrostatic.yaml"), {"discretization.particles_across=10", "time.t_end=0.02",
-                                                                 "output.times=[0.01,0.02]", "output.plots=false"});
+          "[parallel][run][measurements_reduced][energy]") {
+  // The shock tube measures the whole system (its output times gather); its conservation log, with
+  // the total energy of the energy equation, reduces over the pieces all the same.
+  const Config c = short_shock_tube("shock_tube_1d.yaml", {"discretization.smoothing_length=constant"});
   const nlohmann::json split = check_measurements_equal_serial(c);
-  // Its output times gather (the case measures the whole system), and the end.
   CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 3);
 }
 

@@ -137,7 +137,7 @@ class PieceReduction {
     double result = 0.0;
   };
   Slot add_slot(Kind k) {
-    Quantity q{k};
+    Quantity q{k, {}};
     q.value = k == Kind::largest ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
     slots_.push_back(std::move(q));
     reduced_ = false;

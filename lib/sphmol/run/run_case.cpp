@@ -309,6 +309,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
         if (part) part->gather(y);
         whole_fields();
       }
+      // The ranks' evaluation of their own particles at this state, before the monitors combine.
+      if (part) own_piece();
       if (part) part->combine_monitors();
       nlohmann::json m;
       if (part && c.measures_pieces())

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <cstdlib>
 #include <iomanip>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include <string>
 
 #include "sphmol/run/gnuplot_preamble.hpp"
+#include "sphmol/run/gathered_rows.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
@@ -75,7 +75,7 @@ nlohmann::json ChannelCase::measure_pieces(const SphSystem<2>& whole, const Owne
   const auto count = r.sum(), squares = r.sum(), signed_sum = r.sum(), largest = r.largest();
   std::vector<ProfileRow> rows;
   // The profile file lists every fluid particle: written only when the run writes files (on rank 0).
-  const bool profile = profiles_ && piece.max(out.enabled ? 1.0 : 0.0) > 0.0;
+  const bool profile = profiles_ && writes_files(piece, out.enabled);
   if (profile) rows.reserve(piece.fluid_rows.size());
   for (std::size_t k = 0; k < piece.fluid_rows.size(); ++k) {
     const std::size_t i = piece.fluid_rows[k];
@@ -96,11 +96,7 @@ nlohmann::json ChannelCase::measure_pieces(const SphSystem<2>& whole, const Owne
   const double e_signed = n > 0.0 ? r.value(signed_sum) / (n * ref_.v0) : 0.0;
   if (profile) {
     // Every rank's rows on rank 0, sorted by height (equal heights by id, whatever the ranks).
-    std::vector<std::byte> mine(rows.size() * sizeof(ProfileRow));
-    if (!rows.empty()) std::memcpy(mine.data(), rows.data(), mine.size());
-    const std::vector<std::byte> all = piece.gather_bytes(mine);
-    rows.resize(all.size() / sizeof(ProfileRow));
-    if (!rows.empty()) std::memcpy(rows.data(), all.data(), all.size());
+    rows = gather_rows(piece, rows);
     std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.y < b.y || (a.y == b.y && a.id < b.id); });
     if (out.enabled) {
       std::ostringstream s, name;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sphmol/run/gnuplot_preamble.hpp"
+#include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -32,15 +33,22 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   return sys;
 }
 
-nlohmann::json DamBreakCase::measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) {
+nlohmann::json DamBreakCase::measure_pieces(const SphSystem<2>& whole, const OwnedPiece<2>& piece, double t,
+                                            const OutputSink& out) {
+  const SphSystem<2>& sys = *piece.system;
   const auto& L = sys.layout();
   const auto& m = sys.particles().mass;
-  double xmax = -HUGE_VAL, mass = 0.0;
-  for (std::size_t i = 0; i < L.n; ++i) {
+  const double* y = piece.y;
+  // The front (a largest position) and the mass exactly over the ranks (run/piece_reduction.hpp).
+  PieceReduction r;
+  const auto front = r.largest(), mass_sum = r.sum();
+  for (const std::size_t i : piece.fluid_rows) {
     // The front of the fluid in the run; fluid that left the domain (run/outflow.hpp) keeps its mass.
-    if (!sys.is_retired(i)) xmax = std::max(xmax, y[L.position(0) + i]);
-    if (std::isfinite(y[L.position(0) + i]) && std::isfinite(y[L.position(1) + i])) mass += m[i];
+    if (!sys.is_retired(i)) r.add(front, y[L.position(0) + i]);
+    if (std::isfinite(y[L.position(0) + i]) && std::isfinite(y[L.position(1) + i])) r.add(mass_sum, m[i]);
   }
+  r.reduce(piece);
+  const double xmax = r.value(front), mass = r.value(mass_sum);
   const double x_front = xmax + 0.5 * dx_;
   const double x_ritter = ritter_front(a_, g_, H_, t);
   const double T = t * std::sqrt(2.0 * g_ / a_);

@@ -29,7 +29,9 @@ class DamBreakCase final : public Case<2> {
   // The free-fall speed sqrt(2 g H) of the column.
   double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * H_); }
   bool free_surface() const override { return true; }
-  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<2>& whole, const OwnedPiece<2>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "front_rms_martin_moyce"; }
   void annotate(nlohmann::json& summary) const override;

@@ -1,12 +1,16 @@
 #include "sphmol/cases/hydrostatic/hydrostatic_case.hpp"
 #include "sphmol/cases/hydrostatic/hydrostatic_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/run/gathered_rows.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
+#include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/analysis/drift_monitor.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/timed_output_files.hpp"
@@ -44,45 +48,68 @@ std::unique_ptr<SphSystem<D>> HydrostaticCase<D>::build(const Config& config) {
   return sys;
 }
 
+namespace {
+
+// One fluid particle's row of a pressure file, with its global id (the file's order).
+struct PressureRow {
+  std::int64_t id;
+  double y, p, p_exact;
+};
+
+}  // namespace
+
 template <int D>
-nlohmann::json HydrostaticCase<D>::measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
-  const auto& lay = sys.layout();
-  const std::size_t n = lay.n;
-  const auto& p = sys.pressure();
+nlohmann::json HydrostaticCase<D>::measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t,
+                                                  const OutputSink& out) {
+  const auto& lay = piece.system->layout();
+  const double* y = piece.y;
+  const auto& p = piece.system->pressure();
+  const auto& rho = piece.system->density();
   const double scale = rho0_ * g_ * depth_;
-  double s2 = 0.0, emax = 0.0;
+  // Exact sums over the ranks' own fluid (run/piece_reduction.hpp): the serial values to the bit.
   // Least-squares line p = a + b y through every fluid particle: b against -rho0 g is the fitted
   // gradient's error (a column whose pressure is right on average can still lean).
-  double sy = 0.0, sp = 0.0, syy = 0.0, syp = 0.0, srho = 0.0;
-  const auto& rho = sys.density();
-  std::ostringstream csv;
-  csv << (D == 3 ? "z [m]" : "y [m]") << ",p_sph [Pa],p_exact [Pa]\n" << std::setprecision(10);
-  for (std::size_t i = 0; i < n; ++i) {
+  PieceReduction r;
+  const auto count = r.sum(), s2 = r.sum(), sy = r.sum(), sp = r.sum(), syy = r.sum(), syp = r.sum(), srho = r.sum();
+  const auto emax = r.largest();
+  const bool file = writes_files(piece, out.enabled);
+  std::vector<PressureRow> rows;
+  for (std::size_t k = 0; k < piece.fluid_rows.size(); ++k) {
+    const std::size_t i = piece.fluid_rows[k];
     const double yi = y[lay.position(D - 1) + i];
     const double pe = rho0_ * g_ * (depth_ - yi);
     const double e = (p[i] - pe) / scale;
-    s2 += e * e;
-    emax = std::max(emax, std::abs(e));
-    sy += yi;
-    sp += p[i];
-    syy += yi * yi;
-    syp += yi * p[i];
-    srho += rho[i];
-    csv << yi << ',' << p[i] << ',' << pe << '\n';
+    r.add(count, 1.0);
+    r.add(s2, e * e);
+    r.add(emax, std::abs(e));
+    r.add(sy, yi);
+    r.add(sp, p[i]);
+    r.add(syy, yi * yi);
+    r.add(syp, yi * p[i]);
+    r.add(srho, rho[i]);
+    if (file) rows.push_back({piece.fluid_ids[k], yi, p[i], pe});
   }
-  if (out.enabled) {
-    std::ostringstream name;
-    name << "pressure_t" << std::setprecision(6) << t << ".csv";
-    out.write(name.str(), csv.str());
+  r.reduce(piece);
+  if (file) {
+    // Every rank's rows on rank 0, in the order of the particles.
+    rows = gather_rows(piece, rows);
+    std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+    if (out.enabled) {
+      std::ostringstream csv, name;
+      csv << (D == 3 ? "z [m]" : "y [m]") << ",p_sph [Pa],p_exact [Pa]\n" << std::setprecision(10);
+      for (const auto& row : rows) csv << row.y << ',' << row.p << ',' << row.p_exact << '\n';
+      name << "pressure_t" << std::setprecision(6) << t << ".csv";
+      out.write(name.str(), csv.str());
+    }
   }
-  const double nn = static_cast<double>(n), var = syy - sy * sy / nn;
-  const double slope = var > 0.0 ? (syp - sy * sp / nn) / var : 0.0;
-  return {{"t", t}, {"settled", t >= settle_}, {"p_rms", std::sqrt(s2 / nn)}, {"p_max", emax},
+  const double nn = r.value(count), var = r.value(syy) - r.value(sy) * r.value(sy) / nn;
+  const double slope = var > 0.0 ? (r.value(syp) - r.value(sy) * r.value(sp) / nn) / var : 0.0;
+  return {{"t", t}, {"settled", t >= settle_}, {"p_rms", std::sqrt(r.value(s2) / nn)}, {"p_max", std::max(0.0, r.value(emax))},
           {"gradient_rel_error", -slope / (rho0_ * g_) - 1.0},
           // Against the column's own weight, g times its mean density: the weakly compressible fluid is
           // denser than rho0 under load (by g H / c0^2 = 1 % at the bottom with c0 = 10 sqrt(g H)), so
           // its exact gradient is steeper than rho0 g; this part is the discretisation's alone.
-          {"gradient_rel_error_eos", -slope / (g_ * srho / nn) - 1.0}, {"max_drift", *drift_ / spacing_}};
+          {"gradient_rel_error_eos", -slope / (g_ * r.value(srho) / nn) - 1.0}, {"max_drift", *drift_ / spacing_}};
 }
 
 // Worst over the settled output times: the errors must stay bounded, not only end small.

@@ -25,7 +25,10 @@ class HydrostaticCase final : public Case<D> {
   // The free-fall speed sqrt(2 g H) of the column.
   double velocity_scale(const Config&) const override { return std::sqrt(2.0 * g_ * depth_); }
   bool free_surface() const override { return true; }
-  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state; the pressure
+  // file's rows (one per fluid particle) are gathered on rank 0 when the run writes files.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "p_rms"; }
   void annotate(nlohmann::json& summary) const override;

@@ -44,8 +44,8 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
 }
 
 template <int D>
-nlohmann::json SceneCase<D>::measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink&) {
-  const FluidTotals<D> f = fluid_totals(sys, y);
+nlohmann::json SceneCase<D>::measure_pieces(const SphSystem<D>&, const OwnedPiece<D>& piece, double t, const OutputSink&) {
+  const FluidTotals<D> f = fluid_totals(piece);  // exact sums over the ranks (run/conservation.hpp)
   const auto& p = f.momentum;
   const double ke = f.kinetic, mass = f.mass, vmax = f.max_speed;
   // Relative to M U^2 / 2; with no velocity scale (at rest, no body force), to the initial energy

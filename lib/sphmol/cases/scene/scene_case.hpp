@@ -19,7 +19,9 @@ class SceneCase final : public Case<D> {
  public:
   std::unique_ptr<SphSystem<D>> build(const Config& config) override;
   std::string reference() const override { return "none (conservation of mass, momentum and kinetic energy)"; }
-  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "kinetic_energy_change"; }
   // A user scene has no exact solution: the studies compare its kinetic-energy change with a
