@@ -59,6 +59,44 @@ Config channel(const std::string& file) {
                                           "output.times=[0.01,0.02,0.03]", "output.plots=false"});
 }
 
+Config beltrami() {
+  return load_config(verification("beltrami_3d.yaml"), {"discretization.particles_across=8", "time.t_end=0.01",
+                                                         "output.times=[0.005,0.01]", "output.plots=false"});
+}
+
+Config duct() {
+  return load_config(verification("duct_3d.yaml"), {"discretization.particles_across=8", "geometry.length=1.0e-3", "time.integrator=leapfrog",
+                                                    "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"});
+}
+
+// c over the ranks and (rank 0) serially, writing files: every CSV file the serial run writes is
+// written over the ranks with the same bytes. Returns the summary over the ranks.
+nlohmann::json check_files_equal_serial(const Config& c, const fs::path& dir, std::size_t csv_expected) {
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const nlohmann::json split = run_into(c, &partitioner, dir / "split");
+  REQUIRE(split["status"] == "completed");
+  comm.barrier();
+  if (comm.rank() == 0) {
+    INFO(c.case_name << ", " << comm.size() << " ranks");
+    const nlohmann::json serial = run_into(c, nullptr, dir / "serial");
+    REQUIRE(serial["status"] == "completed");
+    CHECK(split["errors"] == serial["errors"]);
+    CHECK(split["conservation"] == serial["conservation"]);
+    std::size_t compared = 0;
+    for (const auto& f : serial["files"]) {
+      const std::string name = f.get<std::string>();
+      if (name.size() < 4 || name.substr(name.size() - 4) != ".csv") continue;
+      INFO(name);
+      CHECK(test_support::slurp(dir / "split" / name) == test_support::slurp(dir / "serial" / name));
+      ++compared;
+    }
+    CHECK(compared == csv_expected);
+  }
+  comm.barrier();
+  return split;
+}
+
 }  // namespace
 
 TEST_CASE("reduced measurements: a case measured from pieces equals the serial measurement to the bit, without gathers",
@@ -69,7 +107,8 @@ TEST_CASE("reduced measurements: a case measured from pieces equals the serial m
                   {"discretization.particles_across=10", "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"}),
       load_config(verification("dam_break.yaml"),
                   {"discretization.spacing=0.04", "time.t_end=0.06", "output.times=[0.03,0.06]", "output.plots=false"}),
-      load_config(verification("scene_tank.yaml"), {"time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"})};
+      load_config(verification("scene_tank.yaml"), {"time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"}),
+      beltrami(), duct()};
   for (const Config& c : cases) {
     const nlohmann::json split = check_measurements_equal_serial(c);
     // The final state only (the end's observers and the final state); no output time gathers.
@@ -104,27 +143,19 @@ probes:
   const Config with_probe = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",
                                                       "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false",
                                                       "output.vtk=true"});
-  const nlohmann::json split = run_into(with_probe, &partitioner, dir / "split");
-  REQUIRE(split["status"] == "completed");
+  const nlohmann::json split = check_files_equal_serial(with_probe, dir / "couette", 3);  // 2 profiles, the probe
   CHECK(split["parallel"]["whole_state_gathers"].get<long>() == 1);
   CHECK(split["parallel"]["whole_field_gathers"].get<long>() == 0);
-  comm.barrier();
-  if (comm.rank() == 0) {
-    const nlohmann::json serial = run_into(with_probe, nullptr, dir / "serial");
-    REQUIRE(serial["status"] == "completed");
-    CHECK(split["errors"] == serial["errors"]);
-    CHECK(split["conservation"] == serial["conservation"]);
-    // The profiles (one row per fluid particle, gathered on rank 0) and the probe's file.
-    std::size_t compared = 0;
-    for (const auto& f : serial["files"]) {
-      const std::string name = f.get<std::string>();
-      if (name.rfind("profile_t", 0) != 0 && name.rfind("probe_", 0) != 0) continue;
-      INFO(name);
-      CHECK(test_support::slurp(dir / "split" / name) == test_support::slurp(dir / "serial" / name));
-      ++compared;
-    }
-    CHECK(compared == 3);
-  }
+  // The other cases' files: the duct's profiles and peaks, the column's pressures, the decays, the front.
+  check_files_equal_serial(duct(), dir / "duct", 3);
+  check_files_equal_serial(beltrami(), dir / "beltrami", 1);
+  check_files_equal_serial(taylor_green(), dir / "taylor_green", 1);
+  check_files_equal_serial(load_config(verification("hydrostatic.yaml"), {"discretization.particles_across=10", "time.t_end=0.02",
+                                                                         "output.times=[0.01,0.02]", "output.plots=false"}),
+                           dir / "hydrostatic", 2);
+  check_files_equal_serial(load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.06",
+                                                                       "output.times=[0.03,0.06]", "output.plots=false"}),
+                           dir / "dam_break", 1);
   // A probe without `every` samples the whole state at the output times: those gather again.
   yaml += "  - {name: outputs, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity]}\n";
   const Config gathering = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",

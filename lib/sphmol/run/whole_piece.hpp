@@ -19,9 +19,11 @@ OwnedPiece<D> whole_piece(const SphSystem<D>& sys, const double* y) {
   p.system = &sys;
   p.y = y;
   const auto& P = sys.particles();
-  // Generated particles (ghost images) follow the fluid and the walls.
+  // Generated particles (ghost images) follow the fluid and the walls; a system not evaluated yet
+  // (over ranks the whole scene never is) has none.
   const auto* ghosts = dynamic_cast<const GhostGenerator<D>*>(sys.generator());
-  const std::size_t base = sys.has_generator() && ghosts ? ghosts->base() : P.size();
+  const bool generated = ghosts && ghosts->base() >= P.n_fluid && ghosts->base() <= P.size();
+  const std::size_t base = generated ? ghosts->base() : P.size();
   p.fluid_rows.resize(P.n_fluid);
   std::iota(p.fluid_rows.begin(), p.fluid_rows.end(), std::size_t{0});
   p.wall_rows.resize(base - P.n_fluid);

@@ -11,6 +11,7 @@
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
+#include "sphmol/run/piece_reduction.hpp"
 
 namespace sphmol {
 
@@ -59,29 +60,36 @@ std::unique_ptr<SphSystem<3>> BeltramiCase::build(const Config& config) {
   return assemble_system<3>(config, std::move(P), domain, dx);
 }
 
-nlohmann::json BeltramiCase::measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) {
-  const auto& lay = sys.layout();
-  const std::size_t n = lay.n;
+nlohmann::json BeltramiCase::measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t,
+                                            const OutputSink& out) {
+  const auto& lay = piece.system->layout();
+  const double* y = piece.y;
   const double decay = std::exp(-ref_.decay_rate() * t);
   const double amp = scale() * decay;
-  const auto& m = sys.particles().mass;
-  double l1 = 0.0, proj = 0.0, norm = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  const auto& m = piece.system->particles().mass;
+  // Exact sums over the ranks' own fluid (run/piece_reduction.hpp): the serial values to the bit.
+  PieceReduction r;
+  const auto count = r.sum(), l1_sum = r.sum(), proj_sum = r.sum(), norm_sum = r.sum();
+  for (const std::size_t i : piece.fluid_rows) {
     double x[3], v[3];
     for (int d = 0; d < 3; ++d) {
-      x[d] = sys.domain().wrap(d, y[lay.position(d) + i]);
+      x[d] = whole.domain().wrap(d, y[lay.position(d) + i]);
       v[d] = y[lay.velocity(d) + i];
     }
     const auto u0 = ref_.velocity(x[0], x[1], x[2], 0.0);
     double e2 = 0.0;
     for (int d = 0; d < 3; ++d) {
       e2 += (v[d] - u0[d] * decay) * (v[d] - u0[d] * decay);
-      proj += m[i] * v[d] * u0[d];
-      norm += m[i] * u0[d] * u0[d];
+      r.add(proj_sum, m[i] * v[d] * u0[d]);
+      r.add(norm_sum, m[i] * u0[d] * u0[d]);
     }
-    l1 += std::sqrt(e2);
+    r.add(l1_sum, std::sqrt(e2));
+    r.add(count, 1.0);
   }
-  l1 /= static_cast<double>(n) * amp;
+  r.reduce(piece);
+  const double n = r.value(count), proj = r.value(proj_sum), norm = r.value(norm_sum);
+  double l1 = r.value(l1_sum);
+  l1 /= n * amp;
   const double mode = norm > 0.0 ? proj / norm : 0.0;
   t_.push_back(t);
   mode_.push_back(mode);

@@ -27,7 +27,9 @@ class BeltramiCase final : public Case<3> {
   std::unique_ptr<SphSystem<3>> build(const Config& config) override;
   std::string reference() const override { return "abc_flow (decaying Arnold-Beltrami-Childress flow, exact)"; }
   double velocity_scale(const Config&) const override { return scale(); }
-  nlohmann::json measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "L1_velocity"; }
   void annotate(nlohmann::json& summary) const override;

@@ -15,6 +15,8 @@
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
+#include "sphmol/run/gathered_rows.hpp"
+#include "sphmol/run/piece_reduction.hpp"
 
 namespace sphmol {
 
@@ -68,24 +70,34 @@ std::unique_ptr<SphSystem<3>> DuctCase::build(const Config& config) {
   return assemble_system<3>(config, std::move(P), domain, dx);
 }
 
-nlohmann::json DuctCase::measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) {
-  const auto& lay = sys.layout();
-  const std::size_t n = sys.particles().n_fluid;
+nlohmann::json DuctCase::measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t,
+                                        const OutputSink& out) {
+  const auto& lay = piece.system->layout();
+  const double* y = piece.y;
   const double umax = ref_.centre_velocity();
-  double sum2 = 0.0, emax = 0.0, cross = 0.0, peak = 0.0, peak_exact = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  // Exact sums and maxima over the ranks' own fluid (run/piece_reduction.hpp): the serial values to the bit.
+  PieceReduction r;
+  const auto count = r.sum(), squares = r.sum(), largest = r.largest(), crossing = r.largest(), fastest = r.largest(),
+             fastest_exact = r.largest();
+  for (const std::size_t i : piece.fluid_rows) {
     // A particle pushed onto or past a wall (it should not be) is measured at the wall.
     const double py = std::clamp(y[lay.position(1) + i], -ref_.a, ref_.a);
     const double pz = std::clamp(y[lay.position(2) + i], -ref_.b, ref_.b);
     const double u = y[lay.velocity(0) + i];
     const double ue = ref_.velocity(py, pz, t);
     const double e = std::abs(u - ue);
-    sum2 += e * e;
-    emax = std::max(emax, e);
-    cross = std::max(cross, std::hypot(y[lay.velocity(1) + i], y[lay.velocity(2) + i]));
-    peak = std::max(peak, u);
-    peak_exact = std::max(peak_exact, ue);
+    r.add(count, 1.0);
+    r.add(squares, e * e);
+    r.add(largest, e);
+    r.add(crossing, std::hypot(y[lay.velocity(1) + i], y[lay.velocity(2) + i]));
+    r.add(fastest, u);
+    r.add(fastest_exact, ue);
   }
+  r.reduce(piece);
+  // The largest values from 0, as a peak of a flow along +x.
+  const double n = r.value(count), sum2 = r.value(squares), emax = std::max(0.0, r.value(largest));
+  const double cross = std::max(0.0, r.value(crossing)), peak = std::max(0.0, r.value(fastest));
+  const double peak_exact = std::max(0.0, r.value(fastest_exact));
   t_.push_back(t);
   peak_sph_.push_back(peak);
   peak_exact_.push_back(peak_exact);
@@ -95,23 +107,26 @@ nlohmann::json DuctCase::measure(const SphSystem<3>& sys, const double* y, doubl
     for (std::size_t k = 0; k < t_.size(); ++k) s << t_[k] << ',' << peak_sph_[k] << ',' << peak_exact_[k] << '\n';
     out.write("peak.csv", s.str());
   }
-  if (out.enabled && profiles_) {
-    // The rows beside the mid-plane: |z| below one spacing.
-    std::vector<std::array<double, 3>> rows;
-    for (std::size_t i = 0; i < n; ++i) {
+  // The profile's rows beside the mid-plane: |z| below one spacing; every rank's on rank 0, sorted.
+  std::vector<std::array<double, 3>> rows;
+  if (profiles_ && writes_files(piece, out.enabled)) {
+    for (const std::size_t i : piece.fluid_rows) {
       const double pz = y[lay.position(2) + i];
       if (std::abs(pz) >= spacing_) continue;
       const double py = std::clamp(y[lay.position(1) + i], -ref_.a, ref_.a);
       rows.push_back({py, y[lay.velocity(0) + i], ref_.velocity(py, std::clamp(pz, -ref_.b, ref_.b), t)});
     }
+    rows = gather_rows(piece, rows);
     std::sort(rows.begin(), rows.end());
+  }
+  if (out.enabled && profiles_) {
     std::ostringstream s, name;
     s << "y [m],u_sph [m/s],u_exact [m/s]\n" << std::setprecision(12);
-    for (const auto& r : rows) s << r[0] << ',' << r[1] << ',' << r[2] << '\n';
+    for (const auto& row : rows) s << row[0] << ',' << row[1] << ',' << row[2] << '\n';
     name << "profile_t" << std::setprecision(6) << t << ".csv";
     out.write(name.str(), s.str());
   }
-  const double rms = n > 0 ? std::sqrt(sum2 / static_cast<double>(n)) : 0.0;
+  const double rms = n > 0 ? std::sqrt(sum2 / n) : 0.0;
   return {{"t", t}, {"e_rms", rms / umax}, {"e_max", emax / umax}, {"e_cross", cross / umax}};
 }
 

@@ -26,7 +26,9 @@ class DuctCase final : public Case<3> {
   std::unique_ptr<SphSystem<3>> build(const Config& config) override;
   std::string reference() const override { return "duct_series (rectangular-duct start-up, Fourier series)"; }
   double velocity_scale(const Config&) const override { return ref_.centre_velocity(); }
-  nlohmann::json measure(const SphSystem<3>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
 
