@@ -29,7 +29,9 @@ class CavityCase final : public Case<2> {
   std::unique_ptr<SphSystem<2>> build(const Config& config) override;
   std::string reference() const override;
   double velocity_scale(const Config& config) const override { return std::abs(config.settings<CavitySettings>().wall_velocity); }
-  nlohmann::json measure(const SphSystem<2>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<2>& whole, const OwnedPiece<2>& piece, double t, const OutputSink& out) override;
   nlohmann::json final_errors(const nlohmann::json& errors) const override;
   std::string primary_error() const override { return "u_rms"; }
   void annotate(nlohmann::json& summary) const override;
