@@ -14,6 +14,8 @@
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/cases/shock_tube/shock_tube_scene.hpp"
+#include "sphmol/run/gathered_rows.hpp"
+#include "sphmol/run/piece_reduction.hpp"
 
 namespace sphmol {
 
@@ -103,50 +105,58 @@ double ShockTubeCase<D>::local_spacing(int side, double rho) const {
 }
 
 template <int D>
-nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
+nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t,
+                                                const OutputSink& out) {
+  const SphSystem<D>& sys = *piece.system;
   const auto& L = sys.layout();
-  const std::size_t n = L.n;
+  const double* y = piece.y;
   // Fields of the state y itself (not of the last RHS stage): rho from the state when it is there.
   const double* rho = L.has_density ? y + L.density() : sys.density().data();
   const double* e = y + L.energy();
   const double x0 = -0.5 * length_;
   const int nb = static_cast<int>(std::lround(length_ / spacing_));
-  std::vector<ShockTubeBin> sum(static_cast<std::size_t>(nb), ShockTubeBin{0, 0, 0, 0, 0});
-  std::vector<int> count(static_cast<std::size_t>(nb), 0);
-  double l1[4] = {0, 0, 0, 0}, l1_mid[4] = {0, 0, 0, 0};
-  std::size_t n_mid = 0;
+  // Exact sums over the ranks' own fluid (run/piece_reduction.hpp), the bins' included: the serial
+  // values to the bit.
+  PieceReduction r;
+  const auto count = r.sum(), mid_count = r.sum(), l1 = r.sums(4), l1_mid = r.sums(4);
+  // Per bin: the count, then the sums of x, rho, u, p and e.
+  const auto bin_sums = r.sums(6 * static_cast<std::size_t>(nb));
   // Mid-line particles: within one spacing of y = W/2 (the two central rows); in 1D all particles.
+  const bool file = profiles_ && writes_files(piece, out.enabled);
   std::vector<std::array<double, 9>> mid;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (const std::size_t i : piece.fluid_rows) {
     const double x = y[L.position(0) + i], u = y[L.velocity(0) + i];
     const double p = (gamma_ - 1.0) * rho[i] * e[i];
     const RiemannSample q = exact_->sample(x, t, 0.0);
     const double err[4] = {std::abs(rho[i] - q.rho), std::abs(u - q.u), std::abs(p - q.p), std::abs(e[i] - q.e)};
     const bool on_mid = D == 1 || std::abs(y[L.position(D - 1) + i] - 0.5 * width_) < spacing_;
+    r.add(count, 1.0);
     for (int k = 0; k < 4; ++k) {
-      l1[k] += err[k];
-      if (on_mid) l1_mid[k] += err[k];
+      r.add(l1 + k, err[k]);
+      if (on_mid) r.add(l1_mid + k, err[k]);
     }
     if (on_mid) {
-      ++n_mid;
-      mid.push_back({x, rho[i], u, p, e[i], q.rho, q.u, q.p, q.e});
+      r.add(mid_count, 1.0);
+      if (file) mid.push_back({x, rho[i], u, p, e[i], q.rho, q.u, q.p, q.e});
     }
     const int b = static_cast<int>(std::floor((x - x0) / spacing_));
     if (b < 0 || b >= nb) continue;
-    auto& s = sum[static_cast<std::size_t>(b)];
-    s.x += x;
-    s.rho += rho[i];
-    s.u += u;
-    s.p += p;
-    s.e += e[i];
-    ++count[static_cast<std::size_t>(b)];
+    const std::size_t at = bin_sums + 6 * static_cast<std::size_t>(b);
+    r.add(at, 1.0);
+    r.add(at + 1, x);
+    r.add(at + 2, rho[i]);
+    r.add(at + 3, u);
+    r.add(at + 4, p);
+    r.add(at + 5, e[i]);
   }
+  r.reduce(piece);
+  const double n = r.value(count), n_mid = r.value(mid_count);
   std::vector<ShockTubeBin> bins;
   for (int b = 0; b < nb; ++b) {
-    const int c = count[static_cast<std::size_t>(b)];
-    if (c == 0) continue;
-    const auto& s = sum[static_cast<std::size_t>(b)];
-    bins.push_back({s.x / c, s.rho / c, s.u / c, s.p / c, s.e / c});
+    const std::size_t at = bin_sums + 6 * static_cast<std::size_t>(b);
+    const double c = r.value(at);
+    if (c == 0.0) continue;
+    bins.push_back({r.value(at + 1) / c, r.value(at + 2) / c, r.value(at + 3) / c, r.value(at + 4) / c, r.value(at + 5) / c});
   }
   const ShockTubeWaves w = detect_waves(bins, *exact_);
   const RiemannWaves ex = exact_->waves(t, 0.0);
@@ -173,16 +183,20 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
     name << "profile_t" << std::setprecision(6) << t << ".csv";
     out.write(name.str(), s.str());
   }
-  if (out.enabled && profiles_) {
+  // Every rank's mid-line rows on rank 0, sorted by x (then by the other columns).
+  if (file) {
+    mid = gather_rows(piece, mid);
     std::sort(mid.begin(), mid.end());
+  }
+  if (out.enabled && profiles_) {
     std::ostringstream s, name;
     s << kProfileHeader << std::setprecision(10);
-    for (const auto& r : mid)
-      for (int k = 0; k < 9; ++k) s << r[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
+    for (const auto& row : mid)
+      for (int k = 0; k < 9; ++k) s << row[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
     name << "midline_t" << std::setprecision(6) << t << ".csv";
     out.write(name.str(), s.str());
   }
-  const double inv_mid = n_mid > 0 ? 1.0 / static_cast<double>(n_mid) : 0.0;
+  const double inv_mid = n_mid > 0 ? 1.0 / n_mid : 0.0;
   auto pos = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
   // The offset from the exact position in spacings of the denser side (discretization.spacing).
   auto offset = [this](double sph, double exact) {
@@ -200,16 +214,16 @@ nlohmann::json ShockTubeCase<D>::measure(const SphSystem<D>& sys, const double* 
     return j;
   };
   const double rho_l = exact_->sample(x0, t, 0.0).rho;
-  const double inv_n = 1.0 / static_cast<double>(n);
+  const double inv_n = 1.0 / n;
   return {{"t", t},
-          {"L1_rho", l1[0] * inv_n},
-          {"L1_u", l1[1] * inv_n},
-          {"L1_p", l1[2] * inv_n},
-          {"L1_e", l1[3] * inv_n},
-          {"L1_mid_rho", l1_mid[0] * inv_mid},
-          {"L1_mid_u", l1_mid[1] * inv_mid},
-          {"L1_mid_p", l1_mid[2] * inv_mid},
-          {"L1_mid_e", l1_mid[3] * inv_mid},
+          {"L1_rho", r.value(l1) * inv_n},
+          {"L1_u", r.value(l1 + 1) * inv_n},
+          {"L1_p", r.value(l1 + 2) * inv_n},
+          {"L1_e", r.value(l1 + 3) * inv_n},
+          {"L1_mid_rho", r.value(l1_mid) * inv_mid},
+          {"L1_mid_u", r.value(l1_mid + 1) * inv_mid},
+          {"L1_mid_p", r.value(l1_mid + 2) * inv_mid},
+          {"L1_mid_e", r.value(l1_mid + 3) * inv_mid},
           {"waves",
            {{"shock", wave(w.shock, ex.right_head, wx.shock, local_spacing(1, exact_->rho_star_right()))},
             {"contact", wave(w.contact, ex.contact, wx.contact, local_spacing(0, exact_->rho_star_left()))},

@@ -37,7 +37,10 @@ class ShockTubeCase final : public Case<D> {
  public:
   std::unique_ptr<SphSystem<D>> build(const Config& config) override;
   std::string reference() const override { return "exact Riemann solution (Toro ch. 4)"; }
-  nlohmann::json measure(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state; the mid-line
+  // file's rows are gathered on rank 0 when the run writes files.
+  bool measures_pieces() const override { return true; }
+  nlohmann::json measure_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
   // Studies compare integrators on the density error: rho carries every wave (shock, contact, fan).
