@@ -236,9 +236,11 @@ class MpiRun final : public PartitionedRun<D> {
             {"whole_field_gathers", whole_field_gathers_},
             {"owned_pieces", owned_pieces_},
             {"output", "each rank writes its own particles' VTK pieces; probes sample at their own times from each "
-                       "rank's own particles, rank 0 adding the ranks' terms in the serial order; at output times, "
-                       "checkpoints and the end the whole state and the fields of the ranks' own particles are "
-                       "gathered on rank 0, which measures and writes every other file"}};
+                       "rank's own particles, rank 0 adding the ranks' terms in the serial order; the case measures from "
+                       "each rank's own particles, its sums and the conservation sums reduced exactly over the ranks; "
+                       "checkpoints, the end and output times with probes without `every` gather the whole state "
+                       "(and, at output times, the fields of the ranks' own particles) on rank 0, which writes every "
+                       "other file"}};
   }
 
  private:

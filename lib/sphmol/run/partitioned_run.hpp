@@ -4,11 +4,13 @@
 // library stays MPI-free. The implementation lives in lib/sphmol/parallel (parallel/mpi_run.hpp).
 //
 // Every rank builds the whole scene; the integrator then advances each rank's own part of the
-// state. At output times the whole state is gathered with the fields of each rank's own particles
-// (whole_fields()), and the root rank measures, writes the observers' files and the summary with
-// the whole system, as a serial run does, without evaluating it; observers that write per-rank
-// files (VTK pieces) get each rank's own particles instead (owned_piece()), as do the probes at
-// their own sampling times, which combine the ranks' terms on the root.
+// state. At output times the case measures from each rank's own particles (owned_piece()), its sums
+// and the conservation sums reduced exactly over the ranks (run/piece_reduction.hpp); observers that
+// write per-rank files (VTK pieces) get those particles too, as do the probes at their own sampling
+// times, which combine the ranks' terms on the root. Only an observer that reads the whole system at
+// output times (probes without `every`) has the whole state gathered there with the fields of each
+// rank's own particles (whole_fields()), on the root, which writes the files and the summary as a
+// serial run does, without evaluating the whole system.
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>

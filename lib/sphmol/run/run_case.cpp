@@ -51,8 +51,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   auto integrator = make_integrator(config.time);
   auto observers = make_observers<D>(config, *sys);
   // Over several ranks (run/partitioned_run.hpp) the integrator advances this rank's part of the
-  // state, and `y` holds the whole state only after a gather (output times, the end); the root rank
-  // measures and writes, with the whole system `sys`.
+  // state, and `y` holds the whole state only after a gather (checkpoints, the end, output times for
+  // an observer that reads it); the case measures from each rank's own particles, and the root rank
+  // writes, with the whole system `sys`.
   std::unique_ptr<PartitionedRun<D>> part;
 
   // Restart: the checkpoint's state, time, integrator state and measurements so far.
