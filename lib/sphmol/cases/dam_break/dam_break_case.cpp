@@ -7,6 +7,7 @@
 
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
+#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/reference/dam_break_front.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -25,8 +26,8 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   wall_layers_ = s.wall_layers;
   n_fluid0_ = s.particles.n_fluid;
   n_wall_ = s.particles.n_wall();
-  mass0_ = 0.0;
-  for (std::size_t i = 0; i < n_fluid0_; ++i) mass0_ += s.particles.mass[i];
+  // The exact sum the measurement takes (run/piece_reduction.hpp): mass_change is 0 while no mass is lost.
+  mass0_ = fixed_point_total(s.particles.mass.data(), n_fluid0_);
   csv_ = "t [s],T [-],x_front [m],x_ritter [m],x_mm [m],x_ko [m]\n";
   auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
   sys->add_monitor(std::make_shared<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], n_fluid0_, penetration_));
