@@ -30,12 +30,13 @@ std::string hydrostatic(const std::string& extra) {
 // and the run blows up at t = 1.68 s; with gravity reversed the water leaves the tank. Both fail here.
 TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse, 4 s)",
           "[integration][hydrostatic][ghost]") {
-  // The settings these walls were measured with (the shipped file now uses Wendland C2 and continuity).
+  // The settings these walls were measured with (the shipped file now uses Wendland C2, continuity and
+  // c0 = 20 sqrt(g H)).
   const auto s = run_in_process("hydrostatic.yaml", {"discretization.boundary=ghost", "discretization.wall_pressure=rest",
                                                      "discretization.kernel=cubic_spline",
                                                      "discretization.smoothing_ratio=1.3",
                                                      "discretization.density=summation", "fluid.eos.clamp_negative=true",
-                                                     "discretization.particles_across=20", "time.dt=5e-4",
+                                                     "discretization.particles_across=20", "time.dt=5e-4", "fluid.eos.sound_speed=29.7",
                                                      "time.t_end=4", "output.times=[2, 3, 4]"});
   const auto& f = s["final_errors"];
   INFO(f.dump());
@@ -50,7 +51,7 @@ TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse
 // distance from the wall line to the outermost particles, so that nothing is repelled at t = 0
 // (r0 = dx blows up at t = 0.002: the particles half a spacing from the wall feel 2^12 D / r).
 // Continuity density: summation density is deficient by half a kernel next to the massless walls.
-// Measured (20 across, 4 s): max_drift 0.87, p_rms 0.23, p_max 1.29 — the rows next to the walls
+// Measured (20 across, 4 s, c0 = 29.7 m/s): max_drift 0.87, p_rms 0.23, p_max 1.29 — the rows next to the walls
 // are wrong by up to rho0 g H (truncated kernel), the interior rows by about 0.01-0.05. The bound
 // checks that the run is stable and the column stands, not that it is accurate.
 TEST_CASE("hydrostatic with repulsive virtual particles: stable, column stands (coarse, 4 s)",
@@ -60,7 +61,7 @@ TEST_CASE("hydrostatic with repulsive virtual particles: stable, column stands (
                            "discretization.repulsive.strength=8.8", "discretization.repulsive.r0=0.5",
                            "discretization.density=continuity", "discretization.kernel=cubic_spline",
                            "discretization.smoothing_ratio=1.3", "fluid.eos.clamp_negative=true",
-                           "discretization.particles_across=20", "time.dt=5e-4",
+                           "discretization.particles_across=20", "time.dt=5e-4", "fluid.eos.sound_speed=29.7",
                            "time.t_end=4", "output.times=[2, 3, 4]"});
   const auto& f = s["final_errors"];
   INFO(f.dump());

@@ -78,7 +78,7 @@ TEST_CASE("distributed run: a water column with ghost walls under gravity equals
   // Summation density (two dependent passes: the halo reaches two list radii) with the bottom and side
   // mirrors, whose images carry p_i + rho_i g.(x_g - x_i).
   const Config c = load_config(verification("hydrostatic.yaml"),
-                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest",
+                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "fluid.eos.sound_speed=29.7",
                                 "discretization.kernel=cubic_spline", "discretization.smoothing_ratio=1.3",
                                 "discretization.density=summation", "fluid.eos.clamp_negative=true",
                                 "discretization.particles_across=20", "time.dt=5.0e-4", "time.t_end=0.05",
@@ -95,7 +95,7 @@ TEST_CASE("distributed run: a water column that falls through its bottom mirror 
   // images lie in front of the mirror. (Setting the margin to zero does not change this run: no pair
   // fell in the band the margin adds while it crossed a rank boundary; the next test's scene does.)
   const Config c = load_config(verification("hydrostatic.yaml"),
-                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest",
+                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "fluid.eos.sound_speed=29.7",
                                 "discretization.kernel=cubic_spline", "discretization.smoothing_ratio=1.3",
                                 "discretization.density=continuity", "fluid.eos.clamp_negative=true",
                                 "geometry.box=[0.25, 0.6]", "discretization.particles_across=5", "time.dt=2.5e-4", "time.t_end=0.3",
@@ -157,7 +157,7 @@ TEST_CASE("distributed system: a water column partly behind its bottom mirror ev
   // on every rank: the serial reference and the whole scene the distributed system is made from.
   const Communicator comm;
   const Config c = load_config(verification("hydrostatic.yaml"),
-                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest",
+                               {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "fluid.eos.sound_speed=29.7",
                                 "discretization.kernel=cubic_spline", "discretization.smoothing_ratio=1.3",
                                 "discretization.density=continuity", "fluid.eos.clamp_negative=true",
                                 "geometry.box=[0.25, 0.6]", "discretization.particles_across=5", "time.dt=2.5e-4",

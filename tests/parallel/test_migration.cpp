@@ -107,3 +107,30 @@ TEST_CASE("migration: arrays empty on every rank stay empty; a bad destination i
   const bool rank0_has_particles = comm.all_gather(static_cast<int>(gid.size()))[0] > 0;
   if (rank0_has_particles) CHECK_THROWS_WITH(migrate(comm, p, gid, bad), Catch::Contains("rank"));
 }
+
+TEST_CASE("migration: fluid taken out of the run (Kind::Out) travels as fluid, among the fluid", "[parallel][migration][outflow]") {
+  // Its state rows are the fluid's (run/outflow.hpp): after a migration it must sit among the fluid,
+  // counted in n_fluid, in ascending id, with its kind.
+  const Communicator comm;
+  const auto s = test::random_set<2>(300, {false, false}, 7);
+  Particles<2> p;
+  std::vector<std::uint64_t> gid;
+  test::take_share(s, comm, p, gid);
+  const auto out = [&](std::uint64_t g) { return g < s.particles.n_fluid && g % 7 == 3; };
+  for (std::size_t i = 0; i < gid.size(); ++i)
+    if (out(gid[i])) p.kind[i] = Kind::Out;
+  std::vector<int> dest(gid.size());
+  for (std::size_t i = 0; i < gid.size(); ++i) dest[i] = scattered_rank(gid[i], comm.size());
+  migrate(comm, p, gid, dest);
+  const auto nf = static_cast<std::ptrdiff_t>(p.n_fluid);
+  CHECK(p.n_fluid == static_cast<std::size_t>(std::count_if(gid.begin(), gid.end(), [&](std::uint64_t g) { return g < s.particles.n_fluid; })));
+  CHECK(std::all_of(gid.begin(), gid.begin() + nf, [&](std::uint64_t g) { return g < s.particles.n_fluid; }));
+  CHECK(std::is_sorted(gid.begin(), gid.begin() + nf));
+  CHECK(std::is_sorted(gid.begin() + nf, gid.end()));
+  std::size_t wrong_kind = 0;
+  for (std::size_t i = 0; i < gid.size(); ++i)
+    wrong_kind += p.kind[i] != (out(gid[i]) ? Kind::Out : gid[i] < s.particles.n_fluid ? Kind::Fluid : Kind::Wall);
+  CHECK(wrong_kind == 0);
+  CHECK(comm.sum(static_cast<std::uint64_t>(std::count(p.kind.begin(), p.kind.end(), Kind::Out))) ==
+        static_cast<std::uint64_t>(std::count_if(s.gid.begin(), s.gid.end(), out)));
+}

@@ -4,7 +4,9 @@
 // serially ends, bit for bit; with a leapfrog that is also where the uninterrupted run ends (ARKODE
 // starts its error controller afresh from a checkpoint, so its continued steps are its own). The
 // checkpoint holds the whole state in the serial layout, so the continuing ranks partition it
-// afresh; the sub-communicator also shows that nothing in a run reaches for MPI_COMM_WORLD.
+// afresh; the sub-communicator also shows that nothing in a run reaches for MPI_COMM_WORLD. Fluid
+// that had left the domain before the checkpoint stays out on the continuing ranks, and the summary's
+// "outflow" object is the serial continuation's (run/outflow.hpp).
 #include <catch2/catch.hpp>
 #include <mpi.h>
 #include <unistd.h>
@@ -19,6 +21,7 @@
 #include "sphmol/parallel/mpi_run.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "serial_reference.hpp"
+#include "shot_scene.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
@@ -73,6 +76,7 @@ void check_continued_on_fewer_ranks(const Config& c, const std::string& name, co
       CHECK(continued.summary["parallel"]["ranks"] == fewer);
       CHECK(continued.summary["steps"] == serial.summary["steps"]);
       CHECK(same_bits(continued.y, serial.y));
+      CHECK(continued.summary["outflow"] == serial.summary["outflow"]);
       if (like_uninterrupted) CHECK(same_bits(continued.y, whole.y));
     }
   }
@@ -103,4 +107,14 @@ TEST_CASE("distributed run: an ARKODE checkpoint written on every rank continues
                                {"discretization.particles_across=20", "time.integrator=arkode_erk", "time.t_end=0.03",
                                 "output.times=[0.015,0.03]", "output.plots=false", "output.checkpoint_every=0.015"});
   check_continued_on_fewer_ranks(c, "arkode", "checkpoint-0.015", 1.2, false);
+}
+
+TEST_CASE("distributed run: a checkpoint with fluid out, written on every rank, continues on half of them across more exits",
+          "[parallel][run][restart][outflow]") {
+  // The shot particle has left before the checkpoint (t = 0.09): the continuing ranks take it out
+  // again at their start, from where it sits (run/outflow.hpp); the falling block then leaves
+  // through the open floor after it. Partitioned again at every re-plan.
+  const Config c = sphmol::testing::shot_scene({"fluid.body_force=[0.0, -9.81]", "health.max_outflow_fraction=1", "time.t_end=0.18",
+                                                "output.times=[0.09, 0.18]", "output.checkpoint_every=0.09"});
+  check_continued_on_fewer_ranks(c, "outflow", "checkpoint-0.09", 1.0, true);
 }

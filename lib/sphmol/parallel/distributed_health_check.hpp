@@ -1,7 +1,7 @@
 #pragma once
 // Blow-up detection after every accepted step of a run over ranks: the tests of the serial check
 // (run/health_check.hpp) on each rank's own particles, in its order. First the numerical ones, NaN/Inf
-// in the state, a fluid particle outside the domain in a non-periodic direction, density <= 0 in
+// in the state, a fluid particle beyond a face of the domain closed to outflow, density <= 0 in
 // the latest evaluation; then the physical bounds of the scene (run/health_limits.hpp: speed,
 // density range, mechanical energy budget, run/physical_bounds.hpp), and the CFL step collapsing.
 // One verdict for all ranks, so every rank throws the same BlowUp and none is left waiting in a
@@ -14,6 +14,13 @@
 // tested on the step size the evaluation has already reduced. A failure costs three more
 // all-gathers for the failing rank's message. The last state that passed stays on each rank (its
 // own particles), for the run to gather and write.
+// A fluid particle beyond a face open to outflow is not a blow-up: as the serial check, this one
+// notes it (exits()), and the run takes it out between steps (run/outflow.hpp). Each rank's verdict
+// carries the count of its own leavers, so every rank learns from the same all-gather that some rank
+// has them; only then (a step with exits, once every test has passed) does a further all-gather
+// bring their global ids to every rank (leavers(), ascending), so that all ranks take the same
+// particles out at the same step. Particles already taken out (Kind::Out) are left out of every test
+// and sum, as in the serial check.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -42,6 +49,8 @@ class DistributedHealthCheck {
     PhysicalInputs<D> in;
     in.V = bounds_.frame_velocity(t0);
     in.mass = whole.particles().mass.data();
+    // A restart's particles out at its start (taken out of `whole` before the partition) are massless.
+    if (!whole.retired().empty()) in.kind = whole.particles().kind.data();
     bounds_.start(bounds_.sums(whole.layout(), y0.data(), in, static_cast<long>(whole.layout().n)));
   }
 
@@ -49,8 +58,9 @@ class DistributedHealthCheck {
   int operator()(double t, const double* y, int signal) {
     long particle = -1;
     gather_density();
-    const std::string cause = any_numerical_failure(y) ? first_failure(y, particle) : std::string();
-    Verdict mine{!cause.empty(), signal};
+    int exits = 0;
+    const std::string cause = any_numerical_failure(y, exits) ? first_failure(y, particle) : std::string();
+    Verdict mine{!cause.empty(), signal, exits};
     if (cause.empty()) physical_sums(t, y, mine);
     const std::vector<Verdict> verdicts = comm_.all_gather(mine);
     for (std::size_t r = 0; r < verdicts.size(); ++r) {
@@ -72,9 +82,21 @@ class DistributedHealthCheck {
     last_good_.swap(candidate_);  // the copy the tests made; the previous good state is reused next time
     last_good_t_ = t;
     int largest = 0;
-    for (const Verdict& v : verdicts) largest = std::max(largest, v.signal);
+    bool any_exit = false;
+    for (const Verdict& v : verdicts) {
+      largest = std::max(largest, v.signal);
+      any_exit = any_exit || v.exits > 0;
+    }
+    leavers_.clear();
+    // Decided alike on every rank (from the verdicts): the one collective more, in a step with exits.
+    if (any_exit) gather_leavers(y, mine.exits);
     return largest;
   }
+
+  // Whether a fluid particle not yet taken out was outside the domain after the latest step (on some
+  // rank; the same on every rank), and the global ids of all of them, ascending, on every rank.
+  bool exits() const { return !leavers_.empty(); }
+  const std::vector<std::size_t>& leavers() const { return leavers_; }
 
   double last_good_time() const { return last_good_t_; }
   // This rank's part of the last state that passed (its layout that of the state when it passed).
@@ -88,6 +110,7 @@ class DistributedHealthCheck {
   struct Verdict {
     int failed;  // 0 or 1
     int signal;
+    int exits;   // fluid particles of this rank outside the domain, not taken out yet
     // The physical bounds' sums over this rank's fluid particles, and the smallest global id past
     // the speed and the density bound (-1: none) with its speed squared and its rho / rho0.
     PhysicalSums<D> sums{};
@@ -110,28 +133,36 @@ class DistributedHealthCheck {
 
   // Whether any of first_failure()'s tests fails, with the same comparisons written without an early
   // exit or a store per particle, so that the loops vectorise; the failure itself is looked for only
-  // then. A bound of +-DBL_MAX in a periodic direction tests finiteness alone. The same loops copy y
-  // into candidate_, the last good state once every test has passed (as the serial check's scan):
-  // y is read once per step, not again for the copy.
-  bool any_numerical_failure(const double* y) {
+  // then. The same loops note whether a live fluid particle is outside the domain (beyond a face open
+  // to outflow when no test fails), and `exits` counts those then, and copy y into candidate_, the
+  // last good state once every test has passed (as the serial check's scan): y is read once per
+  // step, not again for the copy.
+  bool any_numerical_failure(const double* y, int& exits) {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
+    const Kind* const kind = sys_.owned().kind.data();  // owned fluid first: index o of the state
     constexpr double big = std::numeric_limits<double>::max();
     candidate_.resize(L.size());
     double* const keep = candidate_.data();
-    int bad = 0;
+    int bad = 0, outside = 0;
     for (int d = 0; d < D; ++d) {
       const double* x = y + L.position(d);
       const double* v = y + L.velocity(d);
       double* kx = keep + L.position(d);
       double* kv = keep + L.velocity(d);
-      const double lo = dom.periodic[d] ? -big : dom.lo[d], hi = dom.periodic[d] ? big : dom.hi[d];
-      // & rather than &&: no branch per particle.
+      const bool open = dom.periodic[d];
+      // A closed face: crossing it fails the check; an outflow face: noted (exits).
+      const bool closed_lo = !open && !dom.outflow[d][0], closed_hi = !open && !dom.outflow[d][1];
+      const double xlo = dom.lo[d], xhi = dom.hi[d];
+      // & and | rather than && and ||: no branch per particle.
       for (std::size_t i = 0; i < L.n; ++i) {
         const double xi = x[i], vi = v[i];
+        const bool live = kind[i] != Kind::Out;
         kx[i] = xi;
         kv[i] = vi;
-        bad |= static_cast<int>(!((xi >= lo) & (xi <= hi) & (std::abs(vi) <= big)));
+        bad |= static_cast<int>(!((std::abs(xi) <= big) & (std::abs(vi) <= big)) |
+                                (live & ((closed_lo & (xi < xlo)) | (closed_hi & (xi > xhi)))));
+        outside |= static_cast<int>(live & !open & ((xi < xlo) | (xi > xhi)));
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k) {
@@ -139,8 +170,36 @@ class DistributedHealthCheck {
       keep[k] = yk;
       bad |= static_cast<int>(!(std::abs(yk) <= big));
     }
-    for (std::size_t i = 0; i < rho_.size(); ++i) bad |= static_cast<int>(!(rho_[i] > 0.0));
+    for (std::size_t i = 0; i < rho_.size(); ++i) bad |= static_cast<int>(!(rho_[i] > 0.0) & (kind[i] != Kind::Out));
+    exits = bad == 0 && outside != 0 ? static_cast<int>(leaving(y).size()) : 0;
     return bad != 0;
+  }
+
+  // This rank's live fluid particles outside the domain (owned state indices, ascending), as
+  // run/outflow.hpp's fluid_outside_domain finds them in the whole state.
+  std::vector<std::size_t> leaving(const double* y) const {
+    const auto& L = sys_.layout();
+    const auto& dom = sys_.domain();
+    const auto& kind = sys_.owned().kind;
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < L.n; ++i) {
+      if (kind[i] == Kind::Out) continue;
+      for (int d = 0; d < D; ++d)
+        if (dom.outside(d, y[L.position(d) + i])) {
+          out.push_back(i);
+          break;
+        }
+    }
+    return out;
+  }
+
+  // Collective: every rank's leavers by global id into leavers_, ascending, on every rank.
+  void gather_leavers(const double* y, int mine) {
+    std::vector<std::size_t> ids;
+    if (mine > 0)
+      for (const std::size_t o : leaving(y)) ids.push_back(static_cast<std::size_t>(sys_.gid()[o]));
+    leavers_ = comm_.all_gather_v(ids);
+    std::sort(leavers_.begin(), leavers_.end());
   }
 
   // This rank's part of the physical bounds, after its state has passed the numerical tests.
@@ -152,6 +211,8 @@ class DistributedHealthCheck {
     PhysicalInputs<D> in;
     in.V = bounds_.frame_velocity(t);
     in.mass = sys_.owned().mass.data();
+    const Kind* const kind = sys_.owned().kind.data();
+    if (std::any_of(kind, kind + n, [](Kind k) { return k == Kind::Out; })) in.kind = kind;  // massless
     in.own = own.empty() ? nullptr : own.data();
     in.own_n = static_cast<long>(own.size());
     if (bounds_.elastic()) {
@@ -173,17 +234,20 @@ class DistributedHealthCheck {
       // With one rest density the extremes first (as the serial check's scan): the particles are
       // looked at one by one only when some of them is past the bound.
       const double r0 = bounds_.limits().rho0;
+      // Particles taken out are skipped.
       bool past = !own.empty();
       if (!past && n > 0) {
-        double lo = rho_[0], hi = rho_[0];
-        for (long o = 1; o < n; ++o) {
-          lo = std::min(lo, rho_[static_cast<std::size_t>(o)]);
-          hi = std::max(hi, rho_[static_cast<std::size_t>(o)]);
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (long o = 0; o < n; ++o) {
+          const bool live = kind[o] != Kind::Out;
+          lo = std::min(lo, live ? rho_[static_cast<std::size_t>(o)] : std::numeric_limits<double>::infinity());
+          hi = std::max(hi, live ? rho_[static_cast<std::size_t>(o)] : -std::numeric_limits<double>::infinity());
         }
         past = bounds_.outside_density(lo / r0) || bounds_.outside_density(hi / r0);
       }
       for (long o = 0; o < n && past; ++o) {
         const auto k = static_cast<std::size_t>(o);
+        if (kind[k] == Kind::Out) continue;
         const double ratio = rho_[k] / (own.empty() ? r0 : own[k]);
         const long id = static_cast<long>(gid[k]);
         if (bounds_.outside_density(ratio) && (v.dense < 0 || id < v.dense)) {
@@ -214,6 +278,7 @@ class DistributedHealthCheck {
     const auto& L = sys_.layout();
     const auto& dom = sys_.domain();
     const auto& gid = sys_.gid();
+    const auto& kind = sys_.owned().kind;
     for (int d = 0; d < D; ++d) {
       const double* x = y + L.position(d);
       const double* v = y + L.velocity(d);
@@ -222,16 +287,10 @@ class DistributedHealthCheck {
         if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
           return std::string("NaN/Inf in the ") + (std::isfinite(x[i]) ? "velocity" : "position") + " (component " +
                  std::to_string(d) + ")";
-        if (dom.beyond_closed_face(d, x[i]))
+        // Beyond a face open to outflow the run takes the particle out (exits()).
+        if (kind[i] != Kind::Out && dom.beyond_closed_face(d, x[i]))
           return "particle left the domain in direction " + std::to_string(d) + " through a face closed to outflow (x = " +
                  std::to_string(x[i]) + ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) + "])";
-        if (dom.outside(d, x[i]))
-          // A serial run takes such a particle out and goes on (run/outflow.hpp); over ranks that is
-          // not done, so the run ends here rather than continue with a different fluid than the serial run's.
-          return "particle left the domain in direction " + std::to_string(d) + " (x = " + std::to_string(x[i]) +
-                 ", domain [" + std::to_string(dom.lo[d]) + ", " + std::to_string(dom.hi[d]) +
-                 "]): a run over MPI ranks does not take fluid that leaves the domain out of the run (outflow); "
-                 "run it on one rank";
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k)
@@ -241,6 +300,7 @@ class DistributedHealthCheck {
         return "NaN/Inf in a state field";
       }
     for (std::size_t i = 0; i < L.n; ++i) {
+      if (kind[i] == Kind::Out) continue;
       const double rho = sys_.owned_density(i);
       particle = static_cast<long>(gid[i]);
       if (!(rho > 0.0)) return "density <= 0 (rho = " + std::to_string(rho) + ")";
@@ -255,6 +315,7 @@ class DistributedHealthCheck {
   double last_good_t_;
   PhysicalBounds<D> bounds_;
   std::vector<double> rho_;  // the owned fluid's densities of the latest evaluation, in state order
+  std::vector<std::size_t> leavers_;  // the latest step's, by global id (every rank's, ascending)
 };
 
 }  // namespace sphmol::parallel

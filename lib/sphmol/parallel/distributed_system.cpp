@@ -388,6 +388,8 @@ void DistributedSystem<D>::plan() {
   }
   local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_,
                               ghost_walls_ ? &*ghost_walls_ : nullptr, std::move(energy), ghost_planes_);
+  // Fluid taken out of the run arrives as Kind::Out (the owners' kind), which the new local system
+  // starts with retired (SphSystem's constructor): no pair, zero rates.
   if (variable_h_) {
     std::vector<double> h0(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
@@ -431,6 +433,21 @@ void DistributedSystem<D>::plan() {
   ++stats_.plans;
   stats_.halo = nh;
   stats_.halo_max = std::max(stats_.halo_max, nh);
+}
+
+template <int D>
+void DistributedSystem<D>::take_out(const std::vector<std::size_t>& gone, double* y) {
+  const auto leaving = [&](std::uint64_t id) { return std::binary_search(gone.begin(), gone.end(), static_cast<std::size_t>(id)); };
+  for (std::size_t o = 0; o < nfo_; ++o)
+    if (leaving(gid_[o])) {
+      owned_.kind[o] = Kind::Out;
+      for (int d = 0; d < D; ++d) y[layout_.velocity(d) + o] = 0.0;
+    }
+  if (!local_) return;
+  std::vector<std::size_t> rows;
+  for (std::size_t k = 0; k < nf_local_; ++k)
+    if (leaving(local_gid_[k])) rows.push_back(k);
+  local_->retire(rows);
 }
 
 template <int D>

@@ -39,6 +39,13 @@
 // every evaluation as the serial system's do; the results stay in the monitors, across halo plans
 // and repartitions, and MpiRun combines them over the ranks where the case reads them.
 //
+// Outflow (run/outflow.hpp): fluid that has left the domain is taken out of the run between steps
+// (take_out()) by the global ids every rank has learnt from the health check: each rank zeroes the
+// velocities of its own leavers in its state, marks them Kind::Out among its owned particles, and
+// retires them and the halo copies it holds in its local system (SphSystem::retire), so that no rank
+// pairs with them. The kind travels with the particles in the halo exchange of later plans and in
+// migrations, and each new local system starts with the rows that arrive as Kind::Out retired (plan()).
+//
 // SUNDIALS integrators wrap the rank's state in an MPI vector (wrap_state: N_VMake_Parallel over
 // the owned rows, no copy) whose weighted RMS norm is a fixed-point sum reduced over the ranks
 // (fixed_point_norm_mpi.hpp): every rank sees the serial run's error norms and takes its steps. An
@@ -120,6 +127,11 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // of its position block's (`positions`), which are all resized to the new share.
   void repartition(double t, std::vector<double>& y, const std::vector<std::vector<double>*>& state,
                    const std::vector<std::vector<double>*>& positions);
+
+  // Between steps, not collective: the fluid particles of global ids `gone` (ascending, the same on
+  // every rank) leave the run: the velocities of this rank's own ones are zeroed in y (this rank's
+  // state) and they become Kind::Out, here and in the local system with the halo copies of the others.
+  void take_out(const std::vector<std::size_t>& gone, double* y);
 
   // Collective, at an output time: the local system (owned + halo particles) with its fields at
   // (t, y), y this rank's state, as SphSystem::refresh_fields sets them (no evaluation counted, the

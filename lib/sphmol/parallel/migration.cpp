@@ -81,7 +81,8 @@ void migrate(const Communicator& comm, Particles<D>& p, std::vector<std::uint64_
   const std::vector<std::byte> got = comm.all_to_all_v(send, from);
   const std::size_t m = got.size() / row;
 
-  // The received rows: fluid first, then by global id.
+  // The received rows: fluid first, then by global id. Fluid taken out of the run (Kind::Out,
+  // run/outflow.hpp) is fluid still: its state rows travel with it.
   auto gid_of = [&](std::size_t k) {
     std::uint64_t g;
     std::memcpy(&g, got.data() + k * row + gid_at, sizeof g);
@@ -90,7 +91,7 @@ void migrate(const Communicator& comm, Particles<D>& p, std::vector<std::uint64_
   auto wall = [&](std::size_t k) {
     Kind kd;
     std::memcpy(&kd, got.data() + k * row + kind_at, sizeof kd);
-    return kd != Kind::Fluid;
+    return kd == Kind::Wall;
   };
   std::vector<std::size_t> order(m);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -124,7 +125,7 @@ void migrate(const Communicator& comm, Particles<D>& p, std::vector<std::uint64_
     ++column;
   });
   std::size_t fluid = 0;
-  for (Kind kd : p.kind) fluid += kd == Kind::Fluid;
+  for (Kind kd : p.kind) fluid += kd != Kind::Wall;
   p.n_fluid = fluid;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Moves particles between ranks with every per-particle array they carry (particle_columns.hpp), a
 // global id and any number of extra per-particle double arrays (ODE state, rates). Afterwards each
-// rank holds the particles sent to it, fluid first (the layout Particles<D> requires), each kind in
-// ascending global id: the local order depends on what a rank owns, never on where the particles
+// rank holds the particles sent to it, fluid first (the layout Particles<D> requires; fluid taken out
+// of the run, Kind::Out, is fluid), fluid and walls each in ascending global id: the local order depends on what a rank owns, never on where the particles
 // came from.
 #include <cstdint>
 #include <vector>

@@ -41,6 +41,11 @@ class MpiRun final : public PartitionedRun<D> {
     if (!health_) throw std::logic_error("MpiRun::check before start_health_check");
     return (*health_)(t, y_.data(), signal);
   }
+  const std::vector<std::size_t>& leavers() const override {
+    static const std::vector<std::size_t> none;
+    return health_ ? health_->leavers() : none;
+  }
+  void take_out(const std::vector<std::size_t>& gone) override { sys_.take_out(gone, y_.data()); }
   void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
                           const HealthLimits& limits) override {
     health_.emplace(comm_, sys_, whole, y0, y_, t0, limits);

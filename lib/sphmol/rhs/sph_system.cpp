@@ -39,6 +39,10 @@ SphSystem<D>::SphSystem(Particles<D> particles, Domain<D> domain, double h, std:
   moving_walls_ = std::any_of(particles_.motion.begin(), particles_.motion.end(), [](std::int32_t k) { return k >= 0; });
   if (particles_.has_turning_walls())
     for (int d = 0; d < D; ++d) normal_now_[d] = particles_.wall_normal[d];
+  // Fluid already taken out of the run (a rank's local system over MPI ranks, made from particles
+  // that carry their kind): retired from the start, as retire() would.
+  for (std::size_t i = 0; i < particles_.n_fluid; ++i)
+    if (particles_.kind[i] == Kind::Out) retired_.push_back(i);
 }
 
 template <int D>
@@ -583,7 +587,6 @@ std::vector<std::string> SphSystem<D>::implicit_terms() const {
 
 template <int D>
 void SphSystem<D>::retire(const std::vector<std::size_t>& fluid) {
-  if (split_.width > 0) throw std::logic_error("SphSystem::retire: not with a split state");
   bool changed = false;
   for (const std::size_t i : fluid) {
     if (i >= layout_.n) throw std::invalid_argument("SphSystem::retire: " + std::to_string(i) + " is not a fluid particle");

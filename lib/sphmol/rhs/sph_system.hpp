@@ -125,7 +125,10 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // no pair sum, ghost image or wall extrapolation sees it) and every rate of it is zero from the
   // next evaluation on, so that it stays where it is. Its state (the caller sets its velocity to
   // zero) and mass stay. Indices already out are skipped. The integrator must be started again at
-  // (t, y) afterwards (Integrator::restart): f(t, y) changes here. Not with a split state.
+  // (t, y) afterwards (Integrator::restart): f(t, y) changes here. With a split state (a rank's
+  // local system, rhs_split) the indices are the local fluid rows, owned or halo copies alike: a
+  // halo row taken out forms no pair either, and an owned row's zero rates are the ones written. A
+  // system built from particles some of which are Kind::Out already starts with them retired.
   void retire(const std::vector<std::size_t>& fluid);
   // The fluid particles taken out so far, in the order retire() was given them.
   const std::vector<std::size_t>& retired() const { return retired_; }

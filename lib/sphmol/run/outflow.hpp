@@ -13,8 +13,13 @@
 // its first evaluation, and needs no field of its own.
 // An open tank that loses much of its fluid is not a sound run: beyond health.max_outflow_fraction
 // of the fluid mass the run ends as blown up.
-// Walls are not in the state and never leave; a run over MPI ranks does not take fluid out (its
-// health check ends the run when a particle leaves, parallel/distributed_health_check.hpp).
+// Walls are not in the state and never leave.
+// Over MPI ranks every rank keeps an Outflow of the whole scene: the ranks' health checks gather the
+// global ids of the particles that left in a step (parallel/distributed_health_check.hpp), every rank
+// takes those out of the whole system with take_out(sys, leaving, t) (the same count, masses added in
+// the same order, the same first exit and the same BlowUp past the limit on every rank as in the serial
+// run), and each rank takes them out of its own particles and their halo copies
+// (PartitionedRun::take_out).
 #include <cstddef>
 #include <cstdio>
 #include <limits>
@@ -62,13 +67,18 @@ class Outflow {
   // exit time of this run.
   bool take_out(SphSystem<D>& sys, double* y, double t, bool at_start = false) {
     const std::vector<std::size_t> leaving = fluid_outside_domain(sys, y);
-    if (leaving.empty()) return false;
     const auto& L = sys.layout();
-    const auto& m = sys.particles().mass;
-    for (const std::size_t i : leaving) {
+    for (const std::size_t i : leaving)
       for (int d = 0; d < D; ++d) y[L.velocity(d) + i] = 0.0;
-      mass_ += m[i];
-    }
+    return take_out(sys, leaving, t, at_start);
+  }
+  // The same for particles found to have left elsewhere: `leaving`, fluid state indices in ascending
+  // order, not taken out yet (over ranks: the global ids the ranks' checks found, whose velocities
+  // each rank zeroes in its own state). y is not touched.
+  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, double t, bool at_start = false) {
+    if (leaving.empty()) return false;
+    const auto& m = sys.particles().mass;
+    for (const std::size_t i : leaving) mass_ += m[i];  // in index order, as any rank count adds them
     sys.retire(leaving);
     if (at_start) {
       at_start_ += leaving.size();

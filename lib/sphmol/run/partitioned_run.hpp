@@ -55,6 +55,12 @@ class PartitionedRun {
   // returns the largest of all ranks', the same on every rank, so that the ranks stop at the same
   // step whichever of them a signal reached, and when (it travels in the check's own collective).
   virtual int check(double t, double h, int signal) = 0;
+  // Outflow (run/outflow.hpp): the fluid particles the latest check found outside the domain, not
+  // taken out yet, by global id (the whole system's state index), ascending, the same on every rank
+  // (empty: none). take_out(gone), between steps on every rank: this rank's own ones get zero
+  // velocities in state(), and they and their halo copies leave every pair from the next evaluation on.
+  virtual const std::vector<std::size_t>& leavers() const = 0;
+  virtual void take_out(const std::vector<std::size_t>& gone) = 0;
   // Before the first check: the physical bounds (run/health_limits.hpp) made from the whole scene
   // as the serial run makes them, with the whole state (t0, y0) the run starts from.
   virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,

@@ -79,18 +79,18 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     rhs_before_s = restart->rhs_seconds;
     search_before_s = restart->search_seconds;
   }
+  // Fluid that has left the domain is out of the run (run/outflow.hpp); a restarted run finds the
+  // particles an earlier part took out where they left, outside the domain, and takes them out
+  // again before its first evaluation (over ranks on every rank's whole system, before the
+  // partition, which carries their kind to the ranks' particles).
+  Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
+  outflow.take_out(*sys, y.data(), t, true);
   // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
   // rank count wrote it).
   if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
   const bool root = !part || opt.partitioner->root();
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
-  // Fluid that has left the domain is out of the run (run/outflow.hpp); a restarted run finds the
-  // particles an earlier part took out where they left, outside the domain, and takes them out
-  // again before its first evaluation. Serial runs only: over ranks the health check ends the run
-  // when a particle leaves.
-  Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
-  if (!part) outflow.take_out(*sys, y.data(), t, true);
   integrator->initialize(ode, t, y_step);
   // A fixed time.dt runs as set even beyond the CFL bound (the stability studies rely on it), but a
   // step beyond the widest stable CFL step at the start is said: refining a file that fixes dt
@@ -293,8 +293,16 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       stepping = true;
       t = integrator->step_toward(stop);
       // Fluid that left the domain in this step is taken out, and the integrator starts again from
-      // the changed system at (t, y) (run/outflow.hpp). Over the limit: a BlowUp.
+      // the changed system at (t, y) (run/outflow.hpp). Over the limit: a BlowUp. Over ranks every
+      // rank has the leavers' ids from the check: each takes its own and its halo copies out, and
+      // all take them out of the whole system, and restart, at the same step.
       if (health && health->exits() && outflow.take_out(*sys, y.data(), t)) integrator->restart(ode, t, y_step);
+      if (part && !part->leavers().empty()) {
+        const std::vector<std::size_t> gone = part->leavers();
+        part->take_out(gone);
+        // The rank's state now: a repartition (rebalance below) resizes it, so not y_step.
+        if (outflow.take_out(*sys, gone, t)) integrator->restart(ode, t, part->state().data());
+      }
       stepping = false;
       // Not after the last step: nothing would run on the new share.
       if (part && t < times.back()) part->rebalance(*integrator, t);
@@ -380,10 +388,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
 
   j["integrator"] = integrator->describe();
-  if (!part) {
-    j["outflow"] = outflow.to_json();
-    if (const std::string w = outflow.warning(); !w.empty()) warnings.push_back(w);
-  }
+  j["outflow"] = outflow.to_json();
+  if (const std::string w = outflow.warning(); !w.empty()) warnings.push_back(w);
   for (const auto& w : warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
