@@ -114,7 +114,7 @@ TEST_CASE("input errors found by the scene or the size estimate are exit 2 with 
       {"couette", {"discretization.particles_across=10"}, ": geometry.channel_length: the periodic length"},
       {"couette", {"fluid.kinematic_viscosity=0"}, "fluid.kinematic_viscosity: case 'couette' is driven by viscosity"},
       {"couette", {"discretization.particles_across=1000000000"}, "discretization.particles_across: the run needs about"},
-      {"hydrostatic", {"time.max_steps=1000"}, "time.dt: t_end / dt = 20 / 0.00025 = 80000 steps, more than time.max_steps = 1000"},
+      {"cavity", {"time.max_steps=1000"}, "time.dt: t_end / dt = 20 / 0.001 = 20000 steps, more than time.max_steps = 1000"},
   };
   for (const auto& b : bad) {
     INFO(b.message);
@@ -221,9 +221,11 @@ TEST_CASE("leapfrog_kdk and cvode_adams agree with ARKODE on a short Couette run
 TEST_CASE("a fixed time.dt beyond the widest stable CFL step at the start is warned about", "[integration][blowup][health]") {
   // hydrostatic_3d.yaml fixes dt = 0.15 h / c0 for its 8 particles across; refined to 64 across the
   // same dt is 1.2 h / c0, and the run blew up at t = 0.031 s with nothing saying why.
-  SECTION("the hydrostatic tank refined eightfold with its file's fixed step: the summary and stderr say it") {
+  SECTION("the hydrostatic tank refined eightfold with a fixed step: the summary and stderr say it") {
+    // The tank as its file was before it took the CFL step: c0 = 29.7 m/s, dt = 0.15 h / c0 at 40 across.
     const std::string dir = "reports/dt_warning_refined";
     const auto r = sph_mol(dir, {"--config", verification("hydrostatic"), "--set", "discretization.particles_across=320", "--set",
+                                 "fluid.eos.sound_speed=29.7", "--set", "time.dt=2.5e-4", "--set",
                                  "time.t_end=2.5e-4", "--set", "output.times=[2.5e-4]", "--set", "output.plots=false"});
     INFO(r.err);
     CHECK(r.code == 0);
@@ -235,6 +237,17 @@ TEST_CASE("a fixed time.dt beyond the widest stable CFL step at the start is war
     CHECK(w.find("time.dt = 0.00025 s is 1.1") == 0);  // 1.2 h / c0 against h / c at the compressed bottom
     CHECK(w.find("times the largest stable step at t = 0") != std::string::npos);
     CHECK(r.err.find("sph-mol: warning: time.dt") != std::string::npos);
+  }
+  SECTION("the shipped hydrostatic tank refined eightfold: its CFL step follows the spacing, no warning") {
+    const std::string dir = "reports/dt_warning_refined_cfl";
+    const auto r = sph_mol(dir, {"--config", verification("hydrostatic"), "--set", "discretization.particles_across=320", "--set",
+                                 "time.t_end=2.5e-5", "--set", "output.times=[2.5e-5]", "--set", "output.plots=false"});
+    INFO(r.err);
+    CHECK(r.code == 0);
+    const auto s = summary_of(dir);
+    REQUIRE(s.is_object());
+    CHECK(s["status"] == "completed");
+    CHECK(s.value("warnings", nlohmann::json::array()).empty());
   }
   SECTION("Couette with a fixed leapfrog step past the viscous limit") {
     // dt = 2.1e-4 s = 0.2 h^2/nu at 40 across: 1.59 times the viscous limit 0.125 h^2/nu.
@@ -248,7 +261,7 @@ TEST_CASE("a fixed time.dt beyond the widest stable CFL step at the start is war
   }
   SECTION("shipped files whose fixed step is inside the stable ranges: no warning") {
     // scene_tank.yaml's step is 1.4 % above its own acoustic bound (coefficient 0.25), far inside 1.
-    for (const char* file : {"hydrostatic", "scene_tank", "cavity"}) {
+    for (const char* file : {"hydrostatic_3d", "scene_tank", "cavity"}) {
       const std::string dir = std::string("reports/dt_warning_") + file;
       const auto r = sph_mol(dir, {"--config", verification(file), "--set", "time.t_end=1e-5", "--set", "output.times=[1e-5]",
                                    "--set", "output.plots=false"});

@@ -116,9 +116,9 @@ TEST_CASE("scene checks: absurd sizes are refused before allocation with the est
 }
 
 TEST_CASE("scene checks: step and checkpoint counts beyond time.max_steps are refused up front", "[config][scene]") {
-  const std::string fixed = load_error("hydrostatic", {"time.max_steps=1000"});
-  CHECK(fixed.rfind(shipped("hydrostatic") + ":", 0) == 0);  // the line of time.dt in the file
-  CHECK(fixed.find(": time.dt: t_end / dt = 20 / 0.00025 = 80000 steps, more than time.max_steps = 1000") != std::string::npos);
+  const std::string fixed = load_error("cavity", {"time.max_steps=1000"});
+  CHECK(fixed.rfind(shipped("cavity") + ":", 0) == 0);  // the line of time.dt in the file
+  CHECK(fixed.find(": time.dt: t_end / dt = 20 / 0.001 = 20000 steps, more than time.max_steps = 1000") != std::string::npos);
   const std::string cfl = load_error("dam_break", {"time.max_steps=1000"});
   CHECK(cfl.find("--set time.max_steps=1000: time.max_steps: 1000 steps cannot reach time.t_end = 1 s: the CFL step is at most ") == 0);
   const std::string cp = load_error("couette", {"output.checkpoint_every=1e-9"});

@@ -124,8 +124,8 @@ TEST_CASE("health limits: free surfaces bound compression only; ideal gases have
     const auto y0 = sys->initial_state();
     const HealthLimits lim = health_limits<2>(c, cs->velocity_scale(c), cs->free_surface(), *sys, y0.data());
     CHECK(std::isinf(lim.max_expansion));
-    CHECK(lim.max_compression == Approx(std::max(0.2, 10 * 2 * 9.81 * 0.9 / (29.7 * 29.7))));
-    CHECK(lim.max_speed == 29.7);  // 10 sqrt(2 g H) = 42 m/s is above c
+    CHECK(lim.max_compression == Approx(std::max(0.2, 10 * 2 * 9.81 * 0.9 / (59.4 * 59.4))));
+    CHECK(lim.max_speed == Approx(10 * std::sqrt(2 * 9.81 * 0.9)));  // 10 sqrt(2 g H) = 42 m/s, below c = 59.4 m/s
     CHECK(lim.g[1] == -9.81);
   }
   {
