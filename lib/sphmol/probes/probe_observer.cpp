@@ -344,8 +344,10 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
     }
     xp[d] = x[d].data();
   }
+  // Fluid taken out of the run (run/outflow.hpp) has no volume, as in the serial sample: its owner
+  // still lists it.
   for (std::size_t k = 0; k < n; ++k)
-    volume[k] = P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
+    volume[k] = local.is_retired(piece.fluid_rows[k]) ? 0.0 : P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
   // The sampler's bins in the cells of the whole fluid's box, as the serial sampler bins the whole
   // fluid: its neighbours are visited in the serial order, by (cell, global id).
   const bool sampled = std::any_of(which.begin(), which.end(), [&](std::size_t k) { return series_[k].cfg.type != "force"; });
@@ -405,6 +407,7 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
         return e;
       };
       for (std::size_t k = 0; k < n; ++k) {
+        if (local.is_retired(piece.fluid_rows[k])) continue;  // taken out: pairs with no wall, as serially
         const auto i = static_cast<std::size_t>(piece.fluid_ids[k]);
         geometry::Vec<D> xi;
         WallPairEnd<D> a = end(piece.fluid_rows[k]);
