@@ -3,7 +3,7 @@
 // moving at 3 m/s towards the open face of the scene's box at x = 0.32; the solver's domain ends one
 // wall layer further, at x = 0.34, which the particle crosses within about 0.01 s (h = 2 dx: the
 // kernel support 0.08 reaches past it from the block's right column at x = 0.29). No body force
-// unless `set` gives one.
+// unless `set` gives one; `more`: top-level YAML added to the file (probes).
 #include <string>
 #include <vector>
 
@@ -11,8 +11,8 @@
 
 namespace sphmol::testing {
 
-inline Config shot_scene(const std::vector<std::string>& set = {}) {
-  const std::string yaml = R"yaml(case: scene
+inline Config shot_scene(const std::vector<std::string>& set = {}, const std::string& more = "") {
+  std::string yaml = R"yaml(case: scene
 dimension: 2
 fluid:
   density: 1000.0
@@ -30,6 +30,7 @@ discretization: {spacing: 0.02, smoothing_ratio: 2.0, wall_layers: 1, density: c
 time: {t_end: 0.1, integrator: leapfrog}
 output: {times: [0.05, 0.1], plots: false, profiles: false}
 )yaml";
+  yaml += more;
   return load_config_string(yaml, set);
 }
 

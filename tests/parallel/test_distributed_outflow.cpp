@@ -3,17 +3,23 @@
 // steps, the same final state to the bit (the frozen particle with zero velocity where it left), the
 // same summary "outflow" object and warning, for every integrator that runs over ranks, partitioned
 // once or again at every re-plan (the retired particles migrating with their kind); the limit
-// health.max_outflow_fraction ends the run as blown up as serially.
+// health.max_outflow_fraction ends the run as blown up as serially; probes over the ranks leave
+// the fluid taken out out of their sums as the serial probes do.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "run_into.hpp"
 #include "serial_reference.hpp"
 #include "shot_scene.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/mpi_run.hpp"
+#include "support/files.hpp"
 
 using namespace sphmol;
 using namespace sphmol::parallel;
@@ -106,4 +112,39 @@ TEST_CASE("distributed outflow: the dam break past its first exits equals the se
   const Config c = load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=1.5",
                                                                 "output.times=[0.75, 1.5]", "output.plots=false"});
   check_outflow_as_serial(c, 1, 1.2, 1);
+}
+
+TEST_CASE("distributed outflow: probes over ranks see no fluid taken out, as the serial probes", "[parallel][outflow][probes_reduced]") {
+  // Points beside the open face, within the kernel support (0.08) both of the shot particle where it
+  // stays after leaving (x just past 0.34, y = 0.19) and of the block's right column (x = 0.29):
+  // serially the particle taken out has no volume and weighs nothing in the samples, which the
+  // ranks' pieces, that own it as well, must match. At the output times and every 0.005 s.
+  const Config c = sphmol::testing::shot_scene({"time.t_end=0.03", "output.times=[0.015, 0.03]"}, R"(
+probes:
+  - {name: outlet, type: point, at: [0.33, 0.19], fields: [p, rho, velocity]}
+  - {name: outlet_often, type: point, at: [0.33, 0.19], fields: [p, rho, velocity], every: 0.005}
+  - {name: across, type: line, from: [0.3, 0.12], to: [0.36, 0.24], points: 5, fields: [p]}
+)");
+  const Communicator comm;
+  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
+  const long pid = comm.all_gather(static_cast<long>(::getpid()))[0];
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("sphmol-outflow-probes-" + std::to_string(pid) + "-" + std::to_string(comm.size()));
+  const nlohmann::json split = run_into(c, &partitioner, dir / "split");
+  REQUIRE(split["status"] == "completed");
+  comm.barrier();
+  if (comm.rank() == 0) {
+    INFO(comm.size() << " ranks");
+    const nlohmann::json serial = run_into(c, nullptr, dir / "serial");
+    REQUIRE(serial["status"] == "completed");
+    REQUIRE(serial["outflow"]["particles"] == 1);
+    for (const char* f : {"probe_outlet.csv", "probe_outlet_often.csv", "probe_across.csv"}) {
+      INFO(f);
+      const std::string want = test_support::slurp(dir / "serial" / f);
+      CHECK(want.size() > 100);
+      CHECK(test_support::slurp(dir / "split" / f) == want);
+    }
+  }
+  comm.barrier();
+  if (comm.rank() == 0) std::filesystem::remove_all(dir);
 }

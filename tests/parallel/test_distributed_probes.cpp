@@ -6,7 +6,8 @@
 // periodic channel's line across its period, and after a restart from a checkpoint written over
 // the ranks), and a probe sample gathers neither the
 // whole state nor the whole fields: the summary's counts of those gathers do not grow with the
-// number of samples. The values themselves (the files print 12 digits) are the serial sample's to
+// number of samples. The probes without `every` sample the output times (and t = 0) the same way
+// (at_output_time_pieces), so the output times gather nothing for them either. The values themselves (the files print 12 digits) are the serial sample's to
 // the bit, at a state the leapfrog has moved. Rank 0 runs the serial references.
 #include <unistd.h>
 
@@ -144,7 +145,7 @@ probes:
 TEST_CASE("distributed probes: a probe sample gathers neither the whole state nor the whole fields",
           "[parallel][run][probes_reduced]") {
   // The same run with 2 and with 10 samples per output interval: the gathers of the whole state and
-  // of the whole fields stay those of the output times, checkpoints and the end.
+  // of the whole fields stay those of checkpoints and the end.
   const Communicator comm;
   const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
   const fs::path dir = scratch(comm, "gathers");
@@ -156,9 +157,10 @@ TEST_CASE("distributed probes: a probe sample gathers neither the whole state no
   const auto& b = many["parallel"];
   CHECK(b["whole_state_gathers"] == a["whole_state_gathers"]);
   CHECK(b["whole_field_gathers"] == a["whole_field_gathers"]);
-  // Outputs at t = 0, 0.01 and 0.02 (with the case's measurement) and the end.
-  CHECK(a["whole_field_gathers"].get<long>() == 3);
-  CHECK(a["whole_state_gathers"].get<long>() == 3);
+  // The probes without `every` (a line, a force) sample the output times and t = 0 from the pieces
+  // too: the end alone gathers the whole state, and nothing the whole fields.
+  CHECK(a["whole_field_gathers"].get<long>() == 0);
+  CHECK(a["whole_state_gathers"].get<long>() == 1);
   // One piece per sampling time: 0, 0.001, ..., 0.02.
   CHECK(b["owned_pieces"].get<long>() == 21);
   CHECK(a["owned_pieces"].get<long>() == 5);
@@ -220,9 +222,13 @@ TEST_CASE("distributed probes: the sampled values are the serial sample's to the
   const double t = advance(part->system(), part->state().data());
   REQUIRE(t == t_sample);
   ProbeObserver<2> split(c, *whole);
-  Values got;
+  Values got, got_outputs;
   split.on_sample = recorder(got);
-  split.at_time_pieces(*whole, part->owned_piece(t), t, none);
+  const OwnedPiece<2> piece = part->owned_piece(t);
+  split.at_time_pieces(*whole, piece, t, none);
+  // The probes without `every`, as at an output time.
+  split.on_sample = recorder(got_outputs);
+  split.at_output_time_pieces(*whole, piece, t, none);
 
   if (comm.rank() == 0) {
     auto serial_case = make_case<2>(c);
@@ -231,23 +237,30 @@ TEST_CASE("distributed probes: the sampled values are the serial sample's to the
     REQUIRE(advance(*sys, y.data()) == t);
     sys->refresh_fields(t, y.data(), scratch);
     ProbeObserver<2> serial(c, *sys);
-    Values want;
+    Values want, want_outputs;
     serial.on_sample = recorder(want);
     serial.at_time(*sys, y.data(), t, none);
-    REQUIRE(want.size() == 7);  // the `every` probes
-    CHECK(got.size() == want.size());
-    std::size_t finite = 0;
-    for (const auto& [name, w] : want) {
-      INFO(name << ", " << comm.size() << " ranks");
-      const std::vector<double>& g = got[name];
-      REQUIRE(g.size() == w.size());
-      for (std::size_t k = 0; k < w.size(); ++k) {
-        INFO("value " << k << ": " << g[k] << " against " << w[k]);
-        CHECK(std::memcmp(&g[k], &w[k], sizeof(double)) == 0);
-        if (std::isfinite(w[k]) && w[k] != 0.0) ++finite;
+    serial.on_sample = recorder(want_outputs);
+    serial.at_output(*sys, y.data(), t, none);
+    REQUIRE(want.size() == 7);          // the `every` probes
+    REQUIRE(want_outputs.size() == 2);  // the others: a line, a force
+    const auto compare_bits = [&](const Values& wanted, Values& gotten) {
+      CHECK(gotten.size() == wanted.size());
+      std::size_t finite = 0;
+      for (const auto& [name, w] : wanted) {
+        INFO(name << ", " << comm.size() << " ranks");
+        const std::vector<double>& g = gotten[name];
+        REQUIRE(g.size() == w.size());
+        for (std::size_t k = 0; k < w.size(); ++k) {
+          INFO("value " << k << ": " << g[k] << " against " << w[k]);
+          CHECK(std::memcmp(&g[k], &w[k], sizeof(double)) == 0);
+          if (std::isfinite(w[k]) && w[k] != 0.0) ++finite;
+        }
       }
-    }
-    CHECK(finite > 20);  // of 30; non-trivial sums: pressures, densities, speeds, heights, forces
+      return finite;
+    };
+    CHECK(compare_bits(want, got) > 20);  // of 30; non-trivial sums: pressures, densities, speeds, heights, forces
+    CHECK(compare_bits(want_outputs, got_outputs) > 5);  // of 9: the line's 7 pressures, the force's 2 components
   }
   comm.barrier();
 }

@@ -2,9 +2,9 @@
 // (Case::measure_pieces, run/piece_reduction.hpp): exact sums over the ranks, so the summary's
 // errors and conservation log are the serial run's to the bit on any rank count, and an output time
 // gathers neither the whole state nor the whole fields when the case measures from pieces and every
-// observer writes pieces (VTK) or samples its own times from them (probes with `every`); only the
-// end still gathers the whole state (for the final observers and the final state). Rank 0 runs the
-// serial references.
+// observer writes pieces (VTK) or samples from them (probes, at their own times and at the output
+// times); only the end still gathers the whole state (for the final observers and the final state).
+// Rank 0 runs the serial references.
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -167,13 +167,16 @@ probes:
   check_files_equal_serial(load_config(verification("dam_break.yaml"), {"discretization.spacing=0.04", "time.t_end=0.06",
                                                                        "output.times=[0.03,0.06]", "output.plots=false"}),
                            dir / "dam_break", 1);
-  // A probe without `every` samples the whole state at the output times: those gather again.
-  yaml += "  - {name: outputs, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity]}\n";
-  const Config gathering = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",
-                                                     "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"});
-  // The measurements and the conservation sums still reduce over the pieces, as the serial run's.
-  const nlohmann::json again = check_measurements_equal_serial(gathering);
-  CHECK(again["parallel"]["whole_state_gathers"].get<long>() == 3);
+  // Probes without `every` sample the output times (and t = 0) from the pieces too, their files the
+  // serial run's, and still no output time gathers (the scenes' force probes: test_distributed_probes).
+  yaml += R"(  - {name: outputs, type: point, at: [2.0e-4, 5.0e-4], fields: [velocity, p]}
+  - {name: across, type: line, from: [2.0e-4, 0.0], to: [2.0e-4, 1.0e-3], points: 7, fields: [rho, velocity]}
+)";
+  const Config at_outputs = load_config_string(yaml, {"discretization.particles_across=20", "time.integrator=leapfrog",
+                                                      "time.t_end=0.02", "output.times=[0.01,0.02]", "output.plots=false"});
+  const nlohmann::json again = check_files_equal_serial(at_outputs, dir / "couette-outputs", 5);  // 2 profiles, 3 probes
+  CHECK(again["parallel"]["whole_state_gathers"].get<long>() == 1);
+  CHECK(again["parallel"]["whole_field_gathers"].get<long>() == 0);
   comm.barrier();
   if (comm.rank() == 0) fs::remove_all(dir);
 }

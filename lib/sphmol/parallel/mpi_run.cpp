@@ -240,12 +240,11 @@ class MpiRun final : public PartitionedRun<D> {
             {"whole_state_gathers", whole_state_gathers_},
             {"whole_field_gathers", whole_field_gathers_},
             {"owned_pieces", owned_pieces_},
-            {"output", "each rank writes its own particles' VTK pieces; probes sample at their own times from each "
-                       "rank's own particles, rank 0 adding the ranks' terms in the serial order; the case measures from "
-                       "each rank's own particles, its sums and the conservation sums reduced exactly over the ranks; "
-                       "checkpoints, the end and output times with probes without `every` gather the whole state "
-                       "(and, at output times, the fields of the ranks' own particles) on rank 0, which writes every "
-                       "other file"}};
+            {"output", "each rank writes its own particles' VTK pieces; probes sample at their own times and at the "
+                       "output times from each rank's own particles, rank 0 adding the ranks' terms in the serial order; "
+                       "the case measures from each rank's own particles, its sums and the conservation sums reduced "
+                       "exactly over the ranks; checkpoints and the end gather the whole state on rank 0, which writes "
+                       "every other file"}};
   }
 
  private:

@@ -300,6 +300,28 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
   // Every rank passes the sampling times alike; the same series are due on every rank.
   const std::vector<std::size_t> which = due(t);
   if (which.empty()) return;
+  sample_pieces(which, whole, piece, t);
+  if (now_seconds() - last_flush_ >= kFlushSeconds) flush(out);
+}
+
+template <int D>
+void ProbeObserver<D>::at_output_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {
+  sample_pieces(at_outputs(), whole, piece, t);
+  flush(out);  // as at_output: the files are complete at every output time (rank 0 alone writes)
+}
+
+template <int D>
+std::vector<std::size_t> ProbeObserver<D>::at_outputs() const {
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    if (!series_[k].cfg.every) which.push_back(k);
+  return which;
+}
+
+template <int D>
+void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, const SphSystem<D>& whole, const OwnedPiece<D>& piece,
+                                     double t) {
+  if (which.empty()) return;
   const auto& P = whole.particles();  // the scene's particles by global id (masses, walls' motion)
   const SphSystem<D>& local = *piece.system;
   const auto& LL = local.layout();
@@ -322,8 +344,10 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
     }
     xp[d] = x[d].data();
   }
+  // Fluid taken out of the run (run/outflow.hpp) has no volume, as in the serial sample: its owner
+  // still lists it.
   for (std::size_t k = 0; k < n; ++k)
-    volume[k] = P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
+    volume[k] = local.is_retired(piece.fluid_rows[k]) ? 0.0 : P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
   // The sampler's bins in the cells of the whole fluid's box, as the serial sampler bins the whole
   // fluid: its neighbours are visited in the serial order, by (cell, global id).
   const bool sampled = std::any_of(which.begin(), which.end(), [&](std::size_t k) { return series_[k].cfg.type != "force"; });
@@ -383,6 +407,7 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
         return e;
       };
       for (std::size_t k = 0; k < n; ++k) {
+        if (local.is_retired(piece.fluid_rows[k])) continue;  // taken out: pairs with no wall, as serially
         const auto i = static_cast<std::size_t>(piece.fluid_ids[k]);
         geometry::Vec<D> xi;
         WallPairEnd<D> a = end(piece.fluid_rows[k]);
@@ -463,7 +488,6 @@ void ProbeObserver<D>::at_time_pieces(const SphSystem<D>& whole, const OwnedPiec
     }
     append_rows(s, t, values);
   }
-  if (now_seconds() - last_flush_ >= kFlushSeconds) flush(out);
 }
 
 template <int D>
@@ -479,10 +503,7 @@ void ProbeObserver<D>::flush(const OutputSink& out) {
 
 template <int D>
 void ProbeObserver<D>::at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {
-  std::vector<std::size_t> which;
-  for (std::size_t k = 0; k < series_.size(); ++k)
-    if (!series_[k].cfg.every) which.push_back(k);
-  sample(which, sys, y, t);
+  sample(at_outputs(), sys, y, t);
   flush(out);
 }
 

@@ -5,8 +5,9 @@
 // fluid particle is within the kernel support), height gauges the free-surface height
 // (height_gauge.hpp), force probes the force of the fluid on a wall body (wall_force.hpp). A probe
 // samples at the output times (and t = 0), or every `every` seconds from t = 0, when the run loop
-// stops for it (next_time / at_time). The files go through OutputSink::write (atomic, in the run's
-// ledger); the rows so far are the observer's checkpoint state, so a restart continues each series.
+// stops for it (next_time / at_time); over ranks both from the ranks' own particles (below). The
+// files go through OutputSink::write (atomic, in the run's ledger); the rows so far are the
+// observer's checkpoint state, so a restart continues each series.
 #include <functional>
 #include <limits>
 #include <string>
@@ -36,13 +37,16 @@ class ProbeObserver final : public OutputObserver<D> {
   double next_time() const override;
   void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   void pass_time(double t) override { due(t); }
-  // Over ranks, at the `every` probes' times: each rank's terms of the serial sums (the kernel
-  // weights and values of its own fluid near each sample point, the force pairs of its own fluid
-  // with the body's walls) go to rank 0, which adds them in the serial order (by cell and global
-  // id, as the serial bins visit them; by fluid particle, then wall), so the files are the serial
-  // run's to the bit, without gathering the whole state.
+  // Over ranks, at the `every` probes' times (at_time_pieces) and, for the probes without `every`,
+  // at the output times and t = 0 (at_output_time_pieces): each rank's terms of the serial sums
+  // (the kernel weights and values of its own fluid near each sample point, the force pairs of its
+  // own fluid with the body's walls) go to rank 0, which adds them in the serial order (by cell and
+  // global id, as the serial bins visit them; by fluid particle, then wall), so the files are the
+  // serial run's to the bit, without gathering the whole state.
   bool samples_pieces() const override { return true; }
   void at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
+  bool samples_output_pieces() const override { return true; }
+  void at_output_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) override;
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state, const OutputSink& out) override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
@@ -69,6 +73,9 @@ class ProbeObserver final : public OutputObserver<D> {
   // The `every` series with a sample time at t (within round-off), moved past it.
   std::vector<std::size_t> due(double t);
   void sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t);
+  // The same series from the ranks' pieces (collective: every rank passes the same `which`).
+  void sample_pieces(const std::vector<std::size_t>& which, const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t);
+  std::vector<std::size_t> at_outputs() const;  // the series without `every`
   // The sampled values of one row group (point, line, plane: columns() per point; height gauge: 1;
   // force: D) as the series' rows at t.
   void append_rows(Series& s, double t, const std::vector<double>& values);

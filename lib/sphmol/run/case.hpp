@@ -99,8 +99,8 @@ class OutputObserver {
   virtual ~OutputObserver() = default;
   virtual void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) = 0;
   // Whether at_output reads the state (over several ranks the whole state is then gathered on rank 0
-  // at output times for it, unless it writes pieces); false for an observer that only samples at
-  // its own times from pieces (probes that all have `every`).
+  // at output times for it, unless it writes pieces or samples the output times from pieces); false
+  // for an observer that only samples at its own times (probes that all have `every`).
   virtual bool samples_outputs() const { return true; }
   virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
   // Over several ranks: an observer that writes per-rank files (VTK pieces) is called on every rank
@@ -118,6 +118,12 @@ class OutputObserver {
   // system: no whole state is gathered for it. `out` is the run's sink (enabled on rank 0 only).
   virtual bool samples_pieces() const { return false; }
   virtual void at_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {}
+  // Over several ranks an observer that samples_outputs() and samples_output_pieces() is called at
+  // output times (and t = 0) on every rank with the rank's own particles at (t, the state), instead
+  // of at_output on rank 0 with the whole system (probes without `every`): no whole state is
+  // gathered for it. `out` is the run's sink (enabled on rank 0 only).
+  virtual bool samples_output_pieces() const { return false; }
+  virtual void at_output_time_pieces(const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t, const OutputSink& out) {}
   // Over several ranks, on the ranks other than 0 (which alone calls at_time): the sampling times
   // up to t pass as at_time passes them, without a sample, so that next_time() and with it the
   // times the run stops at stay the same on every rank.

@@ -4,9 +4,10 @@
 // system holds its owned particles and halo copies of its neighbours' and has just been evaluated
 // at the output state, so the owned rows' fields (density, pressure, ...) are the whole system's;
 // only the owned rows are listed, so every particle is written by exactly one rank. The probes
-// sample at their own times from the pieces too (probes/probe_observer.hpp), and the case's
-// measurements and the conservation sums reduce over them (run/piece_reduction.hpp). A serial run
-// measures through one piece, the whole system (run/whole_piece.hpp).
+// sample from the pieces too, at their own times and at the output times
+// (probes/probe_observer.hpp), and the case's measurements and the conservation sums reduce over
+// them (run/piece_reduction.hpp). A serial run measures through one piece, the whole system
+// (run/whole_piece.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <functional>

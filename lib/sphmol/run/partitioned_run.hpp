@@ -7,10 +7,10 @@
 // state. At output times the case measures from each rank's own particles (owned_piece()), its sums
 // and the conservation sums reduced exactly over the ranks (run/piece_reduction.hpp); observers that
 // write per-rank files (VTK pieces) get those particles too, as do the probes at their own sampling
-// times, which combine the ranks' terms on the root. Only an observer that reads the whole system at
-// output times (probes without `every`) has the whole state gathered there with the fields of each
-// rank's own particles (whole_fields()), on the root, which writes the files and the summary as a
-// serial run does, without evaluating the whole system.
+// times and at the output times, which combine the ranks' terms on the root. Only an observer that
+// reads the whole system at output times (none ships) would have the whole state gathered there
+// with the fields of each rank's own particles (whole_fields()), on the root, which writes the
+// files and the summary as a serial run does, without evaluating the whole system.
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>

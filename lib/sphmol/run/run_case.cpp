@@ -266,11 +266,21 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     for (auto& o : observers)
       if (o->writes_pieces()) o->at_output_pieces(*sys, own_piece(), t, own);
   };
-  // Over ranks those observers write their pieces instead.
-  const auto on_root = [&](const std::unique_ptr<OutputObserver<D>>& o) { return !part || !o->writes_pieces(); };
+  // Over ranks those observers write their pieces, or sample from the pieces, instead.
+  const auto on_root = [&](const std::unique_ptr<OutputObserver<D>>& o) {
+    return !part || !(o->writes_pieces() || o->samples_output_pieces());
+  };
+  // Observers that sample the output times from pieces (probes without `every`): over ranks every
+  // rank sends rank 0 its own particles' part of the samples (collective, the same on every rank).
+  const auto sample_output_pieces = [&] {
+    if (!part) return;
+    for (auto& o : observers)
+      if (o->samples_output_pieces() && o->samples_outputs()) o->at_output_time_pieces(*sys, own_piece(), t, out);
+  };
   // Over ranks the whole state is gathered on rank 0 at an output time only for a case that
-  // measures the whole system or an observer that reads it there; a case that measures from pieces
-  // and the conservation sums reduce over the ranks' own particles (run/piece_reduction.hpp).
+  // measures the whole system or an observer that reads it there; a case that measures from pieces,
+  // the conservation sums and the observers that sample from pieces reduce over the ranks' own
+  // particles (run/piece_reduction.hpp, probes/probe_observer.hpp).
   const bool observers_read_whole =
       std::any_of(observers.begin(), observers.end(), [&](const auto& o) { return on_root(o) && o->samples_outputs(); });
   const bool output_gathers = !part || !c.measures_pieces() || observers_read_whole;
@@ -283,6 +293,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       for (auto& o : observers)
         if (on_root(o)) o->at_output(*sys, y.data(), t, out);
     }
+    sample_output_pieces();
     write_pieces();
     observe_own_times();
   }
@@ -327,6 +338,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       else if (root)
         m = c.measure(*sys, y.data(), t, out);
       if (part) conservation.record(own_piece(), t);  // collective
+      sample_output_pieces();
       if (root) {
         if (output_gathers)
           for (auto& o : observers)
