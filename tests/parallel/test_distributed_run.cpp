@@ -42,6 +42,13 @@ TEST_CASE("distributed run: the dam break equals the serial run bit for bit, thr
     CHECK(split.summary["parallel"]["halo_plans"].get<long>() > 3);
     CHECK(split.summary["parallel"]["halo_depth_list_radii"] == 1);
     CHECK(split.summary["parallel"]["terms_not_run"] == nlohmann::json::array());
+    // Only rank 0 holds the whole scene's particles after the set-up; the others dropped theirs
+    // before their first evaluation (SphSystem::release_particles).
+    const auto held = split.summary["parallel"]["whole_scene_particles_held"].get<std::vector<std::uint64_t>>();
+    const std::uint64_t n = split.summary["particles"]["fluid"].get<std::uint64_t>() + split.summary["particles"]["wall"].get<std::uint64_t>();
+    REQUIRE(held.size() == static_cast<std::size_t>(Communicator().size()));
+    CHECK(held[0] == n);
+    for (std::size_t r = 1; r < held.size(); ++r) CHECK(held[r] == 0);
   }
   SECTION("partitioned again at every re-plan, the particles migrating with the leapfrog's state") {
     const Finished split = check_same_as_serial(c, 1.0);

@@ -88,6 +88,10 @@ std::vector<std::byte> Communicator::all_gather_v_bytes(const void* v, std::size
   return out;
 }
 
+void Communicator::broadcast_bytes(void* v, std::size_t bytes, int root) const {
+  MPI_Bcast(v, mpi_count(bytes, "broadcast"), MPI_BYTE, root, comm_);
+}
+
 std::vector<std::byte> Communicator::gather_v_bytes(const void* v, std::size_t bytes, int root) const {
   const int n = mpi_count(bytes, "gather_v");
   std::vector<int> counts(static_cast<std::size_t>(size_)), displ(static_cast<std::size_t>(size_));

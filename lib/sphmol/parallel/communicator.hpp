@@ -61,6 +61,16 @@ class Communicator {
     return out;
   }
 
+  // Rank `root`'s value, on every rank (what one rank alone can compute, such as a sum over the
+  // whole scene that only the root still holds).
+  template <class T>
+  void broadcast(T& v, int root = 0) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    broadcast_bytes(&v, sizeof(T), root);
+  }
+
+  void broadcast_bytes(void* v, std::size_t bytes, int root = 0) const;
+
   // Personalised all-to-all of bytes: send[r] goes to rank r; returns what every rank sent here,
   // concatenated in rank order, with from[r] the number of bytes that came from rank r.
   std::vector<std::byte> all_to_all_v(const std::vector<std::vector<std::byte>>& send, std::vector<std::size_t>& from) const;

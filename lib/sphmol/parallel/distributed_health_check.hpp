@@ -41,17 +41,23 @@ namespace sphmol::parallel {
 template <int D>
 class DistributedHealthCheck {
  public:
-  // `whole`, `y0`: the whole scene and the state at t0 (the same on every rank), for the body
-  // force's power at t0; `y_local`: this rank's part of y0.
-  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, const SphSystem<D>& whole,
-                         const std::vector<double>& y0, const std::vector<double>& y_local, double t0, HealthLimits limits)
+  // `start`: start_sums() of the whole scene at t0 (the same on every rank), for the body force's
+  // power at t0; `y_local`: this rank's part of y0.
+  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, const PhysicalSums<D>& start,
+                         const std::vector<double>& y_local, double t0, HealthLimits limits)
       : comm_(comm), sys_(sys), last_good_(y_local), last_good_t_(t0), bounds_(std::move(limits), t0) {
+    bounds_.start(start);
+  }
+  // The physical bounds' sums of the whole scene `whole` at (t0, y0), as the serial check starts
+  // from them: computed where the whole scene is (rank 0) and sent to the other ranks.
+  static PhysicalSums<D> start_sums(const SphSystem<D>& whole, const std::vector<double>& y0, double t0, const HealthLimits& limits) {
+    const PhysicalBounds<D> bounds(limits, t0);
     PhysicalInputs<D> in;
-    in.V = bounds_.frame_velocity(t0);
+    in.V = bounds.frame_velocity(t0);
     in.mass = whole.particles().mass.data();
     // A restart's particles out at its start (taken out of `whole` before the partition) are massless.
     if (!whole.retired().empty()) in.kind = whole.particles().kind.data();
-    bounds_.start(bounds_.sums(whole.layout(), y0.data(), in, static_cast<long>(whole.layout().n)));
+    return bounds.sums(whole.layout(), y0.data(), in, static_cast<long>(whole.layout().n));
   }
 
   // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.
@@ -88,6 +94,7 @@ class DistributedHealthCheck {
       any_exit = any_exit || v.exits > 0;
     }
     leavers_.clear();
+    leaver_masses_.clear();
     // Decided alike on every rank (from the verdicts): the one collective more, in a step with exits.
     if (any_exit) gather_leavers(y, mine.exits);
     return largest;
@@ -97,6 +104,8 @@ class DistributedHealthCheck {
   // rank; the same on every rank), and the global ids of all of them, ascending, on every rank.
   bool exits() const { return !leavers_.empty(); }
   const std::vector<std::size_t>& leavers() const { return leavers_; }
+  // Their masses, in the same order (from their owners: no rank needs the whole scene's masses).
+  const std::vector<double>& leaver_masses() const { return leaver_masses_; }
 
   double last_good_time() const { return last_good_t_; }
   // This rank's part of the last state that passed (its layout that of the state when it passed).
@@ -195,11 +204,21 @@ class DistributedHealthCheck {
 
   // Collective: every rank's leavers by global id into leavers_, ascending, on every rank.
   void gather_leavers(const double* y, int mine) {
-    std::vector<std::size_t> ids;
+    struct Leaver {
+      std::uint64_t id;
+      double mass;
+    };
+    std::vector<Leaver> own;
     if (mine > 0)
-      for (const std::size_t o : leaving(y)) ids.push_back(static_cast<std::size_t>(sys_.gid()[o]));
-    leavers_ = comm_.all_gather_v(ids);
-    std::sort(leavers_.begin(), leavers_.end());
+      for (const std::size_t o : leaving(y)) own.push_back({sys_.gid()[o], sys_.owned().mass[o]});
+    std::vector<Leaver> all = comm_.all_gather_v(own);
+    std::sort(all.begin(), all.end(), [](const Leaver& a, const Leaver& b) { return a.id < b.id; });
+    leavers_.resize(all.size());
+    leaver_masses_.resize(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      leavers_[k] = static_cast<std::size_t>(all[k].id);
+      leaver_masses_[k] = all[k].mass;
+    }
   }
 
   // This rank's part of the physical bounds, after its state has passed the numerical tests.
@@ -316,6 +335,7 @@ class DistributedHealthCheck {
   PhysicalBounds<D> bounds_;
   std::vector<double> rho_;  // the owned fluid's densities of the latest evaluation, in state order
   std::vector<std::size_t> leavers_;  // the latest step's, by global id (every rank's, ascending)
+  std::vector<double> leaver_masses_;
 };
 
 }  // namespace sphmol::parallel

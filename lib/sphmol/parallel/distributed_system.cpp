@@ -61,16 +61,7 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   const Particles<D>& P = whole.particles();
   const std::size_t n = P.size();
   n_fluid_global_ = P.n_fluid;
-  // Walls keep the energy the scene gave them (the state holds the fluid's only): every rank keeps
-  // the walls' values, by global id, for the walls of its local systems.
-  if (whole_layout_.has_energy) {
-    const std::vector<double>& e = whole.energy();
-    wall_energy_.assign(e.begin() + static_cast<long>(P.n_fluid), e.begin() + static_cast<long>(n));
-  }
-  // Variable h: every particle's h(0) (the walls keep it; with h from the density it is the fluid's
-  // reference), by global id, before any evaluation.
   variable_h_ = config.discretization.smoothing_length != "constant";
-  if (variable_h_) h0_ = whole.smoothing_lengths();
   support_ = kernel_info<D>(config.discretization.kernel).support;
   // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
   // the terms' length scales (particle shifting's W(dx)) are then the whole system's to the bit.
@@ -94,6 +85,19 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   const std::size_t slice_fluid = std::clamp(P.n_fluid, lo, hi) - lo;
   owned_ = select_particles(P, slice, slice_fluid);
   gid_.assign(slice.begin(), slice.end());
+  // Walls keep the energy the scene gave them (the state holds the fluid's only), and with a variable
+  // h every particle keeps its h(0) (the walls' h; with h from the density the fluid's reference):
+  // per owned particle, moving with it (extras()), and sent with the halo (plan()).
+  if (whole_layout_.has_energy) {
+    const std::vector<double>& e = whole.energy();
+    e_own_.resize(slice.size());
+    for (std::size_t k = 0; k < slice.size(); ++k) e_own_[k] = e[slice[k]];
+  }
+  if (variable_h_) {
+    const std::vector<double>& h0 = whole.smoothing_lengths();
+    h0_own_.resize(slice.size());
+    for (std::size_t k = 0; k < slice.size(); ++k) h0_own_[k] = h0[slice[k]];
+  }
   {
     std::array<std::vector<double>, D> xw;
     std::array<const double*, D> xs;
@@ -105,7 +109,7 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     }
     std::vector<double> count(hi - lo, 1.0);
     const RcbResult<D> cut = rcb_->partition(xs, count.data(), gid_.data(), gid_.size());
-    migrate(comm, owned_, gid_, cut.destination, {});
+    migrate(comm, owned_, gid_, cut.destination, extras({}));
   }
   set_layout();
   balance_by_pairs(t0, local_part(y0));
@@ -145,7 +149,7 @@ void DistributedSystem<D>::balance_by_pairs(double t0, const std::vector<double>
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
-  migrate(comm_, owned_, gid_, cut.destination, {&weight_});
+  migrate(comm_, owned_, gid_, cut.destination, extras({&weight_}));
   set_layout();
   local_.reset();
   halo_.reset();
@@ -158,6 +162,13 @@ void DistributedSystem<D>::balance_by_pairs(double t0, const std::vector<double>
 
 template <int D>
 DistributedSystem<D>::~DistributedSystem() = default;
+
+template <int D>
+std::vector<std::vector<double>*> DistributedSystem<D>::extras(std::vector<std::vector<double>*> arrays) {
+  if (whole_layout_.has_energy) arrays.push_back(&e_own_);
+  if (variable_h_) arrays.push_back(&h0_own_);
+  return arrays;
+}
 
 template <int D>
 void DistributedSystem<D>::set_layout() {
@@ -237,7 +248,7 @@ void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const s
   for (auto& c : columns) extra.push_back(&c);
   extra.push_back(&weight_);
   const bool walls = whole_layout_.n_wall_density > 0;
-  migrate(comm_, owned_, gid_, cut.destination, extra);
+  migrate(comm_, owned_, gid_, cut.destination, extras(extra));
   set_layout();
   // Back from columns, in the order they were made.
   std::size_t at = 0;
@@ -273,7 +284,7 @@ double DistributedSystem<D>::largest_h(const double* y) {
   const StateLayout<D>& L = layout_;
   double hmax = 0.0, hmax_fluid = 0.0;
   for (std::size_t o = 0; o < owned_.size(); ++o) {
-    double h = h0_[gid_[o]];
+    double h = h0_own_[o];
     if (o < nfo_ && L.has_smoothing_length) h = y[L.smoothing_length() + o];
     else if (o < nfo_) h *= std::pow(owned_.rho[o] / y[L.density() + o], 1.0 / D);
     hmax = std::max(hmax, h);
@@ -380,21 +391,24 @@ void DistributedSystem<D>::plan() {
     stats_.search_seconds += local_->search_seconds();
     stats_.rebuilds += local_->pair_list().rebuilds();
   }
+  // Per local row: a value of the owned particles or of the halo's copies (exchanged with them).
+  const auto local_values = [&](const std::vector<double>& own) {
+    const std::vector<double> halo_values = halo_->exchange(comm_, own);
+    std::vector<double> v(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) v[k] = order[k] < no ? own[order[k]] : halo_values[order[k] - no];
+    return v;
+  };
   std::vector<double> energy;
   if (whole_layout_.has_energy) {
     // The fluid's e comes from the state at every evaluation; the walls keep theirs.
-    energy.assign(order.size(), 0.0);
-    for (std::size_t k = nf_local_; k < order.size(); ++k) energy[k] = wall_energy_[gid_of(order[k]) - n_fluid_global_];
+    energy = local_values(e_own_);
+    std::fill(energy.begin(), energy.begin() + static_cast<long>(nf_local_), 0.0);
   }
   local_ = assemble_system<D>(config_, select_particles(all, order, nf_local_), domain_, spacing_,
                               ghost_walls_ ? &*ghost_walls_ : nullptr, std::move(energy), ghost_planes_);
   // Fluid taken out of the run arrives as Kind::Out (the owners' kind), which the new local system
   // starts with retired (SphSystem's constructor): no pair, zero rates.
-  if (variable_h_) {
-    std::vector<double> h0(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) h0[k] = h0_[gid_of(order[k])];
-    local_->set_initial_smoothing_lengths(h0);
-  }
+  if (variable_h_) local_->set_initial_smoothing_lengths(local_values(h0_own_));
   if (!monitors_.empty()) {
     // The monitors watch the owned fluid rows, by global id (the halo's are their owners' to watch).
     WatchedRows rows;
@@ -616,8 +630,10 @@ std::vector<double> DistributedSystem<D>::whole_fluid_density() const {
   };
   std::vector<Row> mine(nfo_);
   for (std::size_t o = 0; o < nfo_; ++o) mine[o] = {gid_[o], owned_density(o)};
+  const std::vector<Row> rows = comm_.gather_v(mine, 0);
+  if (comm_.rank() != 0) return {};
   std::vector<double> rho(whole_layout_.n, 0.0);
-  for (const Row& r : comm_.all_gather_v(mine)) rho[r.gid] = r.rho;
+  for (const Row& r : rows) rho[r.gid] = r.rho;
   return rho;
 }
 

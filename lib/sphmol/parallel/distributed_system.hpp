@@ -88,6 +88,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // for the largest rank's pair work over the mean; rebalance_threshold: the imbalance past which
   // imbalanced() asks for a new partition.
   // (t0, y0): the whole state the run starts from, which places the particles for the partition.
+  // Neither is read after the constructor: every per-particle value moves with the particles, so
+  // the caller may release them (SphSystem::release_particles).
   DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
                     double t0, double imbalance_tolerance, double rebalance_threshold);
   ~DistributedSystem() override;
@@ -150,7 +152,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   const std::vector<std::uint64_t>& gid() const { return gid_; }
   double owned_density(std::size_t o) const;
   // Collective: the latest evaluation's density of every fluid particle of the scene, in the serial
-  // order, on every rank (the values the whole system's evaluation of that state would give).
+  // order, on rank 0 (the values the whole system's evaluation of that state would give); empty on
+  // the other ranks.
   std::vector<double> whole_fluid_density() const;
   const Domain<D>& domain() const { return domain_; }
   // Whether the monitors watch the evaluations (true unless set otherwise): not while an integrator
@@ -205,6 +208,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void to_columns(const std::vector<double>& array, std::size_t blocks, std::vector<std::vector<double>>& columns) const;
   void from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks, std::vector<double>& array) const;
   void set_layout();
+  // `arrays` and the per-owned arrays that move with the particles (e_own_, h0_own_), for migrate().
+  std::vector<std::vector<double>*> extras(std::vector<std::vector<double>*> arrays);
   // Blocks of n values in the state: positions, velocities and the optional per-particle fields.
   std::size_t state_blocks() const { return 2 * D + layout_.extra_blocks(); }
 
@@ -222,11 +227,11 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::optional<BoxWalls<D>> ghost_walls_;
   std::vector<GhostPlane<D>> ghost_planes_;
   double margin_ = 0.0, margin_plan_ = 0.0;  // mirror_margin() now and at the halo plan
-  std::vector<double> wall_energy_;  // the scene's fixed e of each wall, by global id - n_fluid_global_
-  // Variable h: h(0) of every particle by global id; the largest h of the latest evaluation and of
+  std::vector<double> e_own_;  // per owned particle: the scene's fixed e (walls; unused for the fluid)
+  // Variable h: h(0) of each owned particle; the largest h of the latest evaluation and of
   // the halo plan (the list radius, and the halo's reach, follow it); the kernel support per unit h.
   bool variable_h_ = false;
-  std::vector<double> h0_;
+  std::vector<double> h0_own_;
   double hmax_ = 0.0, hmax_plan_ = 0.0, support_ = 0.0;
   double hmax_fluid_ = 0.0;  // the largest h of the fluid over all ranks (ghost walls with a variable h)
   Particles<D> owned_;

@@ -45,11 +45,20 @@ class MpiRun final : public PartitionedRun<D> {
     static const std::vector<std::size_t> none;
     return health_ ? health_->leavers() : none;
   }
+  const std::vector<double>& leaver_masses() const override {
+    static const std::vector<double> none;
+    return health_ ? health_->leaver_masses() : none;
+  }
   void take_out(const std::vector<std::size_t>& gone) override { sys_.take_out(gone, y_.data()); }
   void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
                           const HealthLimits& limits) override {
-    health_.emplace(comm_, sys_, whole, y0, y_, t0, limits);
+    // The whole scene's sums where it is whole (rank 0; the others release theirs after the set-up).
+    PhysicalSums<D> start{};
+    if (comm_.rank() == 0) start = DistributedHealthCheck<D>::start_sums(whole, y0, t0, limits);
+    comm_.broadcast(start);
+    health_.emplace(comm_, sys_, start, y_, t0, limits);
   }
+  void share_from_root(void* data, std::size_t bytes) override { comm_.broadcast_bytes(data, bytes, 0); }
   void gather_last_good(std::vector<double>& whole) override {
     if (health_) sys_.gather(health_->last_good_state().data(), whole);
   }
@@ -218,7 +227,10 @@ class MpiRun final : public PartitionedRun<D> {
     // both counts are 0, summed over the ranks.
     const auto whole_evaluations = comm_.sum(static_cast<std::uint64_t>(whole_->evaluations_including_refreshes()));
     const auto whole_rebuilds = comm_.sum(static_cast<std::uint64_t>(whole_->pair_list().rebuilds()));
+    // The whole scene's particles each rank still holds: rank 0's alone, after the set-up.
+    const auto held = comm_.all_gather(static_cast<std::uint64_t>(whole_->particles_released() ? 0 : whole_->base_particles()));
     return {{"terms_not_run", output_only},
+            {"whole_scene_particles_held", held},
             {"whole_scene_evaluations", whole_evaluations},
             {"whole_scene_neighbour_rebuilds", whole_rebuilds},
             {"ranks", comm_.size()},
@@ -253,7 +265,7 @@ class MpiRun final : public PartitionedRun<D> {
   std::vector<double> y_;
   double t0_;
   std::optional<DistributedHealthCheck<D>> health_;  // from start_health_check()
-  const SphSystem<D>* whole_;  // the scene as every rank builds it (never evaluated here)
+  const SphSystem<D>* whole_;  // the scene as every rank builds it (never evaluated here; released but on rank 0)
   std::vector<std::string> whole_terms_;
   long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
   // Collective calls (the same on every rank): whole states and whole fields gathered on rank 0,

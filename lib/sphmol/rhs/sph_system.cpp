@@ -64,6 +64,7 @@ void SphSystem<D>::configure_fields(const StateFields& fields, std::vector<doubl
 
 template <int D>
 void SphSystem<D>::allocate_fields() {
+  if (released_) throw std::logic_error("SphSystem: the particles were released (release_particles)");
   if (!ws_.rho.empty()) return;
   ws_.rho = particles_.rho;  // walls keep their rest density
   ws_.p.assign(n_base_, 0.0);
@@ -195,6 +196,7 @@ std::size_t SphSystem<D>::active_pairs() const {
 
 template <int D>
 void SphSystem<D>::rhs(double t, const double* y, double* ydot) {
+  if (released_) throw std::logic_error("SphSystem::rhs: the particles were released (release_particles)");
   ++rhs_evals_;
   ++rhs_calls_;
   allocate_workspace();
@@ -586,7 +588,51 @@ std::vector<std::string> SphSystem<D>::implicit_terms() const {
 }
 
 template <int D>
+void SphSystem<D>::release_particles() {
+  if (rhs_calls_ > 0 || workspace_allocated_) throw std::logic_error("SphSystem::release_particles: the system was evaluated");
+  if (reorder_) throw std::logic_error("SphSystem::release_particles: not with reordering");
+  const auto drop = [](auto& v) { std::decay_t<decltype(v)>().swap(v); };
+  for (int d = 0; d < D; ++d) {
+    drop(particles_.x[d]);
+    drop(particles_.v[d]);
+    drop(particles_.x_ref[d]);
+    drop(particles_.wall_normal[d]);
+    drop(x_out_[d]);
+    drop(normal_now_[d]);
+  }
+  drop(particles_.mass);
+  drop(particles_.rho);
+  drop(particles_.kind);
+  drop(particles_.wall_depth);
+  drop(particles_.stationary);
+  drop(particles_.body);
+  drop(particles_.rest_density);
+  drop(particles_.viscosity);
+  drop(particles_.motion);
+  drop(h_ref_);
+  drop(rho_ref_);
+  drop(rho_out_);
+  drop(p_out_);
+  drop(c_out_);
+  drop(e_out_);
+  drop(hs_out_);
+  // The scene's e and h(0), and any fields set on it (the evaluation's arrays were never made).
+  drop(ws_.e);
+  drop(ws_.hs);
+  drop(ws_.rho);
+  drop(ws_.p);
+  drop(ws_.c);
+  released_ = true;
+}
+
+template <int D>
 void SphSystem<D>::retire(const std::vector<std::size_t>& fluid) {
+  if (released_) {  // the indices only (run/outflow.hpp keeps the count on every rank)
+    for (const std::size_t i : fluid)
+      if (i >= layout_.n) throw std::invalid_argument("SphSystem::retire: " + std::to_string(i) + " is not a fluid particle");
+    retired_.insert(retired_.end(), fluid.begin(), fluid.end());
+    return;
+  }
   bool changed = false;
   for (const std::size_t i : fluid) {
     if (i >= layout_.n) throw std::invalid_argument("SphSystem::retire: " + std::to_string(i) + " is not a fluid particle");

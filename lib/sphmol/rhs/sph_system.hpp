@@ -132,7 +132,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   void retire(const std::vector<std::size_t>& fluid);
   // The fluid particles taken out so far, in the order retire() was given them.
   const std::vector<std::size_t>& retired() const { return retired_; }
-  bool is_retired(std::size_t i) const { return particles_.kind[i] == Kind::Out; }
+  bool is_retired(std::size_t i) const { return particles().kind[i] == Kind::Out; }
   // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
   void set_generator(std::unique_ptr<ParticleGenerator<D>> g);
   // Locality reordering (neighbors/particle_reorder.hpp): at every Verlet-list rebuild the workspace
@@ -191,7 +191,18 @@ class SphSystem final : public OdeSystem, public ImexSystem {
     return std::max(particles_.max_wall_speed(), generator_ ? generator_->max_wall_speed() : 0.0);
   }
   const StateLayout<D>& layout() const { return layout_; }
-  const Particles<D>& particles() const { return particles_; }
+  const Particles<D>& particles() const {
+    if (released_) throw std::logic_error("SphSystem::particles: the particles were released (release_particles)");
+    return particles_;
+  }
+  // A run over MPI ranks: the ranks other than 0 drop the whole scene's per-particle data once the
+  // run's set-up has read it (their own particles live in their local systems, parallel/
+  // distributed_system.hpp), so that no rank but the one writing the files holds the whole scene.
+  // What stays: the layout, the domain, the counts (layout().n fluid, base_particles() in all), the
+  // terms' names and passes, the pair list's radius, the monitors and the generator. particles(),
+  // is_retired() and any evaluation are errors afterwards; retire() only records the indices.
+  void release_particles();
+  bool particles_released() const { return released_; }
   const Domain<D>& domain() const { return domain_; }
   const CflLimits& cfl_limits() const { return cfl_; }
   double smoothing_length() const { return ws_.h; }
@@ -234,6 +245,7 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   const std::vector<double>& state_order(const std::vector<double>& w, std::vector<double>& out) const;
 
   Particles<D> particles_;
+  bool released_ = false;  // release_particles()
   Domain<D> domain_;
   StateLayout<D> layout_;
   std::unique_ptr<KernelPass<D>> kernel_;

@@ -75,6 +75,11 @@ FluidTotals<D> fluid_totals(const SphSystem<D>& sys, const double* y) {
 template <int D>
 class ConservationLog {
  public:
+  // The fluid's mass from the scene as built (over ranks the ranks other than 0 release its particles
+  // after the set-up, SphSystem::release_particles): the exact sum of the measurements'
+  // (run/piece_reduction.hpp), so the two agree to the bit.
+  explicit ConservationLog(const SphSystem<D>& sys)
+      : fluid_mass_(fixed_point_total(sys.particles().mass.data(), sys.layout().n)) {}
   void record(const SphSystem<D>& sys, const double* y, double t) { record(whole_piece(sys, y), t); }
   // Collective over the piece's ranks: every rank records the whole run's totals.
   void record(const OwnedPiece<D>& piece, double t) {
@@ -99,9 +104,7 @@ class ConservationLog {
     for (int d = 0; d < D; ++d)
       if (sys.domain().periodic[d]) periodic.push_back(d);
     j["periodic_directions"] = periodic;
-    // The exact sum of the measurements' (run/piece_reduction.hpp), so the two agree to the bit.
-    const double mass = fixed_point_total(sys.particles().mass.data(), sys.layout().n);
-    j["fluid_mass"] = mass;
+    j["fluid_mass"] = fluid_mass_;
     j["momentum_scale"] = momentum_scale_;
     if (momentum_.size() >= 2) {
       std::vector<double> drift(D), rel(D);
@@ -129,6 +132,7 @@ class ConservationLog {
   std::vector<double> kinetic_;
   std::vector<double> total_;
   double momentum_scale_ = 0.0;
+  double fluid_mass_ = 0.0;
 };
 
 }  // namespace sphmol

@@ -30,6 +30,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
@@ -163,35 +164,68 @@ HealthLimits::WallFrame common_wall_frame(const SphSystem<D>& sys) {
   return f;
 }
 
-// `velocity_scale` and `free_surface` come from the case (Case::velocity_scale, Case::free_surface).
+// What the limits read from the whole scene at the start: the fluid's mass, kinetic energy (in the
+// walls' frame), internal and elastic energy, its largest speed, and the walls' frame and largest
+// speed. Trivially copyable: a run over ranks computes them on the rank that holds the whole scene
+// and sends them to the others (every rank then makes the same limits, to the bit).
+struct HealthSums {
+  HealthLimits::WallFrame frame;
+  double mass = 0.0, ke0 = 0.0, e0 = 0.0, el0 = 0.0, v0max = 0.0, wall_speed = 0.0;
+};
+static_assert(std::is_trivially_copyable_v<HealthSums>);
+
+// The elastic energy of the config's EOS (none for an ideal gas).
+inline HealthLimits::Elastic elastic_energy(const Config& c) {
+  HealthLimits::Elastic el;
+  if (c.fluid.eos.type == "ideal_gas") return el;
+  const auto& eos = c.fluid.eos;
+  el.kind = eos.type == "tait" ? HealthLimits::Elastic::Kind::tait : HealthLimits::Elastic::Kind::linear;
+  el.rho0 = c.fluid.density;
+  el.c2 = eos.sound_speed * eos.sound_speed;
+  el.gamma = eos.gamma;
+  el.clamp_negative = eos.clamp_negative;
+  return el;
+}
+
 // `density`: the fluid densities of an evaluation at y0 in the serial order, where `sys` itself was
 // not evaluated (a run over ranks); null: sys.density(), of its initial evaluation.
 template <int D>
-HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const SphSystem<D>& sys,
-                           const double* y0, const std::vector<double>* density = nullptr) {
-  HealthLimits lim;
-  lim.frame = common_wall_frame(sys);
+HealthSums health_sums(const Config& c, const SphSystem<D>& sys, const double* y0, const std::vector<double>* density = nullptr) {
+  HealthSums s;
+  s.frame = common_wall_frame(sys);
   const auto& L = sys.layout();
   const auto& m = sys.particles().mass;
-  double mass = 0.0, ke0 = 0.0, e0 = 0.0, v0max = 0.0;
   for (std::size_t i = 0; i < L.n; ++i) {
     if (sys.is_retired(i)) continue;  // taken out (run/outflow.hpp): no part of the fluid's energy
     double v2 = 0.0, w2 = 0.0;  // w: relative to the walls' frame when there is one
     for (int d = 0; d < D; ++d) {
-      const double v = y0[L.velocity(d) + i], w = v - (lim.frame.on ? lim.frame.V(d, 0.0) : 0.0);
+      const double v = y0[L.velocity(d) + i], w = v - (s.frame.on ? s.frame.V(d, 0.0) : 0.0);
       v2 += v * v;
       w2 += w * w;
     }
-    mass += m[i];
-    ke0 += 0.5 * m[i] * w2;
-    v0max = std::max(v0max, std::sqrt(v2));
-    if (L.has_energy) e0 += m[i] * y0[L.energy() + i];
+    s.mass += m[i];
+    s.ke0 += 0.5 * m[i] * w2;
+    s.v0max = std::max(s.v0max, std::sqrt(v2));
+    if (L.has_energy) s.e0 += m[i] * y0[L.energy() + i];
   }
-  const bool ideal_gas = c.fluid.eos.type == "ideal_gas";
-  const double U = std::max(velocity_scale, v0max);
   // Moving walls can feed the fluid up to 1/2 M V^2, V the largest speed of any wall (a lid, a plate,
   // a rotating wall's max |omega r|).
-  const double V_wall = sys.max_wall_speed();
+  s.wall_speed = sys.max_wall_speed();
+  const HealthLimits::Elastic elastic = elastic_energy(c);
+  const auto& rho = density ? *density : sys.density();  // of the initial evaluation
+  const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
+  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
+    if (!sys.is_retired(i)) s.el0 += m[i] * elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
+  return s;
+}
+
+// `velocity_scale` and `free_surface` come from the case (Case::velocity_scale, Case::free_surface).
+template <int D>
+HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const HealthSums& s) {
+  HealthLimits lim;
+  lim.frame = s.frame;
+  const bool ideal_gas = c.fluid.eos.type == "ideal_gas";
+  const double U = std::max(velocity_scale, s.v0max);
   if (!ideal_gas && U > 0.0) {
     const double cs = c.fluid.eos.sound_speed;
     char buf[160];
@@ -213,28 +247,22 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
                   HealthLimits::kDensityFloor, HealthLimits::kDensityFactor, U, cs);
     lim.density_reason = buf;
   }
-  if (!ideal_gas) {
-    const auto& eos = c.fluid.eos;
-    lim.elastic.kind = eos.type == "tait" ? HealthLimits::Elastic::Kind::tait : HealthLimits::Elastic::Kind::linear;
-    lim.elastic.rho0 = c.fluid.density;
-    lim.elastic.c2 = eos.sound_speed * eos.sound_speed;
-    lim.elastic.gamma = eos.gamma;
-    lim.elastic.clamp_negative = eos.clamp_negative;
-  }
-  double el0 = 0.0;
-  const auto& rho = density ? *density : sys.density();  // of the initial evaluation
-  const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
-  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
-    if (!sys.is_retired(i)) el0 += m[i] * lim.elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
+  lim.elastic = elastic_energy(c);
   lim.energy = true;
   // In the walls' frame the walls do no work; otherwise their maximum-principle bound.
-  lim.energy_budget = ke0 + el0 + e0 + (lim.frame.on ? 0.0 : 0.5 * mass * V_wall * V_wall);
+  lim.energy_budget = s.ke0 + s.el0 + s.e0 + (lim.frame.on ? 0.0 : 0.5 * s.mass * s.wall_speed * s.wall_speed);
   // Zero-budget scenes: measured against the scene's velocity scale, or the sound speed without one.
   const double scale = U > 0.0 ? U : (ideal_gas ? 0.0 : 0.01 * c.fluid.eos.sound_speed);
-  lim.energy_floor = HealthLimits::kEnergyFloor * 0.5 * mass * scale * scale;
+  lim.energy_floor = HealthLimits::kEnergyFloor * 0.5 * s.mass * scale * scale;
   for (int d = 0; d < D && d < static_cast<int>(c.fluid.body_force.size()); ++d) lim.g[d] = c.fluid.body_force[d];
   lim.g_ramp = c.fluid.body_force_ramp;
   return lim;
+}
+
+template <int D>
+HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const SphSystem<D>& sys,
+                           const double* y0, const std::vector<double>* density = nullptr) {
+  return health_limits<D>(c, velocity_scale, free_surface, health_sums<D>(c, sys, y0, density));
 }
 
 }  // namespace sphmol

@@ -15,15 +15,16 @@
 // of the fluid mass the run ends as blown up.
 // Walls are not in the state and never leave.
 // Over MPI ranks every rank keeps an Outflow of the whole scene: the ranks' health checks gather the
-// global ids of the particles that left in a step (parallel/distributed_health_check.hpp), every rank
-// takes those out of the whole system with take_out(sys, leaving, t) (the same count, masses added in
-// the same order, the same first exit and the same BlowUp past the limit on every rank as in the serial
-// run), and each rank takes them out of its own particles and their halo copies
-// (PartitionedRun::take_out).
+// global ids and masses of the particles that left in a step (parallel/distributed_health_check.hpp),
+// every rank takes those out of the whole system's record with take_out(sys, leaving, masses, t) (the
+// same count, masses added in the same order, the same first exit and the same BlowUp past the limit
+// on every rank as in the serial run), and each rank takes them out of its own particles and their
+// halo copies (PartitionedRun::take_out).
 #include <cstddef>
 #include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -76,9 +77,18 @@ class Outflow {
   // order, not taken out yet (over ranks: the global ids the ranks' checks found, whose velocities
   // each rank zeroes in its own state). y is not touched.
   bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, double t, bool at_start = false) {
-    if (leaving.empty()) return false;
     const auto& m = sys.particles().mass;
-    for (const std::size_t i : leaving) mass_ += m[i];  // in index order, as any rank count adds them
+    std::vector<double> masses(leaving.size());
+    for (std::size_t k = 0; k < leaving.size(); ++k) masses[k] = m[leaving[k]];
+    return take_out(sys, leaving, masses, t, at_start);
+  }
+  // The same with the leavers' masses given, in the same order: over ranks they come from their
+  // owners, since only rank 0 keeps the whole scene's particles (SphSystem::release_particles).
+  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, const std::vector<double>& masses, double t,
+                bool at_start = false) {
+    if (leaving.empty()) return false;
+    if (masses.size() != leaving.size()) throw std::invalid_argument("Outflow::take_out: one mass per particle");
+    for (const double m : masses) mass_ += m;  // in index order, as any rank count adds them
     sys.retire(leaving);
     if (at_start) {
       at_start_ += leaving.size();

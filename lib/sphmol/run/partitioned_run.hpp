@@ -4,7 +4,9 @@
 // library stays MPI-free. The implementation lives in lib/sphmol/parallel (parallel/mpi_run.hpp).
 //
 // Every rank builds the whole scene; the integrator then advances each rank's own part of the
-// state. At output times the case measures from each rank's own particles (owned_piece()), its sums
+// state, and the ranks other than the root drop the whole scene's particles and the whole state
+// once the partition has taken theirs (SphSystem::release_particles): what needs the whole scene
+// later (the health limits' sums, checkpoints, the end) is computed or written on the root. At output times the case measures from each rank's own particles (owned_piece()), its sums
 // and the conservation sums reduced exactly over the ranks (run/piece_reduction.hpp); observers that
 // write per-rank files (VTK pieces) get those particles too, as do the probes at their own sampling
 // times and at the output times, which combine the ranks' terms on the root. Only an observer that
@@ -34,8 +36,12 @@ class PartitionedRun {
   // Collective: the whole state in the serial layout, on the root rank (the one that measures and
   // writes); the other ranks' `whole` is left as it was.
   virtual void gather(std::vector<double>& whole) = 0;
-  // Collective: the latest evaluation's density of every fluid particle, in the serial order.
+  // Collective: the latest evaluation's density of every fluid particle, in the serial order, on the
+  // root (empty elsewhere).
   virtual std::vector<double> whole_fluid_density() = 0;
+  // Collective: `bytes` bytes at `data` as the root has them, on every rank (what only the root,
+  // which keeps the whole scene, can compute).
+  virtual void share_from_root(void* data, std::size_t bytes) = 0;
   // Collective, at an output time t: the per-particle fields of the whole state at (t, state())
   // set on `whole` on the root rank (SphSystem::set_fields), from the ranks' evaluations of their
   // own particles: the whole system is never evaluated and never builds a neighbour list.
@@ -60,9 +66,11 @@ class PartitionedRun {
   // (empty: none). take_out(gone), between steps on every rank: this rank's own ones get zero
   // velocities in state(), and they and their halo copies leave every pair from the next evaluation on.
   virtual const std::vector<std::size_t>& leavers() const = 0;
+  virtual const std::vector<double>& leaver_masses() const = 0;  // theirs, in the same order
   virtual void take_out(const std::vector<std::size_t>& gone) = 0;
   // Before the first check: the physical bounds (run/health_limits.hpp) made from the whole scene
-  // as the serial run makes them, with the whole state (t0, y0) the run starts from.
+  // as the serial run makes them, with the whole state (t0, y0) the run starts from (collective:
+  // read on the root only).
   virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
                                   const HealthLimits& limits) = 0;
   // Collective, after check() threw: the last state that passed the checks, whole in the serial

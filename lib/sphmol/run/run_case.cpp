@@ -71,7 +71,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                             ") does not match the config (case " + config.case_name + ", " +
                             std::to_string(y.size()) + " state values, integrator " + integrator->name() + ")");
     check_restart(*restart, config, opt.restart_from, opt.force_physics_change);
-    y = restart->y;
+    y = std::move(restart->y);  // the checkpoint's copy is not needed again
     t = restart->t;
     errors = restart->errors;
     rhs_before = restart->rhs_evals;
@@ -89,6 +89,18 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // rank count wrote it).
   if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
   const bool root = !part || opt.partitioner->root();
+  // The conservation log starts from the state the run starts from (no evaluation needed).
+  ConservationLog<D> conservation(*sys);
+  conservation.record(*sys, y.data(), t);
+  // Over ranks the partition has taken each rank's particles from the whole scene: only the root,
+  // which writes the files (the checkpoints' and the end's whole state, the last good state) and
+  // computes the health limits' sums, keeps it and the whole state y; every other rank drops them
+  // before its first evaluation, keeping its own particles alone (in its local systems) and the
+  // scene's counts.
+  if (part && !root) {
+    sys->release_particles();
+    std::vector<double>().swap(y);
+  }
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
   integrator->initialize(ode, t, y_step);
@@ -119,9 +131,17 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // ranks' own particles were, and their densities are gathered in the serial order, so that no rank
   // evaluates (or holds the neighbour list of) the whole scene for them.
   const HealthLimits limits = [&] {
-    // The gathered densities (one per fluid particle) are needed here only, not for the whole run.
-    const std::vector<double> first_density = part ? part->whole_fluid_density() : std::vector<double>{};
-    return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data(), part ? &first_density : nullptr);
+    if (!part) return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data());
+    // Over ranks the whole scene's sums on the root, which alone keeps the scene after the set-up,
+    // and from it on every rank. The gathered densities (one per fluid particle, on the root) are
+    // needed here only, not for the whole run.
+    HealthSums sums;
+    {
+      const std::vector<double> first_density = part->whole_fluid_density();
+      if (root) sums = health_sums<D>(config, *sys, y.data(), &first_density);
+    }
+    part->share_from_root(&sums, sizeof sums);
+    return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), sums);
   }();
   if (part) {
     part->start_health_check(*sys, y, t, limits);
@@ -132,8 +152,6 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     health.emplace(*sys, y.data(), t, limits);
     integrator->set_step_hook([&health](double tt, const double* yy, double hh) { (*health)(tt, yy, hh); });
   }
-  ConservationLog<D> conservation;
-  conservation.record(*sys, y.data(), t);
   if (restart) {
     // A malformed integrator or observer state is bad input (exit 2), like any other checkpoint field.
     try {
@@ -312,7 +330,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
         const std::vector<std::size_t> gone = part->leavers();
         part->take_out(gone);
         // The rank's state now: a repartition (rebalance below) resizes it, so not y_step.
-        if (outflow.take_out(*sys, gone, t)) integrator->restart(ode, t, part->state().data());
+        if (outflow.take_out(*sys, gone, part->leaver_masses(), t)) integrator->restart(ode, t, part->state().data());
       }
       stepping = false;
       // Not after the last step: nothing would run on the new share.
@@ -392,12 +410,13 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   const double wall = wall_now();
   const IntegratorStats st = integrator->stats();
-  const auto& P = sys->particles();
+  // The scene's counts (over ranks the particles are released on every rank but the root).
+  const std::size_t n_fluid = sys->layout().n, n_wall = sys->base_particles() - n_fluid;
 
   nlohmann::json j;
   j["case"] = config.case_name;
   j["dimension"] = D;
-  j["particles"] = {{"fluid", P.n_fluid}, {"wall", P.n_wall()}};
+  j["particles"] = {{"fluid", n_fluid}, {"wall", n_wall}};
 
   j["integrator"] = integrator->describe();
   j["outflow"] = outflow.to_json();
@@ -444,7 +463,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
                          {"pair_list_radius", sys->pair_list().list_radius()},
                          {"verlet_pairs", verlet_pairs},
                          {"pair_passes", sys->pair_passes().empty() ? nlohmann::json("stored") : nlohmann::json(sys->pair_passes())}};
-  j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * P.n_fluid) : 0.0;
+  j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * n_fluid) : 0.0;
   c.annotate(j);
   for (const auto& o : observers) o->annotate(j);
   if (part) j["parallel"] = parallel;

@@ -58,7 +58,7 @@ void array_tag(std::ostringstream& s, const Array& a, std::uint64_t offset, cons
 // [nb, nb + ng) (positions and fields of all of them are indexed so).
 template <int D>
 std::pair<std::size_t, std::size_t> part_range(const SphSystem<D>& sys, VtkPart part) {
-  const std::size_t nf = sys.particles().n_fluid, nb = sys.base_particles();
+  const std::size_t nf = sys.layout().n, nb = sys.base_particles();  // counts only (the particles may be released)
   switch (part) {
     case VtkPart::fluid: return {0, nf};
     case VtkPart::walls: return {nf, nb};
