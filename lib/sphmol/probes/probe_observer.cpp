@@ -168,6 +168,9 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
       if (b < P.body_treatment.size() && P.body_treatment[b] == WallTreatment::repulsive)
         throw ConfigError(c.where + ": wall body '" + c.body + "' is repulsive: the force probe sums the SPH pair forces, "
                           "which its massless particles do not exert");
+      const auto known = std::find_if(walls_.begin(), walls_.end(), [&](const BodyWalls<D>& w) { return w.body == c.body_index; });
+      s.walls = static_cast<std::size_t>(known - walls_.begin());
+      if (known == walls_.end()) walls_.push_back(body_walls<D>(P, c.body_index));
       const char* unit = D == 3 ? "N" : D == 2 ? "N/m" : "N/m^2";
       for (int d = 0; d < D; ++d) head << ",F" << kAxis[d] << " [" << unit << "]";
       s.description = "probe " + c.name + ": force of the fluid on wall body " + c.body +
@@ -322,8 +325,11 @@ template <int D>
 void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, const SphSystem<D>& whole, const OwnedPiece<D>& piece,
                                      double t) {
   if (which.empty()) return;
-  const auto& P = whole.particles();  // the scene's particles by global id (masses, walls' motion)
+  // Of `whole` only its domain: the ranks other than 0 hold none of its particles after the set-up.
+  // The fluid's masses and viscosities from the rank's own system (its rows hold the scene's values),
+  // the force probes' walls from their copies (walls_).
   const SphSystem<D>& local = *piece.system;
+  const Particles<D>& LP = local.particles();
   const auto& LL = local.layout();
   const std::vector<double>& rho = local.density();
   const std::vector<double>& p = local.pressure();
@@ -347,7 +353,7 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
   // Fluid taken out of the run (run/outflow.hpp) has no volume, as in the serial sample: its owner
   // still lists it.
   for (std::size_t k = 0; k < n; ++k)
-    volume[k] = local.is_retired(piece.fluid_rows[k]) ? 0.0 : P.mass[static_cast<std::size_t>(piece.fluid_ids[k])] / rho[piece.fluid_rows[k]];
+    volume[k] = local.is_retired(piece.fluid_rows[k]) ? 0.0 : LP.mass[piece.fluid_rows[k]] / rho[piece.fluid_rows[k]];
   // The sampler's bins in the cells of the whole fluid's box, as the serial sampler bins the whole
   // fluid: its neighbours are visited in the serial order, by (cell, global id).
   const bool sampled = std::any_of(which.begin(), which.end(), [&](std::size_t k) { return series_[k].cfg.type != "force"; });
@@ -393,11 +399,14 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
         });
       }
     } else {
-      // (fluid id, neighbour number) -> the pair's D terms. The body's walls from the whole scene at
-      // t (every rank alike, in the serial bins); the fields of those near an owned fluid particle
-      // from the local system, whose halo holds them as the RHS reads them.
+      // (fluid id, neighbour number) -> the pair's D terms. The body's walls (their copy, in global-id
+      // order) at t, every rank alike, in the serial bins: the neighbour numbers are the serial ones.
+      // The fields of those near an owned fluid particle from the local system, whose halo holds them
+      // as the RHS reads them.
       T.stride = D;
-      const WallBodyBins<D> walls(P, c.body_index, [&](int d, std::size_t j) { return P.wall_position(d, j, t); },
+      const BodyWalls<D>& B = walls_[s.walls];
+      const Particles<D>& PW = B.walls;
+      const WallBodyBins<D> walls(PW, c.body_index, [&](int d, std::size_t j) { return PW.wall_position(d, j, t); },
                                   support_ * h_, whole.domain());
       const auto end = [&](std::size_t row) {
         WallPairEnd<D> e;
@@ -407,27 +416,29 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
         return e;
       };
       for (std::size_t k = 0; k < n; ++k) {
-        if (local.is_retired(piece.fluid_rows[k])) continue;  // taken out: pairs with no wall, as serially
+        const std::size_t row_i = piece.fluid_rows[k];
+        if (local.is_retired(row_i)) continue;  // taken out: pairs with no wall, as serially
         const auto i = static_cast<std::size_t>(piece.fluid_ids[k]);
         geometry::Vec<D> xi;
-        WallPairEnd<D> a = end(piece.fluid_rows[k]);
+        WallPairEnd<D> a = end(row_i);
         for (int d = 0; d < D; ++d) {
           xi[d] = x[d][k];
           a.v[d] = v[d][k];
         }
         std::uint64_t seq = 0;
-        walls.near(xi, [&](std::size_t j, double r, const std::array<double, D>& dx) {
+        walls.near(xi, [&](std::size_t w, double r, const std::array<double, D>& dx) {
           const std::uint64_t number = seq++;
           if (r == 0.0) return;  // as the serial sum
-          const auto at = std::lower_bound(piece.row_ids.begin(), piece.row_ids.end(), static_cast<std::int64_t>(j));
-          if (at == piece.row_ids.end() || *at != static_cast<std::int64_t>(j)) {
+          const auto j = static_cast<std::int64_t>(B.ids[w]);  // its global id
+          const auto at = std::lower_bound(piece.row_ids.begin(), piece.row_ids.end(), j);
+          if (at == piece.row_ids.end() || *at != j) {
             if (missing.empty())
               missing = "wall particle " + std::to_string(j) + " near fluid particle " + std::to_string(i);
             return;
           }
           WallPairEnd<D> b = end(static_cast<std::size_t>(at - piece.row_ids.begin()));
-          for (int d = 0; d < D; ++d) b.v[d] = P.v[d][j];
-          const std::array<double, D> f = wall_pair_force<D>(P, i, j, a, b, r, dx, dWdr_, h_, model_);
+          for (int d = 0; d < D; ++d) b.v[d] = PW.v[d][w];
+          const std::array<double, D> f = wall_pair_force<D>(LP, row_i, PW, w, a, b, r, dx, dWdr_, h_, model_);
           T.keys.push_back({i, number, 0});
           T.values.insert(T.values.end(), f.begin(), f.end());
         });

@@ -24,6 +24,8 @@ class ProbeObserver final : public OutputObserver<D> {
  public:
   // Checks each probe against the built scene: a sample point or gauge line outside the particles'
   // bounding box widened by the kernel support is a ConfigError at the probe's key (FILE:LINE).
+  // The only call that reads sys.particles(): it copies the force probes' walls (BodyWalls). Over
+  // ranks, the piece methods read of `whole` only its domain; the rank's own system gives the rest.
   ProbeObserver(const Config& config, const SphSystem<D>& sys);
 
   void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
@@ -68,6 +70,7 @@ class ProbeObserver final : public OutputObserver<D> {
     std::string header, rows, description;
     long next_k = 0;                       // `every` probes: index of the next sample time k * every
     bool dirty = false;                    // rows not yet in the file
+    std::size_t walls = 0;                 // force: the body's entry in walls_
   };
   double sample_time(const Series& s, long k) const;
   // The `every` series with a sample time at t (within round-off), moved past it.
@@ -84,6 +87,9 @@ class ProbeObserver final : public OutputObserver<D> {
   void flush(const OutputSink& out);
 
   std::vector<Series> series_;
+  // The walls of each probed body, copied at construction: over ranks the force probes read these,
+  // and no per-particle array of the whole scene, which the ranks other than 0 drop after the set-up.
+  std::vector<BodyWalls<D>> walls_;
   std::vector<double> output_times_;
   double t_end_ = 0.0, h_ = 0.0, support_ = 0.0;
   double (*W_)(double, double) = nullptr;

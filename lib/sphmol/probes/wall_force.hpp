@@ -54,15 +54,17 @@ struct WallPairEnd {
 };
 
 // The body's part of one pair, -m_i a_ij (per axis; its sum over the pairs is the force): fluid
-// particle i and wall particle j, their indices in P (the whole scene's particles: masses, wall
-// normals and depths, viscosities), at distance r > 0 with dx = x_i - x_j.
+// particle i, its index in Pf (its mass and viscosity), and wall particle j, its index in Pw (its
+// mass, normal, depth and body), at distance r > 0 with dx = x_i - x_j. Serially both are the whole
+// scene's particles; over ranks Pf is a rank's own system and Pw the body's walls (BodyWalls).
 template <int D>
-std::array<double, D> wall_pair_force(const Particles<D>& P, std::size_t i, std::size_t j, const WallPairEnd<D>& a,
-                                      const WallPairEnd<D>& b, double r, const std::array<double, D>& dx,
-                                      double (*dWdr)(double, double), double h, const WallForceModel& model) {
+std::array<double, D> wall_pair_force(const Particles<D>& Pf, std::size_t i, const Particles<D>& Pw, std::size_t j,
+                                      const WallPairEnd<D>& a, const WallPairEnd<D>& b, double r,
+                                      const std::array<double, D>& dx, double (*dWdr)(double, double), double h,
+                                      const WallForceModel& model) {
   const double eta2 = 0.01 * h * h;
   const double F = dWdr(r, h) / r;
-  const double mj = P.mass[j];
+  const double mj = Pw.mass[j];
   const double pi_i = a.p / (a.rho * a.rho);
   // Pressure: the coefficient of dx in a_ij.
   double cx = model.momentum_116 ? -mj * (a.p + b.p) / (a.rho * b.rho) * F : -mj * (pi_i + b.p / (b.rho * b.rho)) * F;
@@ -71,23 +73,76 @@ std::array<double, D> wall_pair_force(const Particles<D>& P, std::size_t i, std:
   if (model.artificial_viscosity) cx -= mj * model.pi(vx, r * r, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho)) * F;
   double cv = 0.0;
   if (model.viscous) {
-    double beta = P.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
+    double beta = Pw.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
     if (model.morris_wall_velocity && beta > 0.0) {
-      double dA = -P.wall_depth[j];
-      for (int d = 0; d < D; ++d) dA += P.wall_normal[d][j] * dx[d];
-      beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + P.wall_depth[j] / dA) : model.beta_max;
+      double dA = -Pw.wall_depth[j];
+      for (int d = 0; d < D; ++d) dA += Pw.wall_normal[d][j] * dx[d];
+      beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + Pw.wall_depth[j] / dA) : model.beta_max;
     }
     // A wall pair takes the fluid particle's mu (physics/morris_viscosity.hpp).
-    const double mu = P.viscosity.empty() ? model.dynamic_viscosity : P.viscosity[i];
+    const double mu = Pf.viscosity.empty() ? model.dynamic_viscosity : Pf.viscosity[i];
     cv = mj * 2.0 * mu / (a.rho * b.rho) * F * r * r / (r * r + eta2) * beta;
   }
   std::array<double, D> f{};
-  for (int d = 0; d < D; ++d) f[d] = P.mass[i] * (cx * dx[d] + cv * (a.v[d] - b.v[d]));
+  for (int d = 0; d < D; ++d) f[d] = Pf.mass[i] * (cx * dx[d] + cv * (a.v[d] - b.v[d]));
   return f;
 }
 
+// The wall particles of one body, copied out of the scene's particles P in ascending index order
+// (every per-particle array; the per-body tables and the motions whole): what a force probe over
+// ranks keeps of the scene, whose per-particle arrays the ranks other than 0 drop after the set-up.
+// walls.n_fluid = 0, so WallBodyBins over `walls` lists them in the order it lists them in P.
+template <int D>
+struct BodyWalls {
+  int body = -1;
+  Particles<D> walls;
+  std::vector<std::size_t> ids;  // walls' particle k is P's particle ids[k]
+};
+
+template <int D>
+BodyWalls<D> body_walls(const Particles<D>& P, int body) {
+  BodyWalls<D> B;
+  B.body = body;
+  // The scene's own walls: a particle generator (ghost images) extends mass, rho and kind beyond
+  // `body`, and its images belong to no body.
+  for (std::size_t j = P.n_fluid; j < P.body.size(); ++j)
+    if (P.body[j] == body) B.ids.push_back(j);
+  // 4 D-arrays and 9 arrays per particle, 4 tables per body, and n_fluid (as
+  // parallel/particle_columns.hpp counts them): a member added to Particles is copied below.
+  static_assert(sizeof(Particles<D>) == sizeof(std::size_t) + (4 * D + 9 + 4) * sizeof(std::vector<double>),
+                "Particles gained or lost a member: update body_walls");
+  Particles<D>& W = B.walls;
+  const auto take = [&](auto& to, const auto& from) {
+    if (from.empty()) return;  // an optional array nobody fills (rest_density, viscosity)
+    to.resize(B.ids.size());
+    for (std::size_t k = 0; k < B.ids.size(); ++k) to[k] = from[B.ids[k]];
+  };
+  for (int d = 0; d < D; ++d) {
+    take(W.x[d], P.x[d]);
+    take(W.v[d], P.v[d]);
+    take(W.x_ref[d], P.x_ref[d]);
+    take(W.wall_normal[d], P.wall_normal[d]);
+  }
+  take(W.mass, P.mass);
+  take(W.rho, P.rho);
+  take(W.kind, P.kind);
+  take(W.wall_depth, P.wall_depth);
+  take(W.stationary, P.stationary);
+  take(W.body, P.body);
+  take(W.rest_density, P.rest_density);
+  take(W.viscosity, P.viscosity);
+  take(W.motion, P.motion);
+  W.free_slip_body = P.free_slip_body;
+  W.body_treatment = P.body_treatment;
+  W.body_repulsion = P.body_repulsion;
+  W.motions = P.motions;
+  W.n_fluid = 0;
+  return B;
+}
+
 // The wall particles of one body, binned by the kernel support; x(d, j): coordinate d of wall
-// particle j (index in P). Over ranks every rank builds them from the whole scene alone.
+// particle j (index in P). Over ranks every rank builds them from the body's walls (BodyWalls),
+// which it copied from the whole scene at the set-up.
 template <int D>
 class WallBodyBins {
  public:
@@ -138,7 +193,7 @@ std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceStat
     const WallPairEnd<D> a = end(i);
     bins.near(xi, [&](std::size_t j, double r, const std::array<double, D>& dx) {
       if (r == 0.0) return;  // coincident particles exert no force (dx = 0)
-      const std::array<double, D> f = wall_pair_force<D>(P, i, j, a, end(j), r, dx, dWdr, h, model);
+      const std::array<double, D> f = wall_pair_force<D>(P, i, P, j, a, end(j), r, dx, dWdr, h, model);
       // The body receives -m_i a_ij.
       for (int d = 0; d < D; ++d) force[d] -= f[d];
     });
