@@ -40,7 +40,7 @@ struct GatherRow {
 template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole,
                                         const std::vector<double>& y0, double t0, double imbalance_tolerance,
-                                        double rebalance_threshold)
+                                        double rebalance_threshold, const std::function<void()>& scene_read)
     : comm_(comm),
       config_(config),
       rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
@@ -98,25 +98,45 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     h0_own_.resize(slice.size());
     for (std::size_t k = 0; k < slice.size(); ++k) h0_own_[k] = h0[slice[k]];
   }
+  std::array<std::vector<double>, D> xw;
+  for (int d = 0; d < D; ++d) {
+    xw[d].resize(hi - lo);
+    for (std::size_t i = lo; i < hi; ++i)
+      xw[d][i - lo] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
+  }
+  // The slice's part of the start state moves with the particles from here on: neither the whole
+  // scene nor y0 is read again, and the caller may drop them now (scene_read), before the searches
+  // of the partition by pair count.
+  set_layout();
+  std::vector<double> y = local_part(y0);
+  if (scene_read) scene_read();
   {
-    std::array<std::vector<double>, D> xw;
     std::array<const double*, D> xs;
-    for (int d = 0; d < D; ++d) {
-      xw[d].resize(hi - lo);
-      for (std::size_t i = lo; i < hi; ++i)
-        xw[d][i - lo] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
-      xs[d] = xw[d].data();
-    }
+    for (int d = 0; d < D; ++d) xs[d] = xw[d].data();
     std::vector<double> count(hi - lo, 1.0);
     const RcbResult<D> cut = rcb_->partition(xs, count.data(), gid_.data(), gid_.size());
-    migrate(comm, owned_, gid_, cut.destination, extras({}));
+    for (auto& c : xw) std::vector<double>().swap(c);
+    migrate_state(cut.destination, y, {});
   }
-  set_layout();
-  balance_by_pairs(t0, local_part(y0));
+  balance_by_pairs(t0, y);
+  initial_state_ = std::move(y);
 }
 
 template <int D>
-void DistributedSystem<D>::balance_by_pairs(double t0, const std::vector<double>& y) {
+void DistributedSystem<D>::migrate_state(const std::vector<int>& destination, std::vector<double>& y,
+                                         std::vector<std::vector<double>*> more) {
+  std::vector<std::vector<double>> columns;
+  to_columns(y, state_blocks(), columns);
+  std::vector<std::vector<double>*> extra;
+  for (auto& c : columns) extra.push_back(&c);
+  extra.insert(extra.end(), more.begin(), more.end());
+  migrate(comm_, owned_, gid_, destination, extras(extra));
+  set_layout();
+  from_columns(columns, state_blocks(), y);
+}
+
+template <int D>
+void DistributedSystem<D>::balance_by_pairs(double t0, std::vector<double>& y) {
   // Work per particle: its row of the neighbour list (support + skin) plus one, as imbalanced()
   // counts it, from a search over each rank's own particles and its halo at (t0, y) (the halo of the
   // count partition's plan, with the positions of the state): no rank searches the whole scene.
@@ -149,8 +169,7 @@ void DistributedSystem<D>::balance_by_pairs(double t0, const std::vector<double>
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
-  migrate(comm_, owned_, gid_, cut.destination, extras({&weight_}));
-  set_layout();
+  migrate_state(cut.destination, y, {&weight_});
   local_.reset();
   halo_.reset();
   velocity_halo_.reset();

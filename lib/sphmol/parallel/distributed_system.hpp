@@ -60,6 +60,7 @@
 // reduced over the ranks, so the stage solves iterate as the serial ones do, to the bit.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -88,10 +89,13 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // for the largest rank's pair work over the mean; rebalance_threshold: the imbalance past which
   // imbalanced() asks for a new partition.
   // (t0, y0): the whole state the run starts from, which places the particles for the partition.
-  // Neither is read after the constructor: every per-particle value moves with the particles, so
-  // the caller may release them (SphSystem::release_particles).
+  // Neither is read once the rank has taken its slice of them: every per-particle value moves with
+  // the particles from there, and `scene_read` (when set) is called on every rank at that point,
+  // before the partition's searches, so that the caller can release them
+  // (SphSystem::release_particles). take_initial_state(): this rank's part of y0 afterwards.
   DistributedSystem(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-                    double t0, double imbalance_tolerance, double rebalance_threshold);
+                    double t0, double imbalance_tolerance, double rebalance_threshold,
+                    const std::function<void()>& scene_read = {});
   ~DistributedSystem() override;
 
   std::size_t size() const override { return layout_.size(); }
@@ -119,6 +123,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // every rank's part, on rank 0 only (the one that measures and writes); returns true there. On the
   // other ranks `whole` is left as it was: no rank but the root holds a gathered copy of the scene.
   std::vector<double> local_part(const std::vector<double>& whole) const;
+  // This rank's part of the constructor's y0 (once; empty afterwards).
+  std::vector<double> take_initial_state() { return std::move(initial_state_); }
   bool gather(const double* y, std::vector<double>& whole) const;
 
   // Collective, between steps: true when the halo was planned again since the last call and the
@@ -199,7 +205,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void plan();                 // collective: halo plan and a new local system
   // Collective, at the start: a new partition by each owned particle's pair count, counted in the
   // local systems at the whole state's local part y (this rank's share of it).
-  void balance_by_pairs(double t0, const std::vector<double>& y);
+  void balance_by_pairs(double t0, std::vector<double>& y);
+  // Collective: the owned particles to `destination`, with y (this rank's state) and the `more`
+  // per-particle arrays, all in the new share afterwards.
+  void migrate_state(const std::vector<int>& destination, std::vector<double>& y, std::vector<std::vector<double>*> more);
   // Collective: f at (t, y) into ydot, and with `op` the viscous operator of the owned rows.
   void evaluate(double t, const double* y, double* ydot, ViscousOperator* op);
 
@@ -253,6 +262,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_;    // the local state, made at output times (refresh_local)
   std::vector<double> halo_rows_;  // the halo's state rows of the latest exchange
+  std::vector<double> initial_state_;  // take_initial_state()
   double stable_step_ = 0.0, first_stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;
   Stats stats_;

@@ -26,8 +26,11 @@ template <int D>
 class MpiRun final : public PartitionedRun<D> {
  public:
   MpiRun(const Communicator& comm, const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-         double t0, double tolerance, double rebalance_threshold)
-      : comm_(comm), sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold), y_(sys_.local_part(y0)), t0_(t0),
+         double t0, double tolerance, double rebalance_threshold, const std::function<void()>& scene_read)
+      : comm_(comm),
+        sys_(comm, config, whole, y0, t0, tolerance, rebalance_threshold, scene_read),
+        y_(sys_.take_initial_state()),
+        t0_(t0),
         whole_(&whole), whole_terms_(whole.active_terms()) {}
 
   OdeSystem& system() override { return sys_; }
@@ -307,22 +310,26 @@ MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_
 
 template <int D>
 std::unique_ptr<PartitionedRun<D>> MpiRunPartitioner::make(const Config& config, const SphSystem<D>& whole,
-                                                           const std::vector<double>& y0, double t0) const {
+                                                           const std::vector<double>& y0, double t0,
+                                                           const std::function<void()>& scene_read) const {
   refuse_unsupported(config, whole);
-  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, t0, tolerance_, rebalance_threshold_);
+  return std::make_unique<MpiRun<D>>(comm_, config, whole, y0, t0, tolerance_, rebalance_threshold_, scene_read);
 }
 
 std::unique_ptr<PartitionedRun<1>> MpiRunPartitioner::partition(const Config& c, const SphSystem<1>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<1>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const std::function<void()>& scene_read) const {
+  return make<1>(c, w, y0, t0, scene_read);
 }
 std::unique_ptr<PartitionedRun<2>> MpiRunPartitioner::partition(const Config& c, const SphSystem<2>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<2>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const std::function<void()>& scene_read) const {
+  return make<2>(c, w, y0, t0, scene_read);
 }
 std::unique_ptr<PartitionedRun<3>> MpiRunPartitioner::partition(const Config& c, const SphSystem<3>& w,
-                                                                 const std::vector<double>& y0, double t0) const {
-  return make<3>(c, w, y0, t0);
+                                                                 const std::vector<double>& y0, double t0,
+                                                                 const std::function<void()>& scene_read) const {
+  return make<3>(c, w, y0, t0, scene_read);
 }
 
 }  // namespace sphmol::parallel

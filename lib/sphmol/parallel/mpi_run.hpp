@@ -18,16 +18,19 @@ class MpiRunPartitioner final : public RunPartitioner {
 
   bool root() const override { return comm_.rank() == 0; }
   std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
-                                               const std::vector<double>& y0, double t0) const override;
+                                               const std::vector<double>& y0, double t0,
+                                               const std::function<void()>& scene_read = {}) const override;
   std::unique_ptr<PartitionedRun<2>> partition(const Config& config, const SphSystem<2>& whole,
-                                               const std::vector<double>& y0, double t0) const override;
+                                               const std::vector<double>& y0, double t0,
+                                               const std::function<void()>& scene_read = {}) const override;
   std::unique_ptr<PartitionedRun<3>> partition(const Config& config, const SphSystem<3>& whole,
-                                               const std::vector<double>& y0, double t0) const override;
+                                               const std::vector<double>& y0, double t0,
+                                               const std::function<void()>& scene_read = {}) const override;
 
  private:
   template <int D>
   std::unique_ptr<PartitionedRun<D>> make(const Config& config, const SphSystem<D>& whole, const std::vector<double>& y0,
-                                          double t0) const;
+                                          double t0, const std::function<void()>& scene_read) const;
 
   Communicator comm_;
   double tolerance_, rebalance_threshold_;

@@ -13,6 +13,7 @@
 // reads the whole system at output times (none ships) would have the whole state gathered there
 // with the fields of each rank's own particles (whole_fields()), on the root, which writes the
 // files and the summary as a serial run does, without evaluating the whole system.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -105,11 +106,14 @@ class RunPartitioner {
   // Collective. `whole`: the scene as built on every rank; (t0, y0) the whole state the run starts
   // from. Throws ConfigError on every rank for a configuration the partitioned run does not support.
   virtual std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
-                                                       const std::vector<double>& y0, double t0) const = 0;
+                                                       const std::vector<double>& y0, double t0,
+                                                       const std::function<void()>& scene_read = {}) const = 0;
   virtual std::unique_ptr<PartitionedRun<2>> partition(const Config& config, const SphSystem<2>& whole,
-                                                       const std::vector<double>& y0, double t0) const = 0;
+                                                       const std::vector<double>& y0, double t0,
+                                                       const std::function<void()>& scene_read = {}) const = 0;
   virtual std::unique_ptr<PartitionedRun<3>> partition(const Config& config, const SphSystem<3>& whole,
-                                                       const std::vector<double>& y0, double t0) const = 0;
+                                                       const std::vector<double>& y0, double t0,
+                                                       const std::function<void()>& scene_read = {}) const = 0;
 };
 
 }  // namespace sphmol

@@ -85,22 +85,22 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // partition, which carries their kind to the ranks' particles).
   Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
   outflow.take_out(*sys, y.data(), t, true);
-  // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
-  // rank count wrote it).
-  if (opt.partitioner) part = opt.partitioner->partition(config, *sys, y, t);
-  const bool root = !part || opt.partitioner->root();
   // The conservation log starts from the state the run starts from (no evaluation needed).
   ConservationLog<D> conservation(*sys);
   conservation.record(*sys, y.data(), t);
-  // Over ranks the partition has taken each rank's particles from the whole scene: only the root,
-  // which writes the files (the checkpoints' and the end's whole state, the last good state) and
-  // computes the health limits' sums, keeps it and the whole state y; every other rank drops them
-  // before its first evaluation, keeping its own particles alone (in its local systems) and the
-  // scene's counts.
-  if (part && !root) {
-    sys->release_particles();
-    std::vector<double>().swap(y);
-  }
+  // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
+  // rank count wrote it). Once a rank has taken its slice of the scene, only the root, which
+  // writes the files (the checkpoints' and the end's whole state, the last good state) and computes
+  // the health limits' sums, keeps the whole scene and the whole state y: every other rank drops
+  // them there, before the partition's searches and its first evaluation, keeping its own particles
+  // alone (in its local systems) and the scene's counts.
+  const bool root = !opt.partitioner || opt.partitioner->root();
+  if (opt.partitioner)
+    part = opt.partitioner->partition(config, *sys, y, t, [&] {
+      if (root) return;
+      sys->release_particles();
+      std::vector<double>().swap(y);
+    });
   OdeSystem& ode = part ? part->system() : static_cast<OdeSystem&>(*sys);
   double* const y_step = part ? part->state().data() : y.data();  // what the integrator advances
   integrator->initialize(ode, t, y_step);
