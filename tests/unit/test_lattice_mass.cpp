@@ -48,9 +48,11 @@ std::vector<std::array<double, 3>> hexagonal_points(double dx, double radius) {
 // W'(r_j) (x_0 - x_j) / r_j, of p = p0 + a . x at uniform density rho0, over its slope |a| along a:
 // 1 where the gradient is exact. Also checks that the gradient has no component across a.
 template <int D>
-double slope_read(const KernelInfo<D>& K, const std::vector<std::array<double, 3>>& pts, double m, double h) {
+double slope_read(const KernelInfo<D>& K, const std::vector<std::array<double, 3>>& pts, double m, double h, double dx) {
   const std::array<double, 3> a{1.7, D > 1 ? -0.6 : 0.0, D > 2 ? 0.9 : 0.0};
-  const double p0 = 3.0e4;
+  // p_0 = p(x_0) != 0, half a spacing's rise: the p_i term cancels by the lattice's symmetry, to a
+  // round-off of p0 / (|a| dx) times that of the p_j sum (a large p0 would hide the 1e-12).
+  const double p0 = 0.5 * a[0] * dx;
   std::array<double, 3> g{};
   for (const auto& x : pts) {
     const double r = std::hypot(x[0], x[1], x[2]);
@@ -74,7 +76,7 @@ void check_cubic(const std::string& kernel, double ratio) {
   const double dx = 0.025, h = ratio * dx;
   const auto pts = cubic_points<D>(dx, K.support * h);
   const double m_grad = lattice_gradient_mass<D>(kernel, kRho0, dx, h);
-  CHECK(std::abs(slope_read<D>(K, pts, m_grad, h) - 1.0) < 1e-12);
+  CHECK(std::abs(slope_read<D>(K, pts, m_grad, h, dx) - 1.0) < 1e-12);
   // The summation mass: summed density rho0 exactly, the gradient not exact.
   const double m_sum = lattice_particle_mass<D>(kernel, kRho0, dx, h);
   double rho = 0.0;
@@ -82,7 +84,7 @@ void check_cubic(const std::string& kernel, double ratio) {
   CHECK(rho / kRho0 == Approx(1.0).epsilon(1e-13));
   // (B-splines at a whole h / dx reproduce the slope with either mass: the cubic spline and the
   // quintic at h = 2 dx in 1D. Wendland C2 never does: 1e-4 to 5e-2 off here.)
-  if (kernel == "wendland_c2") CHECK(std::abs(slope_read<D>(K, pts, m_sum, h) - 1.0) > 5e-5);
+  if (kernel == "wendland_c2") CHECK(std::abs(slope_read<D>(K, pts, m_sum, h, dx) - 1.0) > 5e-5);
   // lattice_mass picks by the key's value.
   CHECK(lattice_mass<D>("gradient", kernel, kRho0, dx, h) == m_grad);
   CHECK(lattice_mass<D>("summation", kernel, kRho0, dx, h) == m_sum);
@@ -108,8 +110,8 @@ TEST_CASE("lattice mass: the summation mass reads a linear field 0.2 % low in 2D
   // The numbers that made a water column at rest settle with a gradient 0.20 % (2D) and 0.114 % (3D)
   // steeper than g rho (docs/verification.md, "The lattice mass"): 0.99800 on the square lattice,
   // 0.99886 on the cubic one.
-  CHECK(slope_read<2>(K2, cubic_points<2>(dx, K2.support * h), m2, h) == Approx(0.99800).margin(1e-5));
-  CHECK(slope_read<3>(K3, cubic_points<3>(dx, K3.support * h), m3, h) == Approx(0.99886).margin(1e-5));
+  CHECK(slope_read<2>(K2, cubic_points<2>(dx, K2.support * h), m2, h, dx) == Approx(0.99800).margin(1e-5));
+  CHECK(slope_read<3>(K3, cubic_points<3>(dx, K3.support * h), m3, h, dx) == Approx(0.99886).margin(1e-5));
   // Their ratio to the gradient mass is that reading.
   CHECK(m2 / lattice_gradient_mass<2>("wendland_c2", kRho0, dx, h) == Approx(0.99800).margin(1e-5));
   CHECK(m3 / lattice_gradient_mass<3>("wendland_c2", kRho0, dx, h) == Approx(0.99886).margin(1e-5));
@@ -127,7 +129,7 @@ TEST_CASE("lattice mass: the hexagonal gradient and summation masses", "[lattice
       const double h = ratio * dx;
       const auto pts = hexagonal_points(dx, K.support * h);
       const double m_grad = hexagonal_gradient_mass(kernel, kRho0, dx, h);
-      CHECK(std::abs(slope_read<2>(K, pts, m_grad, h) - 1.0) < 1e-12);
+      CHECK(std::abs(slope_read<2>(K, pts, m_grad, h, dx) - 1.0) < 1e-12);
       const double m_sum = hexagonal_particle_mass(kernel, kRho0, dx, h);
       double rho = 0.0;
       for (const auto& x : pts) rho += m_sum * K.W(std::hypot(x[0], x[1]), h);
