@@ -65,26 +65,29 @@ TEST_CASE("hydrostatic: pressure and drift stay bounded (coarse, 4 s)", "[integr
 TEST_CASE("hydrostatic: three tank shapes at c0 = 20 sqrt(g H) hold pressure, gradient and drift (3 s)",
           "[integration][hydrostatic]") {
   // dx = 0.025 m in each (the shipped file's), c0 = 20 sqrt(g H) (the shipped 59.4 m/s for 0.9 m,
-  // 44.3 m/s for 0.5 m, 76.7 m/s for 1.5 m), the CFL step 0.15 h / c0, outputs at 2, 2.5, 3 s.
-  // Measured (p_rms, fitted gradient against rho0 g / against g times the mean density, worst over
-  // the outputs, max_drift, drift_creep; 2026-12-06, one thread):
-  //   1 x 0.9 m, 40 across (36 rows): 0.0033, +0.117 % / -0.017 %, 0.243, 0.0016   (34 s)
-  //   2 x 0.5 m, 80 across (20 rows): 0.0062, -0.31 % / -0.43 %, 0.228, 0.0036     (51 s)
-  //   0.5 x 1.5 m, 20 across (60 rows): 0.0030, +0.27 % / +0.15 %, 0.272, 0.0013   (77 s)
-  // The weakly compressible column is g H / (2 c0^2) = 0.125 % steeper than rho0 g. The shallow tank's
-  // 20 rows leave its top row (half a kernel) at +0.024 rho0 g H: at 40 rows it is within 0.2 % (the
-  // next test). The tall tank is +0.15 % steeper than its own mean density at 20 and at 40 across
-  // (p_rms 0.0013 at 40): not within 0.2 % of rho0 g.
+  // 44.3 m/s for 0.5 m, 76.7 m/s for 1.5 m), the CFL step 0.15 h / c0, the gradient mass
+  // (discretization.particle_mass: gradient), outputs at 2, 2.5, 3 s.
+  // Measured (p_rms, fitted gradient against rho0 g / against g times the mean density, over the
+  // outputs, max_drift, drift_creep; 2026-12-06, one thread):
+  //   1 x 0.9 m, 40 across (36 rows): 0.0033, -0.086 to -0.093 % / -0.210 to -0.217 %, 0.242, 0.0016  (22 s)
+  //   2 x 0.5 m, 80 across (20 rows): 0.0062, -0.504 to -0.507 % / -0.628 to -0.631 %, 0.227, 0.0035  (18 s)
+  //   0.5 x 1.5 m, 20 across (60 rows): 0.0028, +0.045 to +0.070 % / -0.055 to -0.079 %, 0.270, 0.0013 (24 s)
+  // With the summation mass the symmetric gradient read a linear field at 0.998 of its slope, and each
+  // tank settled 0.20 % steeper (+0.117 %, -0.31 %, +0.27 % against rho0 g). What remains against
+  // g times the mean density is the top row (half a kernel), about -2.5 / N^2 for N rows (-2.4 to
+  // -2.8 over 20 to 60 rows); the column's compression g H / (2 c0^2) = +0.125 % offsets it against
+  // rho0 g. So from about 36 rows the gradient is within 0.2 % of rho0 g: the 1 x 0.9 and the tall
+  // tank here, the shallow tank at 40 rows in the next test; the shallow tank's 20 rows are not.
   struct Tank {
     std::vector<std::string> set;
     double p_rms, gradient, gradient_eos, drift;
   };
   const std::vector<std::string> common{"time.t_end=3", "output.times=[2, 2.5, 3]"};
-  for (const Tank& k : {Tank{{"geometry.box=[1.0, 0.9]", "discretization.particles_across=40"}, 0.005, 0.002, 0.001, 0.35},
+  for (const Tank& k : {Tank{{"geometry.box=[1.0, 0.9]", "discretization.particles_across=40"}, 0.005, 0.002, 0.003, 0.35},
                         Tank{{"geometry.box=[2.0, 0.5]", "discretization.particles_across=80", "fluid.eos.sound_speed=44.3"},
-                             0.0075, 0.004, 0.006, 0.35},
+                             0.0075, 0.007, 0.008, 0.35},
                         Tank{{"geometry.box=[0.5, 1.5]", "discretization.particles_across=20", "fluid.eos.sound_speed=76.7"},
-                             0.004, 0.0035, 0.002, 0.4}}) {
+                             0.004, 0.002, 0.002, 0.4}}) {
     auto set = k.set;
     set.insert(set.end(), common.begin(), common.end());
     INFO(set[0]);
@@ -105,10 +108,12 @@ TEST_CASE("hydrostatic: the shallow tank at 40 rows holds p_rms within 0.005 and
           "[integration][hydrostatic]") {
   // The 2 x 0.5 m tank's error sits in its top row (half a kernel, a fixed fraction of rho0 g dx), so
   // p_rms falls with the rows in depth: 0.0062 at 20 rows (above). Measured at 40 rows (dx = 0.0125 m,
-  // c0 = 20 sqrt(g H) = 44.3 m/s, a fixed step 8.5e-5 s = 0.15 h / c0, 2026-12-06, outputs 2, 3, 4 s): p_rms
-  // 0.0023, fitted gradient +0.156 to +0.164 % against rho0 g and +0.03 to +0.04 % against g times the
-  // mean density, max_drift 0.247, drift_creep 0.006. At c0 = 29.7 m/s (13 sqrt(g H)) the gradient
-  // was +0.31 %; at 59.4 m/s with a fixed step of 0.3 h / c0 the run blew up at 1.6 s.
+  // c0 = 20 sqrt(g H) = 44.3 m/s, the CFL step 0.15 h / c0, the gradient mass, 2026-12-06, outputs 2,
+  // 2.5, 3 s, 183 s on one thread): p_rms 0.0023, fitted gradient -0.037 to -0.044 % against rho0 g and
+  // -0.161 to -0.168 % against g times the mean density (the top row's -2.5 / N^2, N = 40), max_drift
+  // 0.244, drift_creep 0.0045. With the summation mass: +0.156 to +0.164 % and +0.03 to +0.04 %. At
+  // c0 = 29.7 m/s (13 sqrt(g H)) the gradient was +0.31 %; at 59.4 m/s with a fixed step of 0.3 h / c0
+  // the run blew up at 1.6 s.
   const auto s = run("hydrostatic.yaml", {"geometry.box=[2.0, 0.5]", "discretization.particles_across=160",
                                           "fluid.eos.sound_speed=44.3", "time.t_end=3", "output.times=[2, 2.5, 3]"});
   const auto& f = s["final_errors"];
@@ -116,7 +121,7 @@ TEST_CASE("hydrostatic: the shallow tank at 40 rows holds p_rms within 0.005 and
   CHECK(f["settled_outputs"].get<int>() == 3);
   CHECK(f["p_rms"].get<double>() < 0.005);
   CHECK(std::abs(f["gradient_rel_error"].get<double>()) < 0.002);
-  CHECK(std::abs(f["gradient_rel_error_eos"].get<double>()) < 0.001);
+  CHECK(std::abs(f["gradient_rel_error_eos"].get<double>()) < 0.0025);
   CHECK(f["max_drift"].get<double>() < 0.35);
   CHECK(f["drift_creep"].get<double>() < 0.02);
 }

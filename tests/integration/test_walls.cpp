@@ -30,12 +30,13 @@ std::string hydrostatic(const std::string& extra) {
 // and the run blows up at t = 1.68 s; with gravity reversed the water leaves the tank. Both fail here.
 TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse, 4 s)",
           "[integration][hydrostatic][ghost]") {
-  // The settings these walls were measured with (the shipped file now uses Wendland C2, continuity and
-  // c0 = 20 sqrt(g H)).
+  // The settings these walls were measured with (the shipped file now uses Wendland C2, continuity,
+  // the gradient mass and c0 = 20 sqrt(g H)).
   const auto s = run_in_process("hydrostatic.yaml", {"discretization.boundary=ghost", "discretization.wall_pressure=rest",
                                                      "discretization.kernel=cubic_spline",
                                                      "discretization.smoothing_ratio=1.3",
-                                                     "discretization.density=summation", "fluid.eos.clamp_negative=true",
+                                                     "discretization.density=summation", "discretization.particle_mass=summation",
+                                                     "fluid.eos.clamp_negative=true",
                                                      "discretization.particles_across=20", "time.dt=5e-4", "fluid.eos.sound_speed=29.7",
                                                      "time.t_end=4", "output.times=[2, 3, 4]"});
   const auto& f = s["final_errors"];
@@ -59,7 +60,8 @@ TEST_CASE("hydrostatic with repulsive virtual particles: stable, column stands (
   const auto s = run_in_process(
       "hydrostatic.yaml", {"discretization.boundary=virtual_repulsive", "discretization.wall_pressure=rest",
                            "discretization.repulsive.strength=8.8", "discretization.repulsive.r0=0.5",
-                           "discretization.density=continuity", "discretization.kernel=cubic_spline",
+                           "discretization.density=continuity", "discretization.particle_mass=summation",
+                           "discretization.kernel=cubic_spline",
                            "discretization.smoothing_ratio=1.3", "fluid.eos.clamp_negative=true",
                            "discretization.particles_across=20", "time.dt=5e-4", "fluid.eos.sound_speed=29.7",
                            "time.t_end=4", "output.times=[2, 3, 4]"});

@@ -84,3 +84,38 @@ TEST_CASE("config: nonsense boundary / EOS combinations are errors", "[config]")
   CHECK_THAT(set(base, {"geometry.box=[1, 1]"}), Contains("geometry.box: unknown key (allowed in geometry: channel_height"));
   CHECK_THAT(set(cavity, {"fluid.body_force_ramp=-1"}), Contains("fluid.body_force_ramp: -1 is out of range"));
 }
+
+TEST_CASE("config: discretization.particle_mass: summation by default, gradient with continuity density only", "[config]") {
+  std::string heavy = tank;  // the tank under gravity
+  heavy.replace(heavy.find("    sound_speed: 10\n"), 20, "    sound_speed: 10\n  body_force: [0, -9.81]\n");
+  const auto d = sphmol::load_config_string(heavy);
+  CHECK(d.discretization.particle_mass == "summation");
+  // The default is not written back (configs written before the key read the same).
+  CHECK(sphmol::to_yaml(d).find("particle_mass") == std::string::npos);
+  const auto c = sphmol::load_config_string(heavy, {"discretization.density=continuity", "discretization.particle_mass=gradient"});
+  CHECK(c.discretization.particle_mass == "gradient");
+  const auto back = sphmol::load_config_string(sphmol::to_yaml(c));
+  CHECK(back.discretization.particle_mass == "gradient");
+  CHECK(sphmol::to_yaml(back) == sphmol::to_yaml(c));
+  CHECK(set(heavy, {"discretization.density=continuity", "discretization.particle_mass=summation"}) == "<no error>");
+  // Summation density takes rho from the masses: the gradient mass would not give rho0. At its line.
+  std::string summed = heavy;
+  summed.replace(summed.find("  particles_across: 20\n"), 23, "  particles_across: 20\n  particle_mass: gradient\n");
+  CHECK(set(summed, {}) ==
+        "case.yaml:12: discretization.particle_mass: 'gradient' gives the lattice a summed density other than rho0; "
+        "needs discretization.density: continuity (got 'summation')");
+  CHECK_THAT(set(summed, {"discretization.density=normalised_summation"}),
+             Contains("discretization.particle_mass") && Contains("(got 'normalised_summation')"));
+  CHECK_THAT(set(heavy, {"discretization.density=continuity", "discretization.particle_mass=volume"}),
+             Contains("discretization.particle_mass: unknown value 'volume'") && Contains("allowed: summation, gradient"));
+  // Every lattice case takes it; the dam break (mass rho0 dx^2) and the shock tube set their own masses.
+  for (const std::string& yaml : {cavity, heavy, base})
+    CHECK(set(yaml, {"discretization.density=continuity", "discretization.particle_mass=gradient"}) == "<no error>");
+  const std::string shock = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube.yaml";
+  try {
+    (void)sphmol::load_config(shock, {"discretization.density=continuity", "discretization.particle_mass=gradient"});
+    FAIL("shock_tube accepted particle_mass: gradient");
+  } catch (const sphmol::ConfigError& e) {
+    CHECK_THAT(e.what(), Contains("discretization.particle_mass: is not applied by case 'shock_tube'"));
+  }
+}

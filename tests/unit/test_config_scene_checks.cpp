@@ -160,6 +160,7 @@ TEST_CASE("scene checks: every config the loader accepts builds (random search o
       {"fluid.eos.sound_speed=10", "fluid.eos.gamma=1.4"},
       {"discretization.boundary=wall_particles", "discretization.boundary=ghost", "discretization.boundary=virtual_repulsive"},
       {"discretization.density=summation", "discretization.density=normalised_summation", "discretization.density=continuity"},
+      {"discretization.particle_mass=gradient", "discretization.particle_mass=summation"},
       {"discretization.viscosity=morris", "discretization.viscosity=strain_rate", "discretization.viscosity=none"},
       {"discretization.pair_passes=fused", "discretization.pair_passes=stored", "discretization.pair_passes=auto"},
       {"discretization.wall_pressure=rest", "discretization.wall_pressure=extrapolated", "discretization.wall_pressure=dynamic"},

@@ -17,6 +17,7 @@
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/cases/scene/scene_settings.hpp"
 #include "sphmol/scenes/box_scene.hpp"
+#include "sphmol/scenes/lattice_mass.hpp"
 
 using namespace sphmol;
 using scene_test::config;
@@ -417,6 +418,20 @@ TEST_CASE("scene builder: a hexagonal fluid body has the hexagonal lattice's mas
   CHECK(ymin == Approx(0.5 * dx));
   // Summation density on the infinite lattice is rho0: the mass is close to rho0 times the cell area.
   CHECK(P.mass[0] == Approx(c.fluid.density * dx * row).epsilon(0.01));
+  CHECK(P.mass[0] == hexagonal_particle_mass(c.discretization.kernel, c.fluid.density, dx, c.discretization.smoothing_ratio * dx));
+  // With discretization.particle_mass: gradient the hexagonal body gets the hexagonal gradient mass
+  // (scenes/lattice_mass.hpp), the wall particles the cubic one.
+  {
+    Config g = c;
+    g.discretization.density = "continuity";
+    g.discretization.particle_mass = "gradient";
+    const auto sg = build_scene<2>(read(scene, 2), g);
+    const double h = g.discretization.smoothing_ratio * dx;
+    CHECK(sg.particles.mass[0] == hexagonal_gradient_mass(g.discretization.kernel, g.fluid.density, dx, h));
+    CHECK(sg.particles.mass[0] != P.mass[0]);
+    CHECK(sg.particles.mass.back() == lattice_gradient_mass<2>(g.discretization.kernel, g.fluid.density, dx, h));
+    CHECK(sg.particles.kind.back() == Kind::Wall);
+  }
   // Periodic along y, the staggered rows cannot continue across a length of 1.
   CHECK_THAT(error_of(R"yaml(scene:
   domain: {lo: [0, 0], hi: [1, 1], boundaries: [periodic, periodic]}

@@ -33,6 +33,7 @@ struct CaseModule {
   bool uses_fluid_density = true;      // false: the case's own states give the densities
   bool provides_energy = false;        // the scene sets an initial internal energy (discretization.energy)
   bool position_noise = false;         // the scene applies discretization.position_noise
+  bool lattice_mass = false;           // the scene's lattice masses follow discretization.particle_mass
   bool free_surface = false;           // the fluid has a free surface (no transport velocity there)
   // Case::velocity_scale reads the config alone (not the built scene), so the loader can derive
   // defaults from it before the scene exists: fluid.eos.sound_speed = 10 U, the shifting velocity.

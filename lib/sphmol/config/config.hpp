@@ -118,6 +118,10 @@ struct DiscretizationConfig {
   // density: continuity only: "mass" (Niedoba 2012, eq 2.61) or "volume" (rho_i sum_j m_j / rho_j ...,
   // Colagrossi & Landrini 2003), the weights of the continuity sum (physics/continuity_density.hpp).
   std::string continuity = "mass";
+  // Mass of the start lattice's particles (scenes/lattice_mass.hpp): "summation" (the lattice's summed
+  // density is rho0) or "gradient" (the symmetric pressure gradient of a linear field is exact on the
+  // lattice; continuity density only, where the mass sets the volumes m / rho but not rho).
+  std::string particle_mass = "summation";
   std::string momentum = "symmetric_117";          // symmetric_117 (Vukčević 2012, eq 117) | symmetric_116 (Vukčević 2012, eq 116)
   std::string viscosity = "morris";              // morris (Morris et al. 1997) | strain_rate (Vukčević 2012, eqs 117/122) | none (inviscid)
   // Morris viscosity only: "none", or "moment" (each row divided by its discrete second moment, which

@@ -330,7 +330,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure",
                                 "wall_density_floor_width", "repulsive",
                                 "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting", "position_correction",
-                                "position_noise", "density_diffusion", "continuity"});
+                                "position_noise", "density_diffusion", "continuity", "particle_mass"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -528,6 +528,15 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.continuity != "mass" && d.density != "continuity")
       disc.fail("continuity", "'" + d.continuity + "' weights the continuity density; needs discretization.density: "
                               "continuity (got '" + d.density + "')");
+    if (const auto v = disc.string("particle_mass")) {
+      d.particle_mass = disc.choice("particle_mass", *v, {"summation", "gradient"});
+      if (d.particle_mass != "summation" && !module.lattice_mass)
+        disc.fail("particle_mass", "is not applied by case '" + c.case_name + "' (its scene sets its own particle masses)");
+      // Summation density takes rho from the masses: only the summation mass gives rho0 on the lattice.
+      if (d.particle_mass == "gradient" && d.density != "continuity")
+        disc.fail("particle_mass", "'gradient' gives the lattice a summed density other than rho0; needs "
+                                   "discretization.density: continuity (got '" + d.density + "')");
+    }
     if (d.continuity != "mass" && d.wall_pressure == "dynamic")
       disc.fail("continuity", "'" + d.continuity + "' is for the fluid's density; dynamic wall particles (wall_pressure: "
                               "dynamic) evolve theirs by the mass-weighted sum: use continuity: mass");

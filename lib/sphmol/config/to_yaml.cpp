@@ -109,6 +109,7 @@ std::string to_yaml(const Config& c) {
     << "  smoothing_length: " << d.smoothing_length << "\n";
   if (d.density_diffusion > 0) y << "  density_diffusion: " << num(d.density_diffusion) << "\n";
   if (d.continuity != "mass") y << "  continuity: " << d.continuity << "\n";
+  if (d.particle_mass != "summation") y << "  particle_mass: " << d.particle_mass << "\n";
   y << "time:\n"
     << "  t_end: " << num(t.t_end) << "\n"
     << "  integrator: " << t.integrator << "\n"

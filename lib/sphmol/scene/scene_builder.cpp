@@ -25,22 +25,6 @@ using scene_messages::fail;
 using scene_messages::kAxisName;
 using scene_messages::num;
 
-// The hexagonal counterpart of lattice_particle_mass: rho0 over the kernel sum of the 2D hexagonal
-// lattice (rows dx sqrt(3)/2 apart, every other row shifted by dx/2), so that summation density gives
-// rho0 inside the body.
-double hexagonal_particle_mass(std::string_view kernel, double rho0, double dx, double h) {
-  const auto K = kernel_info<2>(kernel);
-  const double row = dx * std::sqrt(3.0) / 2.0;
-  const int m = static_cast<int>(std::ceil(K.support * h / row)) + 1;
-  double sum = 0.0;
-  for (int j = -m; j <= m; ++j)
-    for (int i = -m - 1; i <= m + 1; ++i) {
-      const double x = (i + ((j & 1) ? 0.5 : 0.0)) * dx, y = j * row;
-      sum += K.W(std::sqrt(x * x + y * y), h);
-    }
-  return rho0 / sum;
-}
-
 template <int D>
 std::array<double, 3> padded(const geometry::Vec<D>& p) {
   std::array<double, 3> x{};
@@ -200,7 +184,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   const int default_layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support / dx));
   out.wall_layers = default_layers;
   const double rho0 = config.fluid.density;
-  const double m_cubic = lattice_particle_mass<D>(disc.kernel, rho0, dx, h);
+  const double m_cubic = lattice_mass<D>(disc.particle_mass, disc.kernel, rho0, dx, h);
   const bool ghost = disc.boundary == "ghost";
   if (disc.boundary != "wall_particles" && !ghost)
     fail(spec.where, "the scene builds its walls from wall particles or ghost mirrors; discretization.boundary: " +
@@ -274,7 +258,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
                                     num(lat.row_spacing()) + " m apart) across the domain; its length " +
                                     num(box.hi[1] - box.lo[1]) + " m holds " + num(rows));
       }
-      if constexpr (D == 2) m = hexagonal_particle_mass(disc.kernel, rho0, dx, h);
+      if constexpr (D == 2) m = hexagonal_lattice_mass(disc.particle_mass, disc.kernel, rho0, dx, h);
     }
     std::vector<Vec<D>> pts;
     std::size_t filled = 0;

@@ -33,7 +33,7 @@ BoxSceneOf<D> build_box_scene(const Config& config, const std::array<double, D>&
   const double support = kernel_info<D>(disc.kernel).support * h;
   const int layers = disc.wall_layers > 0 ? disc.wall_layers : static_cast<int>(std::ceil(support / dx));
   const double rho0 = config.fluid.density;
-  const double m = lattice_particle_mass<D>(disc.kernel, rho0, dx, h);
+  const double m = lattice_mass<D>(disc.particle_mass, disc.kernel, rho0, dx, h);
 
   BoxSceneOf<D> s;
   s.spacing = dx;

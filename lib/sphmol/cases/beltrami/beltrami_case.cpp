@@ -44,7 +44,7 @@ std::unique_ptr<SphSystem<3>> BeltramiCase::build(const Config& config) {
   spacing_ = dx;
   const double h = disc.smoothing_ratio * dx;
   const double rho0 = config.fluid.density;
-  const double m = lattice_particle_mass<3>(disc.kernel, rho0, dx, h);
+  const double m = lattice_mass<3>(disc.particle_mass, disc.kernel, rho0, dx, h);
   geometry::Lattice<3> lattice;
   lattice.spacing = dx;
   Particles<3> P;

@@ -54,6 +54,7 @@ CaseModule beltrami_module() {
   m.description = "decaying Arnold-Beltrami-Childress (Beltrami) flow in a periodic cube against the exact solution";
   m.dimensions = {3};
   m.sections = {"geometry"};
+  m.lattice_mass = true;
   m.read = read_beltrami;
   m.make3 = [] { return std::make_unique<BeltramiCase>(); };
   return m;

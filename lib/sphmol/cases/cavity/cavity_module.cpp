@@ -42,6 +42,7 @@ CaseModule cavity_module() {
   m.dimensions = {2};
   m.sections = {"geometry"};
   m.position_noise = true;
+  m.lattice_mass = true;
   m.read = read_cavity;
   m.make2 = [] { return std::make_unique<CavityCase>(); };
   return m;

@@ -62,6 +62,7 @@ CaseModule channel_module(bool couette) {
                           : "body-force-driven plane Poiseuille start-up flow against its exact series";
   m.dimensions = {2};
   m.sections = {"geometry"};
+  m.lattice_mass = true;
   m.read = [couette](CaseReaders& r, const Config& c) { return read_channel(r, c, couette); };
   m.velocity_scale_from_config = true;  // the wall speed (Couette) or the Poiseuille centre speed
   m.make2 = [] { return std::make_unique<ChannelCase>(); };

@@ -39,7 +39,7 @@ ChannelScene build_channel_scene(const Config& config) {
   s.domain.hi = {nx * dx, l + layers * dx};
   s.domain.periodic = {true, false};
   const double rho0 = config.fluid.density;
-  const double m = lattice_particle_mass<2>(disc.kernel, rho0, dx, h);
+  const double m = lattice_mass<2>(disc.particle_mass, disc.kernel, rho0, dx, h);
   geometry::Lattice<2> lattice;  // cell centres (i + 1/2) dx from the origin
   lattice.spacing = dx;
   for (const auto& x : geometry::fill<2>(geometry::BoxShape<2>({0.0, 0.0}, {nx * dx, l}), lattice))

@@ -54,7 +54,7 @@ std::unique_ptr<SphSystem<3>> DuctCase::build(const Config& config) {
   lattice.spacing = dx;
   lattice.origin = lo;
   const double rho0 = config.fluid.density;
-  const double m = lattice_particle_mass<3>(disc.kernel, rho0, dx, h);
+  const double m = lattice_mass<3>(disc.particle_mass, disc.kernel, rho0, dx, h);
   Particles<3> P;
   lattice.for_each_in(geometry::Bounds<3>{lo, hi}, [&](const geometry::Vec<3>& p) {
     P.add(Kind::Fluid, {p[0], p[1], p[2]}, {0.0, 0.0, 0.0}, m, rho0);

@@ -55,6 +55,7 @@ CaseModule duct_module() {
   m.description = "body-force-driven start-up flow in a rectangular duct against its exact Fourier series";
   m.dimensions = {3};
   m.sections = {"geometry"};
+  m.lattice_mass = true;
   m.read = read_duct;
   m.make3 = [] { return std::make_unique<DuctCase>(); };
   return m;

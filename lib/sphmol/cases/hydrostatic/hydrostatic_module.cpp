@@ -57,6 +57,7 @@ CaseModule hydrostatic_module() {
   m.dimensions = {2, 3};
   m.sections = {"geometry"};
   m.position_noise = true;
+  m.lattice_mass = true;
   m.free_surface = true;
   m.read = read_hydrostatic;
   m.make2 = [] { return std::make_unique<HydrostaticCase<2>>(); };

@@ -62,6 +62,7 @@ CaseModule scene_module() {
   m.dimensions = {2, 3};
   m.sections = {"scene"};
   m.position_noise = true;
+  m.lattice_mass = true;
   m.read = read_scene_case;
   m.make2 = [] { return std::make_unique<SceneCase<2>>(); };
   m.make3 = [] { return std::make_unique<SceneCase<3>>(); };

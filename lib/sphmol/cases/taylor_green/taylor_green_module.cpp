@@ -40,6 +40,7 @@ CaseModule taylor_green_module() {
   m.dimensions = {2};
   m.sections = {"geometry"};
   m.position_noise = true;
+  m.lattice_mass = true;
   m.velocity_scale_from_config = true;  // U = geometry.velocity_amplitude
   m.read = read_taylor_green;
   m.make2 = [] { return std::make_unique<TaylorGreenCase>(); };
