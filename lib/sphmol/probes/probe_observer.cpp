@@ -268,18 +268,33 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
     } else if (c.type == "height_gauge") {
       values.push_back(free_surface_height<D>(fluid, gauge_line(s), s.bottom, s.top, 0.25 * h_));
     } else {
-      // Every particle where the RHS sees it: the fluid from the state, the walls at time t.
-      std::array<std::vector<double>, D> xa, va;
+      // Every particle as the RHS sees it: the fluid from the state, the walls at time t (position,
+      // velocity and normal: a wall that follows a motion carries its velocity at t, not its
+      // t = 0 one in P.v; a turning wall's normal has turned), by the rule of the solver's own
+      // evaluation (rhs/sph_system.cpp: Particles::wall_state with each motion's frame at t) and of
+      // the sample over ranks (sample_pieces), which must agree with this one to the bit.
+      std::array<std::vector<double>, D> xa, va, na;
       WallForceState<D> st;
       for (int d = 0; d < D; ++d) {
         xa[d].resize(P.size());
         va[d].resize(P.size());
-        for (std::size_t i = 0; i < P.size(); ++i) {
-          xa[d][i] = i < nf ? xf[d][i] : P.wall_position(d, i, t);
-          va[d][i] = i < nf ? vf[d][i] : P.v[d][i];
+        na[d].assign(P.size(), 0.0);
+        for (std::size_t i = 0; i < nf; ++i) {
+          xa[d][i] = xf[d][i];
+          va[d][i] = vf[d][i];
         }
         st.x[d] = xa[d].data();
         st.v[d] = va[d].data();
+        st.n[d] = na[d].data();
+      }
+      const auto frames = P.motion_frames(t);
+      for (std::size_t i = nf; i < P.size(); ++i) {
+        const auto w = P.wall_state(i, frames, t);
+        for (int d = 0; d < D; ++d) {
+          xa[d][i] = w.x[d];
+          va[d][i] = w.v[d];
+          na[d][i] = w.n[d];
+        }
       }
       st.rho = rho.data();
       st.p = p.data();
@@ -406,8 +421,13 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
       T.stride = D;
       const BodyWalls<D>& B = walls_[s.walls];
       const Particles<D>& PW = B.walls;
-      const WallBodyBins<D> walls(PW, c.body_index, [&](int d, std::size_t j) { return PW.wall_position(d, j, t); },
-                                  support_ * h_, whole.domain());
+      // The walls' positions, velocities and normals at t by the serial sample's rule (the copy
+      // holds the scene's motion table and each wall's motion index).
+      const auto frames = PW.motion_frames(t);
+      std::vector<typename Particles<D>::WallState> at_t(PW.size());
+      for (std::size_t j = 0; j < PW.size(); ++j) at_t[j] = PW.wall_state(j, frames, t);
+      const WallBodyBins<D> walls(PW, c.body_index, [&](int d, std::size_t j) { return at_t[j].x[d]; }, support_ * h_,
+                                  whole.domain());
       const auto end = [&](std::size_t row) {
         WallPairEnd<D> e;
         e.rho = rho[row];
@@ -437,7 +457,10 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
             return;
           }
           WallPairEnd<D> b = end(static_cast<std::size_t>(at - piece.row_ids.begin()));
-          for (int d = 0; d < D; ++d) b.v[d] = PW.v[d][w];
+          for (int d = 0; d < D; ++d) {
+            b.v[d] = at_t[w].v[d];
+            b.n[d] = at_t[w].n[d];
+          }
           const std::array<double, D> f = wall_pair_force<D>(LP, row_i, PW, w, a, b, r, dx, dWdr_, h_, model_);
           T.keys.push_back({i, number, 0});
           T.values.insert(T.values.end(), f.begin(), f.end());

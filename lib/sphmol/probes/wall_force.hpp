@@ -36,27 +36,33 @@ struct WallForceModel {
 };
 
 // The current state, all particles in Particles order (fluid [0, n_fluid), walls after): positions
-// (the fluid's; the walls' are where the solver puts them at t), velocities, densities, pressures
-// and sound speeds.
+// and velocities (the fluid's; the walls' as the solver's terms read them at t: for a wall that
+// follows a motion its Particles::wall_state at t, not Particles::v, which holds its velocity at
+// t = 0), the walls' normals at t (read only with the Morris wall velocity; null: the as-built
+// Particles::wall_normal, right when no wall turns), densities, pressures and sound speeds.
 template <int D>
 struct WallForceState {
   std::array<const double*, D> x{}, v{};
+  std::array<const double*, D> n{};
   const double* rho = nullptr;
   const double* p = nullptr;
   const double* c = nullptr;  // read only with artificial viscosity
 };
 
-// One fluid particle or wall particle of a pair as the force sums read it.
+// One fluid particle or wall particle of a pair as the force sums read it: v its velocity and, of
+// the wall particle, n its normal, both at the sampling time (Particles::wall_state), as the solver
+// reads them (rhs/sph_system.cpp: the wall velocities and turned normals of each evaluation).
 template <int D>
 struct WallPairEnd {
-  std::array<double, D> v{};
+  std::array<double, D> v{}, n{};
   double rho = 0.0, p = 0.0, c = 0.0;
 };
 
 // The body's part of one pair, -m_i a_ij (per axis; its sum over the pairs is the force): fluid
 // particle i, its index in Pf (its mass and viscosity), and wall particle j, its index in Pw (its
-// mass, normal, depth and body), at distance r > 0 with dx = x_i - x_j. Serially both are the whole
-// scene's particles; over ranks Pf is a rank's own system and Pw the body's walls (BodyWalls).
+// mass, depth and body; its normal at t is b.n), at distance r > 0 with dx = x_i - x_j. Serially
+// both are the whole scene's particles; over ranks Pf is a rank's own system and Pw the body's
+// walls (BodyWalls).
 template <int D>
 std::array<double, D> wall_pair_force(const Particles<D>& Pf, std::size_t i, const Particles<D>& Pw, std::size_t j,
                                       const WallPairEnd<D>& a, const WallPairEnd<D>& b, double r,
@@ -76,7 +82,7 @@ std::array<double, D> wall_pair_force(const Particles<D>& Pf, std::size_t i, con
     double beta = Pw.free_slip(j) ? 0.0 : 1.0;  // boundary/free_slip_walls.hpp
     if (model.morris_wall_velocity && beta > 0.0) {
       double dA = -Pw.wall_depth[j];
-      for (int d = 0; d < D; ++d) dA += Pw.wall_normal[d][j] * dx[d];
+      for (int d = 0; d < D; ++d) dA += b.n[d] * dx[d];
       beta = dA > 0.0 ? std::min(model.beta_max, 1.0 + Pw.wall_depth[j] / dA) : model.beta_max;
     }
     // A wall pair takes the fluid particle's mu (physics/morris_viscosity.hpp).
@@ -179,7 +185,10 @@ std::array<double, D> wall_body_force(const Particles<D>& P, const WallForceStat
   const WallBodyBins<D> bins(P, body, [&](int d, std::size_t j) { return s.x[d][j]; }, support * h, domain);
   const auto end = [&](std::size_t k) {
     WallPairEnd<D> e;
-    for (int d = 0; d < D; ++d) e.v[d] = s.v[d][k];
+    for (int d = 0; d < D; ++d) {
+      e.v[d] = s.v[d][k];
+      e.n[d] = s.n[d] ? s.n[d][k] : P.wall_normal[d][k];
+    }
     e.rho = s.rho[k];
     e.p = s.p[k];
     e.c = model.artificial_viscosity ? s.c[k] : 0.0;
