@@ -410,8 +410,10 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   }
   const double wall = wall_now();
   const IntegratorStats st = integrator->stats();
-  // The scene's counts (over ranks the particles are released on every rank but the root).
-  const std::size_t n_fluid = sys->layout().n, n_wall = sys->base_particles() - n_fluid;
+  // The scene's counts (over ranks the particles are released on every rank but the root); the
+  // walls include the ghost images of the last evaluation (serially; the whole system of a run over
+  // ranks is never evaluated).
+  const std::size_t n_fluid = sys->layout().n, n_wall = sys->base_particles() + sys->generated_particles() - n_fluid;
 
   nlohmann::json j;
   j["case"] = config.case_name;
