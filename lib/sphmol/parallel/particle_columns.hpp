@@ -28,6 +28,15 @@ void for_each_particle_column(P& p, F&& f) {
   f(p.motion);
 }
 
+// The per-body tables of `from` into `to` (what every subset of a scene keeps whole).
+template <int D>
+void copy_body_tables(Particles<D>& to, const Particles<D>& from) {
+  to.free_slip_body = from.free_slip_body;
+  to.body_treatment = from.body_treatment;
+  to.body_repulsion = from.body_repulsion;
+  to.motions = from.motions;
+}
+
 // A member added to Particles must be added above (or, if it is per body, named here): every
 // std::vector has the same size, so the struct's size counts them. 4 D-arrays and 9 arrays per
 // particle, 4 tables per body, and n_fluid.

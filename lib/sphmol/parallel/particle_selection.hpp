@@ -12,14 +12,20 @@
 namespace sphmol::parallel {
 
 // The particles from[index[k]], in that order; the first n_fluid of them must be the fluid ones.
-template <int D>
-Particles<D> select_particles(const Particles<D>& from, const std::vector<std::uint32_t>& index, std::size_t n_fluid) {
-  Particles<D> to = from;  // the per-body tables; every column is replaced below
+// Column by column from `from`, without a copy of the whole set (a rank takes its share of the
+// whole scene with this).
+template <int D, class Index>
+Particles<D> select_particles(const Particles<D>& from, const std::vector<Index>& index, std::size_t n_fluid) {
+  Particles<D> to;
+  copy_body_tables(to, from);
+  std::vector<const void*> cols;
+  for_each_particle_column(from, [&](const auto& c) { cols.push_back(&c); });
+  std::size_t k = 0;
   for_each_particle_column(to, [&](auto& c) {
-    if (c.empty()) return;  // an optional array nobody fills
-    std::remove_reference_t<decltype(c)> s(index.size());
-    for (std::size_t k = 0; k < index.size(); ++k) s[k] = c[index[k]];
-    c.swap(s);
+    const auto& f = *static_cast<const std::remove_reference_t<decltype(c)>*>(cols[k++]);
+    if (f.empty()) return;  // an optional array nobody fills
+    c.resize(index.size());
+    for (std::size_t j = 0; j < index.size(); ++j) c[j] = f[index[j]];
   });
   to.n_fluid = n_fluid;
   return to;

@@ -20,6 +20,7 @@
 
 #include "sphmol/core/domain.hpp"
 #include "sphmol/core/particles.hpp"
+#include "sphmol/parallel/particle_selection.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/probes/point_bins.hpp"
 
@@ -113,36 +114,7 @@ BodyWalls<D> body_walls(const Particles<D>& P, int body) {
   // `body`, and its images belong to no body.
   for (std::size_t j = P.n_fluid; j < P.body.size(); ++j)
     if (P.body[j] == body) B.ids.push_back(j);
-  // 4 D-arrays and 9 arrays per particle, 4 tables per body, and n_fluid (as
-  // parallel/particle_columns.hpp counts them): a member added to Particles is copied below.
-  static_assert(sizeof(Particles<D>) == sizeof(std::size_t) + (4 * D + 9 + 4) * sizeof(std::vector<double>),
-                "Particles gained or lost a member: update body_walls");
-  Particles<D>& W = B.walls;
-  const auto take = [&](auto& to, const auto& from) {
-    if (from.empty()) return;  // an optional array nobody fills (rest_density, viscosity)
-    to.resize(B.ids.size());
-    for (std::size_t k = 0; k < B.ids.size(); ++k) to[k] = from[B.ids[k]];
-  };
-  for (int d = 0; d < D; ++d) {
-    take(W.x[d], P.x[d]);
-    take(W.v[d], P.v[d]);
-    take(W.x_ref[d], P.x_ref[d]);
-    take(W.wall_normal[d], P.wall_normal[d]);
-  }
-  take(W.mass, P.mass);
-  take(W.rho, P.rho);
-  take(W.kind, P.kind);
-  take(W.wall_depth, P.wall_depth);
-  take(W.stationary, P.stationary);
-  take(W.body, P.body);
-  take(W.rest_density, P.rest_density);
-  take(W.viscosity, P.viscosity);
-  take(W.motion, P.motion);
-  W.free_slip_body = P.free_slip_body;
-  W.body_treatment = P.body_treatment;
-  W.body_repulsion = P.body_repulsion;
-  W.motions = P.motions;
-  W.n_fluid = 0;
+  B.walls = parallel::select_particles(P, B.ids, 0);  // every per-particle array; n_fluid = 0
   return B;
 }
 
