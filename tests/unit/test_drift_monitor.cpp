@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "sphmol/analysis/drift_monitor.hpp"
@@ -105,7 +106,10 @@ TEST_CASE("drift monitor: a rank's rows, its own only, by serial index", "[analy
     const bool own = k % 3 != 0;
     rows.id.push_back(k);
     rows.owned.push_back(own ? 1 : 0);
-    for (int d = 0; d < 2; ++d) x[d].push_back(s.moved[d][k]);
+    for (int d = 0; d < 2; ++d) {
+      x[d].push_back(s.moved[d][k]);
+      rows.start.push_back(s.initial.x[d][k]);
+    }
     if (own) {
       const double dx = s.domain.min_image(0, s.moved[0][k] - s.initial.x[0][k]), dy = s.moved[1][k] - s.initial.x[1][k];
       mine = std::max(mine, std::hypot(dx, dy));
@@ -115,4 +119,26 @@ TEST_CASE("drift monitor: a rank's rows, its own only, by serial index", "[analy
   x[1][0] += 10.0;
   REQUIRE(rows.owned[0] == 0);
   CHECK(drift(s, x, kFluid, nullptr, rows) == mine);
+
+  SECTION("the rows' starts, not the whole scene's, once the rank has dropped the scene") {
+    auto max = std::make_shared<double>(0.0);
+    DriftMonitor<2> monitor(s.initial, max);
+    REQUIRE(monitor.starts_held() == 2 * kFluid);
+    const auto whole = monitor.watch(WatchedRows{});
+    monitor.release_whole();
+    CHECK(monitor.starts_held() == 0);
+    const auto term = monitor.watch(rows);
+    Workspace<2> w;
+    w.n = w.n_fluid = kFluid;
+    w.domain = &s.domain;
+    w.x = x;
+    term->apply(w);
+    CHECK(*max == mine);
+  }
+  SECTION("a local system's rows without their starts are refused") {
+    WatchedRows bare = rows;
+    bare.start.clear();
+    DriftMonitor<2> monitor(s.initial, std::make_shared<double>(0.0));
+    CHECK_THROWS_AS(monitor.watch(bare), std::invalid_argument);
+  }
 }

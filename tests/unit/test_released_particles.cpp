@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/analysis/drift_monitor.hpp"
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/config/config.hpp"
 
@@ -47,4 +48,17 @@ TEST_CASE("release_particles is refused on an evaluated system", "[sph_system][r
   std::vector<double> y = sys->initial_state(), f(y.size());
   sys->rhs(0.0, y.data(), f.data());
   CHECK_THROWS_AS(sys->release_particles(), std::logic_error);
+}
+
+TEST_CASE("release_particles drops the monitors' per-particle data of the whole scene", "[sph_system][release][monitors]") {
+  // The hydrostatic case's drift monitor keeps every fluid particle's start for the scene's own
+  // system; a rank that drops the scene drops those too (its local systems' rows carry theirs).
+  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/hydrostatic.yaml", {"discretization.particles_across=10"});
+  auto sys = make_case<2>(c)->build(c);
+  REQUIRE(sys->monitors().size() == 1);
+  const auto* drift = dynamic_cast<const DriftMonitor<2>*>(sys->monitors()[0].get());
+  REQUIRE(drift != nullptr);
+  CHECK(drift->starts_held() == 2 * sys->layout().n);
+  sys->release_particles();
+  CHECK(drift->starts_held() == 0);
 }

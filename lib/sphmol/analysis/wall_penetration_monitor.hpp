@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "sphmol/rhs/monitor.hpp"
@@ -20,25 +21,24 @@
 namespace sphmol {
 
 struct WallPenetration {
-  std::vector<std::uint8_t> crossed;  // per fluid particle (serial index), 1 once it has passed a wall
-  long count = 0;                     // particles that ever passed a wall
+  // The fluid particles (serial indices) that have passed a wall: a set, not a flag per particle, so
+  // that no rank holds an array over the whole scene for it (in a sound run it stays empty).
+  std::set<std::uint64_t> crossed;
+  long count = 0;                     // particles that ever passed a wall (crossed.size())
   double min_gap = std::numeric_limits<double>::infinity();  // [m], over particles inside the tank
 };
 
 class WallPenetrationMonitor final : public Monitor<2> {
  public:
-  // n_fluid: the scene's fluid particles.
-  WallPenetrationMonitor(double Lx, double Ly, std::size_t n_fluid, std::shared_ptr<WallPenetration> state)
-      : Lx_(Lx), Ly_(Ly), s_(std::move(state)) {
-    s_->crossed.assign(n_fluid, 0);
+  WallPenetrationMonitor(double Lx, double Ly, std::shared_ptr<WallPenetration> state) : Lx_(Lx), Ly_(Ly), s_(std::move(state)) {
+    s_->crossed.clear();
+    s_->count = 0;
   }
   std::unique_ptr<Term<2>> watch(const WatchedRows& rows) override { return std::make_unique<Watch>(Lx_, Ly_, s_, rows); }
   void combine(const RankReduction& ranks) override {
-    std::vector<std::uint64_t> mine;
-    for (std::size_t k = 0; k < s_->crossed.size(); ++k)
-      if (s_->crossed[k]) mine.push_back(k);
-    for (const std::uint64_t k : ranks.all_gather(mine)) s_->crossed[k] = 1;
-    s_->count = static_cast<long>(std::count(s_->crossed.begin(), s_->crossed.end(), std::uint8_t{1}));
+    const std::vector<std::uint64_t> mine(s_->crossed.begin(), s_->crossed.end());
+    for (const std::uint64_t k : ranks.all_gather(mine)) s_->crossed.insert(k);
+    s_->count = static_cast<long>(s_->crossed.size());
     s_->min_gap = ranks.min(s_->min_gap);
   }
 
@@ -55,13 +55,12 @@ class WallPenetrationMonitor final : public Monitor<2> {
       auto& s = *s_;
       const long n = static_cast<long>(w.n_fluid);
       const double *const xs = w.x[0].data(), *const ys = w.x[1].data();
-      std::uint8_t* const crossed = s.crossed.data();
       // Every evaluation: each thread one range of the particles, its count and minimum combined after
       // it. A count and a minimum do not depend on the thread count or the order of combining, so the
       // range's gap is a simd loop, written without branches, which also notes whether any particle is
       // out; only then does a second loop over the range flag and count them (in a sound run, never).
       double gap = std::numeric_limits<double>::infinity();
-      long count = 0;
+      std::vector<std::uint64_t> out_now;  // this range's particles outside the tank now
       const long threads = omp_get_num_threads(), t = omp_get_thread_num();
       const long lo = n * t / threads, hi = n * (t + 1) / threads;
       std::int64_t any_out = 0;
@@ -77,15 +76,13 @@ class WallPenetrationMonitor final : public Monitor<2> {
           const bool out = y < 0.0 || (y < Ly_ && (x < 0.0 || x > Lx_));
           // Flags by serial index, which a reordered workspace or a rank's local rows are not.
           const std::size_t k = id ? id[i] : w.order ? w.order[i] : static_cast<std::size_t>(i);
-          if (out && !crossed[k]) {
-            crossed[k] = 1;
-            ++count;
-          }
+          if (out) out_now.push_back(k);
         }
       }
 #pragma omp critical(sphmol_wall_penetration_monitor)
       {
-        s.count += count;
+        s.crossed.insert(out_now.begin(), out_now.end());
+        s.count = static_cast<long>(s.crossed.size());
         s.min_gap = std::min(s.min_gap, gap);
       }
 #pragma omp barrier

@@ -433,9 +433,13 @@ void DistributedSystem<D>::plan() {
     WatchedRows rows;
     rows.id.resize(nf_local_);
     rows.owned.resize(nf_local_);
+    rows.start.resize(D * nf_local_);
     for (std::size_t k = 0; k < nf_local_; ++k) {
       rows.id[k] = gid_of(order[k]);
       rows.owned[k] = order[k] < no ? 1 : 0;
+      // The particles' positions as the scene built them (owned_.x, moved with them; the state
+      // holds where they are now).
+      for (int d = 0; d < D; ++d) rows.start[D * k + static_cast<std::size_t>(d)] = all.x[d][order[k]];
     }
     rows.watching = watching_;
     for (const auto& m : monitors_) local_->append_term(m->watch(rows));

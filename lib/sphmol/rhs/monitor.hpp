@@ -26,6 +26,10 @@ struct WatchedRows {
   // whose rows are the serial indices (through Workspace::order when reordered), all watched.
   std::vector<std::uint64_t> id;
   std::vector<std::uint8_t> owned;
+  // A rank's local system: per fluid row, its particle's position as the scene was built (D values a
+  // row, row after row), which travels with the particle between ranks; so a monitor that compares
+  // with the start keeps no copy of the whole scene's starts on a rank that dropped the scene.
+  std::vector<double> start;
   // When set and false, the term watches nothing: evaluations that are not the run's own (an
   // integrator starting again on a rank's new share evaluates a state the serial run never does).
   std::shared_ptr<const bool> watching;
@@ -42,6 +46,10 @@ class Monitor {
   virtual std::unique_ptr<Term<D>> watch(const WatchedRows& rows) = 0;
   // Collective over the ranks: every rank's results merged, on every rank.
   virtual void combine(const RankReduction& ranks) = 0;
+  // The scene's own system dropped its particles (SphSystem::release_particles, on the ranks other
+  // than 0 of a run over ranks): drop what the monitor keeps per particle of the whole scene. Its
+  // terms for local systems read what they need from WatchedRows.
+  virtual void release_whole() {}
 };
 
 }  // namespace sphmol

@@ -622,6 +622,9 @@ void SphSystem<D>::release_particles() {
   drop(ws_.rho);
   drop(ws_.p);
   drop(ws_.c);
+  // What the case's monitors keep per particle of the whole scene (their local systems' terms read
+  // it from the rows they watch).
+  for (const auto& m : monitors_) m->release_whole();
   released_ = true;
 }
 

@@ -199,7 +199,8 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // run's set-up has read it (their own particles live in their local systems, parallel/
   // distributed_system.hpp), so that no rank but the one writing the files holds the whole scene.
   // What stays: the layout, the domain, the counts (layout().n fluid, base_particles() in all), the
-  // terms' names and passes, the pair list's radius, the monitors and the generator. particles(),
+  // terms' names and passes, the pair list's radius, the monitors (without their per-particle data
+  // of the whole scene, Monitor::release_whole) and the generator. particles(),
   // is_retired() and any evaluation are errors afterwards; retire() only records the indices.
   void release_particles();
   bool particles_released() const { return released_; }

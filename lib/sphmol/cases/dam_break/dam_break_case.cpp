@@ -30,7 +30,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   mass0_ = fixed_point_total(s.particles.mass.data(), n_fluid0_);
   csv_ = "t [s],T [-],x_front [m],x_ritter [m],x_mm [m],x_ko [m]\n";
   auto sys = assemble_system<2>(config, std::move(s.particles), s.domain, s.spacing);
-  sys->add_monitor(std::make_shared<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], n_fluid0_, penetration_));
+  sys->add_monitor(std::make_shared<WallPenetrationMonitor>(Lx_, config.settings<DamBreakSettings>().box[1], penetration_));
   return sys;
 }
 
