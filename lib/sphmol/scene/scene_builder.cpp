@@ -170,7 +170,7 @@ WallMotion<D> wall_motion(const WallMotionSpec& spec) {
 }  // namespace
 
 template <int D>
-BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
+BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShare share) {
   using namespace geometry;
   if (spec.dimension != D) throw std::logic_error("build_scene: the spec is for another dimension");
   const auto& disc = config.discretization;
@@ -223,46 +223,66 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     max_thickness = std::max(max_thickness, layers * dx);
   }
 
-  // Fluid bodies.
+  // The particles are made in two passes over the fluid bodies' lattices, and every value of every
+  // particle is computed on every build (so that any build refuses what the whole scene's would,
+  // and its whole-scene sums are the serial ones to the bit), but only the share's particles are
+  // kept: the global indices [first, first + kept) of the whole scene's order (fluid bodies in
+  // order, then the domain walls, then the wall bodies in order). The first pass counts each fluid
+  // body's points and finds its highest; the walls are listed next (their lists are the surface's
+  // size); the second pass places everything.
   const double tol = 1e-9 * dx;
-  std::vector<ShapePtr<D>> fluid_shapes;
-  struct Fill {
-    std::vector<Vec<D>> pts;
+  struct FluidBody {
+    ShapePtr<D> shape;
+    Bounds<D> b;
+    Lattice<D> lat;
     double mass, rho0, step;  // step: the lattice's spacing along y (its row spacing)
+    std::size_t count = 0;
+    Vec<D> highest{};         // the first of its points highest against the body force
   };
-  std::vector<Fill> fills;
+  std::vector<FluidBody> fluid;
   for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
     const auto& f = spec.fluid[k];
-    ShapePtr<D> s = make_shape<D>(f.shape);
-    Bounds<D> b = s->bounds();
+    FluidBody B;
+    B.shape = make_shape<D>(f.shape);
+    B.b = B.shape->bounds();
     for (int d = 0; d < D; ++d) {
       // Finite extents must lie in the domain; unbounded ones (half-spaces) are cut to it.
       const double L = box.hi[d] - box.lo[d];
-      if ((std::isfinite(b.lo[d]) && b.lo[d] < box.lo[d] - 1e-9 * L) || (std::isfinite(b.hi[d]) && b.hi[d] > box.hi[d] + 1e-9 * L))
+      if ((std::isfinite(B.b.lo[d]) && B.b.lo[d] < box.lo[d] - 1e-9 * L) || (std::isfinite(B.b.hi[d]) && B.b.hi[d] > box.hi[d] + 1e-9 * L))
         fail(f.where, std::string("the fluid body extends outside the domain along ") + kAxisName[d] + " (" +
-                          num(b.lo[d]) + " to " + num(b.hi[d]) + " m; domain " + num(box.lo[d]) + " to " + num(box.hi[d]) + " m)");
-      b.lo[d] = std::max(b.lo[d], box.lo[d]);
-      b.hi[d] = std::min(b.hi[d], box.hi[d]);
+                          num(B.b.lo[d]) + " to " + num(B.b.hi[d]) + " m; domain " + num(box.lo[d]) + " to " + num(box.hi[d]) + " m)");
+      B.b.lo[d] = std::max(B.b.lo[d], box.lo[d]);
+      B.b.hi[d] = std::min(B.b.hi[d], box.hi[d]);
     }
-    Lattice<D> lat = cubic;
+    B.lat = cubic;
     double m = m_cubic;
     if (f.lattice == LatticeType::hexagonal) {
-      lat.type = LatticeType::hexagonal;
+      B.lat.type = LatticeType::hexagonal;
       // The first row half a spacing above the lower face, as on the cubic lattice.
-      lat.origin[1] += 0.5 * dx - 0.5 * lat.row_spacing();
+      B.lat.origin[1] += 0.5 * dx - 0.5 * B.lat.row_spacing();
       if (dom.boundary[1] == AxisBoundary::periodic) {
-        const double rows = (box.hi[1] - box.lo[1]) / lat.row_spacing();
+        const double rows = (box.hi[1] - box.lo[1]) / B.lat.row_spacing();
         const double even = 2.0 * std::round(rows / 2.0);
         if (even < 2.0 || std::abs(rows - even) > 1e-6 * rows)
           fail(f.where_lattice, "a periodic y axis needs an even number of hexagonal rows (dx sqrt(3)/2 = " +
-                                    num(lat.row_spacing()) + " m apart) across the domain; its length " +
+                                    num(B.lat.row_spacing()) + " m apart) across the domain; its length " +
                                     num(box.hi[1] - box.lo[1]) + " m holds " + num(rows));
       }
       if constexpr (D == 2) m = hexagonal_lattice_mass(disc.particle_mass, disc.kernel, rho0, dx, h);
     }
-    std::vector<Vec<D>> pts;
+    B.rho0 = f.density > 0.0 ? f.density : rho0;
+    // The lattice mass is proportional to rho0 (scenes/lattice_mass.hpp).
+    B.mass = m * B.rho0 / rho0;
+    B.step = B.lat.type == LatticeType::hexagonal ? B.lat.row_spacing() : dx;
+    fluid.push_back(std::move(B));
+  }
+  // The points body k places, in lattice order: fn(position); returns the lattice points inside its
+  // shape (placed or not).
+  const auto for_each_fluid_point = [&](std::size_t k, auto&& fn) {
+    const auto& f = spec.fluid[k];
+    const FluidBody& B = fluid[k];
     std::size_t filled = 0;
-    lat.for_each_in(b, [&](Vec<D> p) {
+    B.lat.for_each_in(B.b, [&](Vec<D> p) {
       // On a periodic face (the shifted hexagonal rows put points there) the point on the upper face
       // stands for both: tested just inside, placed at the lower face.
       Vec<D> q = p;
@@ -271,13 +291,13 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
         if (p[d] > box.hi[d] - tol) q[d] = box.hi[d] - tol, p[d] -= box.hi[d] - box.lo[d];
         else if (p[d] < box.lo[d] + tol) return;  // the image of the point on the upper face, which counts
       }
-      if (!(s->signed_distance(q) < 0.0)) return;
+      if (!(B.shape->signed_distance(q) < 0.0)) return;
       ++filled;
       // Already placed by an earlier fluid body: on the same lattice exactly the points inside it; on
       // another lattice also those closer than half a spacing to it.
-      for (std::size_t j = 0; j < fluid_shapes.size(); ++j) {
+      for (std::size_t j = 0; j < k; ++j) {
         const double margin = spec.fluid[j].lattice == f.lattice ? 0.0 : 0.5 * dx - tol;
-        if (fluid_shapes[j]->signed_distance(q) < margin) return;
+        if (fluid[j].shape->signed_distance(q) < margin) return;
       }
       for (const auto& solid : solids)
         if (solid->signed_distance(q) < 0.5 * dx - tol) return;
@@ -286,22 +306,12 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
         if (dom.boundary[d] != AxisBoundary::wall) continue;
         if ((!dom.open[2 * d] && p[d] - box.lo[d] < 0.5 * dx - tol) || (!dom.open[2 * d + 1] && box.hi[d] - p[d] < 0.5 * dx - tol)) return;
       }
-      pts.push_back(p);
+      fn(p);
     });
-    if (filled == 0)
-      fail(f.where, "the fluid body holds no lattice point at the spacing " + num(dx) + " m (it is smaller than a spacing, or outside the domain)");
-    if (pts.empty()) fail(f.where, "every lattice point of the fluid body lies in an earlier fluid body or in a wall body");
-    fluid_shapes.push_back(s);
-    const double rho_k = f.density > 0.0 ? f.density : rho0;
-    // The lattice mass is proportional to rho0 (scenes/lattice_mass.hpp).
-    fills.push_back({std::move(pts), m * rho_k / rho0, rho_k, lat.type == LatticeType::hexagonal ? lat.row_spacing() : dx});
-  }
+    return filled;
+  };
 
-  // Initial pressure -> density. Hydrostatic: p = p_top + rho0_k |g| (s_top - s), s the height against
-  // the body force and s_top the body's free surface, half a lattice step above its highest particle;
-  // p_top is 0, or for a body below another hydrostatic body (the point one lattice step above its
-  // highest particle lies in that body) that body's pressure at s_top. Bodies from the highest down,
-  // so that the one above is done first.
+  // Against the body force: s = x . up is the height.
   Vec<D> g{};
   for (int d = 0; d < D && d < static_cast<int>(config.fluid.body_force.size()); ++d) g[d] = config.fluid.body_force[d];
   const double gn = norm<D>(g);
@@ -309,53 +319,120 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   int up_axis = -1;
   for (int d = 0; d < D; ++d)
     if (std::abs(up[d]) == 1.0) up_axis = d;
+
+  // First pass: counts and highest points.
+  for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
+    FluidBody& B = fluid[k];
+    double best = -std::numeric_limits<double>::infinity();
+    const std::size_t filled = for_each_fluid_point(k, [&](const Vec<D>& p) {
+      const double s = dot<D>(p, up);
+      if (B.count == 0 || s > best) best = s, B.highest = p;
+      ++B.count;
+    });
+    if (filled == 0)
+      fail(spec.fluid[k].where, "the fluid body holds no lattice point at the spacing " + num(dx) +
+                                    " m (it is smaller than a spacing, or outside the domain)");
+    if (B.count == 0) fail(spec.fluid[k].where, "every lattice point of the fluid body lies in an earlier fluid body or in a wall body");
+  }
+
+  // Initial pressure -> density. Hydrostatic: p = p_top + rho0_k |g| (s_top - s), s the height against
+  // the body force and s_top the body's free surface, half a lattice step above its highest particle;
+  // p_top is 0, or for a body below another hydrostatic body (the point one lattice step above its
+  // highest particle lies in that body) that body's pressure at s_top. Bodies from the highest down,
+  // so that the one above is done first.
   std::vector<double> top(spec.fluid.size(), 0.0), p_top(spec.fluid.size(), 0.0);
   std::vector<std::size_t> by_top;
   for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
     if (!spec.fluid[k].hydrostatic) continue;
     if (!(gn > 0.0)) fail(spec.fluid[k].where_pressure, "hydrostatic pressure needs a body force (fluid.body_force)");
-    double t = -std::numeric_limits<double>::infinity();
-    for (const auto& q : fills[k].pts) t = std::max(t, dot<D>(q, up));
-    top[k] = t + 0.5 * (up_axis == 1 ? fills[k].step : dx);
+    top[k] = dot<D>(fluid[k].highest, up) + 0.5 * (up_axis == 1 ? fluid[k].step : dx);
     by_top.push_back(k);
   }
   std::stable_sort(by_top.begin(), by_top.end(), [&](std::size_t a, std::size_t b) { return top[a] > top[b]; });
   for (std::size_t n = 0; n < by_top.size(); ++n) {
     const std::size_t k = by_top[n];
-    const auto& pts = fills[k].pts;
-    const auto highest = std::max_element(pts.begin(), pts.end(), [&](const Vec<D>& a, const Vec<D>& b) { return dot<D>(a, up) < dot<D>(b, up); });
-    const Vec<D> above = *highest + (0.5 * (up_axis == 1 ? fills[k].step : dx) + 0.5 * dx) * up;
+    const Vec<D> above = fluid[k].highest + (0.5 * (up_axis == 1 ? fluid[k].step : dx) + 0.5 * dx) * up;
     for (std::size_t m = 0; m < n; ++m) {
       const std::size_t j = by_top[m];
-      if (!(top[j] > top[k]) || !(fluid_shapes[j]->signed_distance(above) < 0.0)) continue;
-      p_top[k] = p_top[j] + fills[j].rho0 * gn * (top[j] - top[k]);
+      if (!(top[j] > top[k]) || !(fluid[j].shape->signed_distance(above) < 0.0)) continue;
+      p_top[k] = p_top[j] + fluid[j].rho0 * gn * (top[j] - top[k]);
       break;
     }
   }
+
+  // The walls' points: the domain walls (boundary axes `wall`, minus the open faces), then each wall
+  // body's layers inside the domain box (the domain walls own what lies beyond its faces), not
+  // already in an earlier body.
+  std::array<bool, 2 * D> open{};
+  for (int d = 0; d < D; ++d)
+    for (int side = 0; side < 2; ++side)
+      open[2 * d + side] = dom.boundary[d] != AxisBoundary::wall || dom.open[2 * d + side];
+  std::vector<WallPoint<D>> domain_walls;
+  if (!ghost) domain_walls = box_container_walls<D>(box.lo, box.hi, open, cubic, default_layers * dx);
+  std::vector<std::vector<WallPoint<D>>> body_walls(solids.size());
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    const auto& w = spec.walls[k];
+    if (is_ghost_body(w, config)) continue;  // no particles: its images are made at every evaluation
+    const Bounds<D> region = box.grown(dx);
+    for (const auto& q : wall_layer<D>(*solids[k], cubic, thickness[k], &region)) {
+      if (!box.contains(q.x)) continue;
+      bool taken = false;
+      for (std::size_t j = 0; j < k && !taken; ++j) taken = solids[j]->signed_distance(q.x) < 0.0;
+      if (!taken) body_walls[k].push_back(q);
+    }
+  }
+
+  // The share: [first, first + kept) of the whole scene's n particles.
+  std::size_t n_fluid_whole = 0, n_whole = domain_walls.size();
+  for (const auto& B : fluid) n_fluid_whole += B.count;
+  for (const auto& b : body_walls) n_whole += b.size();
+  n_whole += n_fluid_whole;
+  if (share.count < 1 || share.index >= share.count) throw std::invalid_argument("build_scene: no share " + std::to_string(share.index) + " of " + std::to_string(share.count));
+  const std::size_t first = n_whole * share.index / share.count, last = n_whole * (share.index + 1) / share.count;
+  out.first = first;
+  out.whole_size = n_whole;
+  out.whole_fluid = n_fluid_whole;
+  const auto mine = [&](std::size_t i) { return i >= first && i < last; };
+  VelocityScaleSums<D> scale(config.fluid.body_force);
+
+  // Second pass: the fluid, with the seeded displacement of the lattice (scenes/position_noise.hpp:
+  // the same draws, in the same order, whichever particles are kept).
+  PositionNoise<D> noise(disc.position_noise * dx);
+  std::vector<std::size_t> kept(spec.fluid.size(), 0);
+  std::size_t i = 0;  // global index
   for (std::size_t k = 0; k < spec.fluid.size(); ++k) {
     const auto& f = spec.fluid[k];
-    const auto& pts = fills[k].pts;
-    const double rho_k = fills[k].rho0;
-    std::vector<double> rho(pts.size(), rho_k);
-    if (f.hydrostatic || f.pressure != 0.0) {
-      std::vector<double> p(pts.size(), f.pressure);
-      if (f.hydrostatic)
-        for (std::size_t i = 0; i < pts.size(); ++i) p[i] = p_top[k] + rho_k * gn * (top[k] - dot<D>(pts[i], up));
-      try {
-        for (std::size_t i = 0; i < pts.size(); ++i) rho[i] = density_at_pressure(config, p[i], rho_k);
-      } catch (const std::invalid_argument& e) {
-        fail(f.where_pressure, e.what());
+    const FluidBody& B = fluid[k];
+    for_each_fluid_point(k, [&](const Vec<D>& p) {
+      double rho = B.rho0;
+      if (f.hydrostatic || f.pressure != 0.0) {
+        const double pk = f.hydrostatic ? p_top[k] + B.rho0 * gn * (top[k] - dot<D>(p, up)) : f.pressure;
+        try {
+          rho = density_at_pressure(config, pk, B.rho0);
+        } catch (const std::invalid_argument& e) {
+          fail(f.where_pressure, e.what());
+        }
       }
-    }
-    for (std::size_t i = 0; i < pts.size(); ++i) {
       std::array<double, D> v{};
-      for (std::size_t d = 0; d < f.velocity.size(); ++d) v[d] = (*f.velocity[d])(padded<D>(pts[i]));
+      for (std::size_t d = 0; d < f.velocity.size(); ++d) v[d] = (*f.velocity[d])(padded<D>(p));
       for (int d = 0; d < D; ++d)
         if (!std::isfinite(v[d]))
           fail(f.where, "the velocity expression '" + f.velocity[static_cast<std::size_t>(d)]->text() + "' is not finite at a particle");
-      out.particles.add(Kind::Fluid, pts[i], v, fills[k].mass, rho[i]);
-    }
-    out.fluid_counts.push_back(pts.size());
+      std::array<double, D> x{};
+      for (int d = 0; d < D; ++d) x[d] = p[d];
+      noise.displace(x);
+      scale.add(x, v, true);
+      out.fluid_mass += B.mass;
+      double v2 = 0.0;
+      for (int d = 0; d < D; ++d) v2 += v[d] * v[d];
+      out.fluid_kinetic_energy += 0.5 * B.mass * v2;
+      if (mine(i)) {
+        out.particles.add(Kind::Fluid, x, v, B.mass, rho);
+        ++kept[k];
+      }
+      ++i;
+    });
+    out.fluid_counts.push_back(B.count);
   }
   {
     // The volume the fluid could fill: the cubic lattice cells of the domain outside the wall bodies
@@ -375,13 +452,8 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     out.fills_domain = fluid_volume >= 0.99 * static_cast<double>(free_cells) * cubic.cell_volume();
     for (int f = 0; f < 2 * D; ++f) out.open_faces = out.open_faces || (dom.boundary[f / 2] != AxisBoundary::periodic && dom.open[f]);
   }
-  add_position_noise(out.particles, disc.position_noise * dx);
 
   // Domain walls.
-  std::array<bool, 2 * D> open{};
-  for (int d = 0; d < D; ++d)
-    for (int side = 0; side < 2; ++side)
-      open[2 * d + side] = dom.boundary[d] != AxisBoundary::wall || dom.open[2 * d + side];
   if (ghost) {
     out.ghost = true;
     for (int d = 0; d < D; ++d)
@@ -393,15 +465,18 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
       }
     out.ghost_planes = ghost_planes<D>(spec, config, out.walls, dx, support);
   } else {
-    for (const auto& w : box_container_walls<D>(box.lo, box.hi, open, cubic, default_layers * dx))
-      out.particles.add(Kind::Wall, w.x, {}, m_cubic, rho0, w.normal, w.depth);
+    for (const auto& w : domain_walls) {
+      scale.add(w.x, {}, false);
+      if (mine(i)) out.particles.add(Kind::Wall, w.x, {}, m_cubic, rho0, w.normal, w.depth);
+      ++i;
+    }
   }
+  std::vector<WallPoint<D>>().swap(domain_walls);
 
-  // Wall bodies: the layers inside each solid, inside the domain box (the domain walls own what lies
-  // beyond its faces), not already in an earlier body.
+  // Wall bodies.
   for (std::size_t k = 0; k < solids.size(); ++k) {
     const auto& w = spec.walls[k];
-    if (is_ghost_body(w, config)) {  // no particles: its images are made at every evaluation
+    if (is_ghost_body(w, config)) {
       out.body_names.push_back(w.name);
       out.particles.free_slip_body.push_back(w.free_slip ? 1 : 0);
       out.particles.body_treatment.push_back(WallTreatment::ghost);
@@ -410,29 +485,38 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     }
     const std::string& treatment = w.treatment.empty() ? disc.wall_pressure : w.treatment;
     const bool repulsive = treatment == "repulsive";
-    const Bounds<D> region = box.grown(dx);
-    std::size_t added = 0;
-    for (const auto& q : wall_layer<D>(*solids[k], cubic, thickness[k], &region)) {
-      if (!box.contains(q.x)) continue;
-      bool taken = false;
-      for (std::size_t j = 0; j < k && !taken; ++j) taken = solids[j]->signed_distance(q.x) < 0.0;
-      if (taken) continue;
-      std::array<double, D> v{};
-      for (std::size_t d = 0; d < w.velocity.size(); ++d) v[d] = w.velocity[d];
-      // Repulsive particles are massless: they act by their force alone (boundary/repulsive_force.hpp).
-      out.particles.add(Kind::Wall, q.x, v, repulsive ? 0.0 : m_cubic, rho0, q.normal, q.depth);
-      out.particles.body.back() = static_cast<std::int32_t>(k);
-      out.particles.stationary.back() = (w.motion ? w.motion->stationary : w.belt) ? 1 : 0;
-      ++added;
-    }
-    if (added == 0)
-      fail(w.where, "the wall body holds no lattice point inside the domain at the spacing " + num(dx) + " m");
+    const auto& pts = body_walls[k];
+    if (pts.empty()) fail(w.where, "the wall body holds no lattice point inside the domain at the spacing " + num(dx) + " m");
+    std::array<double, D> v0{};
+    for (std::size_t d = 0; d < w.velocity.size(); ++d) v0[d] = w.velocity[d];
+    // A moving body's walls start with its motion's velocity at t = 0 (Particles::set_motion), which
+    // the velocity scale reads: one wall particle of the body stands for the motion's law here.
+    std::int32_t motion = -1;
     if (w.motion) {
       try {
-        out.particles.attach_motion(static_cast<std::int32_t>(k), wall_motion<D>(*w.motion));
+        motion = out.particles.add_motion(wall_motion<D>(*w.motion));
       } catch (const std::invalid_argument& e) {
         fail(w.motion->where, e.what());
       }
+    }
+    Particles<D> one;
+    one.motions = out.particles.motions;
+    for (const auto& q : pts) {
+      std::array<double, D> v = v0;
+      if (motion >= 0) {
+        one.add(Kind::Wall, q.x, v0, 0.0, rho0, q.normal, q.depth);
+        one.set_motion(one.size() - 1, motion);
+        for (int d = 0; d < D; ++d) v[d] = one.v[d].back();
+      }
+      scale.add(q.x, v, false);
+      if (mine(i)) {
+        // Repulsive particles are massless: they act by their force alone (boundary/repulsive_force.hpp).
+        out.particles.add(Kind::Wall, q.x, v0, repulsive ? 0.0 : m_cubic, rho0, q.normal, q.depth);
+        out.particles.body.back() = static_cast<std::int32_t>(k);
+        out.particles.stationary.back() = (w.motion ? w.motion->stationary : w.belt) ? 1 : 0;
+        if (motion >= 0) out.particles.set_motion(out.particles.size() - 1, motion);
+      }
+      ++i;
     }
     out.body_names.push_back(w.name);
     out.particles.free_slip_body.push_back(w.free_slip ? 1 : 0);
@@ -444,21 +528,22 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
     if (repulsive) law = {w.repulsion.strength, w.repulsion.p1, w.repulsion.p2, w.repulsion.r0 * dx};
     out.particles.body_repulsion.push_back(law);
   }
+  out.velocity_scale = scale.value(n_fluid_whole, dx);
   // A repulsive body without a strength: D = U^2, U the scene's velocity scale (Niedoba 2012, §3.3:
   // D of the order of the largest squared speed, g H for a water column).
   for (std::size_t k = 0; k < solids.size(); ++k) {
     auto& law = out.particles.body_repulsion[k];
     if (law.r0 == 0.0 || law.strength > 0.0) continue;
-    const double U = scene_velocity_scale<D>(out.particles, config.fluid.body_force, dx);
+    const double U = out.velocity_scale;
     if (!(U > 0.0))
       fail(spec.walls[k].where_treatment, "the scene has no velocity scale (no body force and nothing moves) to set the repulsive "
                                           "strength from; give repulsive: {strength: D} in m^2/s^2");
     law.strength = U * U;
   }
   // Fluid bodies with their own rest density: every particle's rho0 (walls: fluid.density).
-  if (std::any_of(fills.begin(), fills.end(), [rho0](const Fill& f) { return f.rho0 != rho0; })) {
+  if (std::any_of(fluid.begin(), fluid.end(), [rho0](const FluidBody& f) { return f.rho0 != rho0; })) {
     auto& r = out.particles.rest_density;
-    for (const auto& f : fills) r.insert(r.end(), f.pts.size(), f.rho0);
+    for (std::size_t k = 0; k < fluid.size(); ++k) r.insert(r.end(), kept[k], fluid[k].rho0);
     r.resize(out.particles.size(), rho0);
   }
 
@@ -466,15 +551,14 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   // another (its own kinematic_viscosity, or its own rest density at the common nu).
   if (disc.viscosity == "morris") {
     std::vector<double> mu_k;
-    for (std::size_t k = 0; k < fills.size(); ++k)
-      mu_k.push_back(fills[k].rho0 * (spec.fluid[k].viscosity >= 0.0 ? spec.fluid[k].viscosity : config.fluid.kinematic_viscosity));
+    for (std::size_t k = 0; k < fluid.size(); ++k)
+      mu_k.push_back(fluid[k].rho0 * (spec.fluid[k].viscosity >= 0.0 ? spec.fluid[k].viscosity : config.fluid.kinematic_viscosity));
     if (std::any_of(mu_k.begin(), mu_k.end(), [&](double m) { return m != rho0 * config.fluid.kinematic_viscosity; })) {
       auto& mu = out.particles.viscosity;
-      for (std::size_t k = 0; k < fills.size(); ++k) mu.insert(mu.end(), fills[k].pts.size(), mu_k[k]);
+      for (std::size_t k = 0; k < fluid.size(); ++k) mu.insert(mu.end(), kept[k], mu_k[k]);
       mu.resize(out.particles.size(), 0.0);
     }
   }
-
   for (int d = 0; d < D; ++d) {
     out.domain.periodic[d] = dom.boundary[d] == AxisBoundary::periodic;
     const double grow = out.domain.periodic[d] ? 0.0 : max_thickness;
@@ -488,7 +572,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config) {
   return out;
 }
 
-template BuiltScene<2> build_scene<2>(const SceneSpec&, const Config&);
-template BuiltScene<3> build_scene<3>(const SceneSpec&, const Config&);
+template BuiltScene<2> build_scene<2>(const SceneSpec&, const Config&, SceneShare);
+template BuiltScene<3> build_scene<3>(const SceneSpec&, const Config&, SceneShare);
 
 }  // namespace sphmol

@@ -49,6 +49,19 @@ struct BuiltScene {
   // unless a face is open.
   bool fills_domain = false;
   bool open_faces = false;                 // some face of the domain is open
+  // The whole scene, whatever share `particles` holds: `particles` are its particles of global index
+  // [first, first + particles.size()) (fluid first: global index = index in the whole scene), of
+  // whole_size particles, whole_fluid of them fluid.
+  std::size_t first = 0, whole_size = 0, whole_fluid = 0;
+  // Of the whole scene: its velocity scale (scene/scene_velocity_scale.hpp), and the fluid's mass and
+  // kinetic energy, summed over its particles in their order (the same bits whatever the share).
+  double velocity_scale = 0.0, fluid_mass = 0.0, fluid_kinetic_energy = 0.0;
+};
+
+// Which part of the scene a build keeps: share `index` of `count` equal shares of the global indices,
+// [N index / count, N (index + 1) / count) of the N particles. The default keeps the whole scene.
+struct SceneShare {
+  std::size_t index = 0, count = 1;
 };
 
 // The particle spacing of the scene: discretization.spacing, or the domain's x length over
@@ -65,9 +78,11 @@ double scene_particle_bound(const SceneSpec& spec, const Config& config);
 // discretization and the EOS (what the scene alone cannot know): throws ConfigError at the body's key.
 void check_scene_bodies(const SceneSpec& spec, const Config& config);
 
-// Throws ConfigError (located) for every inconsistency; `spec.dimension` must be D.
+// Throws ConfigError (located) for every inconsistency; `spec.dimension` must be D. Every build goes
+// through the whole scene (and refuses what it would refuse), keeping the particles of `share` only:
+// its memory is the share's and the walls' point lists (the surfaces' size), not the whole scene's.
 template <int D>
-BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config);
+BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShare share = {});
 
 // The density at which the EOS of `config` gives `pressure` [Pa] above its value at the rest density
 // (linear: rho0 + p / c^2; Tait: rho0 (1 + p / B)^(1/gamma), Niedoba 2012, eq 2.75). Throws

@@ -16,13 +16,13 @@ template <int D>
 std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   BuiltScene<D> s = build_scene<D>(config.settings<SceneSettings>().spec, config);
   spacing_ = s.spacing;
-  velocity_scale_ = scene_velocity_scale<D>(s.particles, config.fluid.body_force, s.spacing);
+  velocity_scale_ = s.velocity_scale;
   // A mirror plane moving along itself drives the fluid as a moving wall body does.
   for (const auto& p : s.ghost_planes) velocity_scale_ = std::max(velocity_scale_, p.speed());
   free_surface_ = s.open_faces || !s.fills_domain;
   body_names_ = s.body_names;
   fluid_counts_ = s.fluid_counts;
-  n_wall_ = s.particles.n_wall();
+  n_wall_ = s.whole_size - s.whole_fluid;
   body_treatments_.clear();
   for (const WallTreatment t : s.particles.body_treatment)
     body_treatments_.push_back(t == WallTreatment::rest           ? "rest"
@@ -32,13 +32,8 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
                                                                   : "repulsive");
   // KE(0) and M from the built state (also on a restart, which rebuilds the scene): the first
   // measurement is at the first output time, not at t = 0.
-  ke0_ = mass0_ = 0.0;
-  for (std::size_t i = 0; i < s.particles.n_fluid; ++i) {
-    double v2 = 0.0;
-    for (int d = 0; d < D; ++d) v2 += s.particles.v[d][i] * s.particles.v[d][i];
-    ke0_ += 0.5 * s.particles.mass[i] * v2;
-    mass0_ += s.particles.mass[i];
-  }
+  ke0_ = s.fluid_kinetic_energy;
+  mass0_ = s.fluid_mass;
   return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr, {},
                             s.ghost_planes);
 }
