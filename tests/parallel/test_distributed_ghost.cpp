@@ -34,10 +34,10 @@ using namespace sphmol::parallel::testing;
 
 namespace {
 
-// The mirror walls are what this file is about.
-Finished check_ghost_same_as_serial(const Config& c, double rebalance = 1.2) {
+// The mirror walls are what this file is about. `evaluations_per_start`: as check_same_as_serial's.
+Finished check_ghost_same_as_serial(const Config& c, double rebalance = 1.2, long evaluations_per_start = 1) {
   REQUIRE(c.discretization.boundary == "ghost");
-  return check_same_as_serial(c, rebalance);
+  return check_same_as_serial(c, rebalance, evaluations_per_start);
 }
 
 Config cavity(const std::string& integrator) {
@@ -59,7 +59,7 @@ TEST_CASE("distributed run: the 2D Sod tube with free-slip ghost walls equals th
     const Finished split = check_ghost_same_as_serial(short_shock_tube("sod.yaml"), 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
-  SECTION("cvode_adams") { check_ghost_same_as_serial(short_shock_tube("sod.yaml", {"time.integrator=cvode_adams"})); }
+  SECTION("cvode_adams") { check_ghost_same_as_serial(short_shock_tube("sod.yaml", {"time.integrator=cvode_adams"}), 1.2, 0); }
 }
 
 TEST_CASE("distributed run: the lid-driven cavity with no-slip ghost walls equals the serial run bit for bit",
@@ -70,7 +70,7 @@ TEST_CASE("distributed run: the lid-driven cavity with no-slip ghost walls equal
     const Finished split = check_ghost_same_as_serial(cavity("leapfrog"), 1.0);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 0);
   }
-  SECTION("arkode_erk") { check_ghost_same_as_serial(cavity("arkode_erk")); }
+  SECTION("arkode_erk") { check_ghost_same_as_serial(cavity("arkode_erk"), 1.2, 0); }
 }
 
 TEST_CASE("distributed run: a water column with ghost walls under gravity equals the serial run bit for bit",

@@ -250,11 +250,23 @@ void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const s
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
+  // The vectors of the integrators that wrap y (wrap_state) and their clones move as y does
+  // (vector_family.hpp): SUNDIALS' integrators find their history in the new share.
+  std::vector<std::shared_ptr<VectorFamily>> families;
+  for (const auto& f : families_)
+    if (auto live = f.lock()) families.push_back(std::move(live));
+  FamilyMove vectors(families, y.data(), y.size());
+  std::vector<std::vector<double>*> moving = state;
+  for (auto* a : vectors.arrays()) moving.push_back(a);
+  // migrate() moves the same columns on every rank.
+  const auto count = static_cast<double>(moving.size());
+  if (comm_.min(count) != comm_.max(count))
+    throw std::logic_error("DistributedSystem::repartition: the ranks move different numbers of arrays");
   // Every array as per-particle columns, which migrate() moves with the particles.
   const std::size_t state_blocks = this->state_blocks();
   std::vector<std::vector<double>> columns;
   std::vector<const std::vector<double>*> arrays{&y};
-  for (const auto* a : state) arrays.push_back(a);
+  for (const auto* a : moving) arrays.push_back(a);
   for (const auto* a : arrays) {
     if (a->size() != layout_.size()) throw std::invalid_argument("DistributedSystem::repartition: an array is not of the state's length");
     to_columns(*a, state_blocks, columns);
@@ -278,8 +290,9 @@ void DistributedSystem<D>::repartition(double t, std::vector<double>& y, const s
     return c;
   };
   from_columns(take(per_state), state_blocks, y);
-  for (auto* a : state) from_columns(take(per_state), state_blocks, *a);
+  for (auto* a : moving) from_columns(take(per_state), state_blocks, *a);
   for (auto* a : positions) from_columns(take(D), D, *a);
+  vectors.finish(y.data(), y.size());
   stats_.imbalance = load_imbalance(comm_, std::accumulate(weight_.begin(), weight_.end(), 0.0));
   ++stats_.repartitions;
   plan_due_ = true;
@@ -618,7 +631,11 @@ N_Vector DistributedSystem<D>::wrap_state(double* data, std::size_t length, SUNC
   if (length != layout_.size()) throw std::invalid_argument("DistributedSystem::wrap_state: not this rank's state length");
   std::uint64_t mine = length, whole = 0;
   MPI_Allreduce(&mine, &whole, 1, MPI_UINT64_T, MPI_SUM, comm_.handle());
-  return make_fixed_point_norm_vector(comm_.handle(), data, length, static_cast<std::size_t>(whole), ctx);
+  N_Vector v = make_fixed_point_norm_vector(comm_.handle(), data, length, static_cast<std::size_t>(whole), ctx);
+  // repartition() moves it and its clones; families whose vectors are all destroyed are forgotten.
+  families_.erase(std::remove_if(families_.begin(), families_.end(), [](const auto& f) { return f.expired(); }), families_.end());
+  families_.push_back(family_of(v));
+  return v;
 }
 
 template <int D>

@@ -73,6 +73,7 @@
 #include "sphmol/parallel/halo.hpp"
 #include "sphmol/parallel/rcb_partition.hpp"
 #include "sphmol/parallel/fixed_point_norm_mpi.hpp"
+#include "sphmol/parallel/vector_family.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/parallel/velocity_halo.hpp"
 #include "sphmol/time/imex_system.hpp"
@@ -107,7 +108,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<std::string> implicit_terms() const override { return implicit_terms_; }
   void minimum_everywhere(double* values, std::size_t count) const override;
   // Collective: an MPI vector over this rank's part of the state (N_VMake_Parallel, no copy), its
-  // norm the fixed-point one of the serial run (fixed_point_norm_mpi.hpp).
+  // norm the fixed-point one of the serial run (fixed_point_norm_mpi.hpp). It and its clones move
+  // with the particles at a repartition.
   N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const override;
   double stable_step() const override { return stable_step_; }
   double widest_stable_step() const override { return widest_step_; }
@@ -132,7 +134,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   bool imbalanced();
   // Collective, after imbalanced() said true: a new partition by the current pair counts at (t, y);
   // the particles move with y and with the integrator's arrays of the state's length (`state`) or
-  // of its position block's (`positions`), which are all resized to the new share.
+  // of its position block's (`positions`), which are all resized to the new share. Every live
+  // vector made by wrap_state, and every clone of it (a SUNDIALS integrator's history), moves too,
+  // and those that wrapped y wrap its new storage (vector_family.hpp).
   void repartition(double t, std::vector<double>& y, const std::vector<std::vector<double>*>& state,
                    const std::vector<std::vector<double>*>& positions);
 
@@ -262,6 +266,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::array<std::vector<double>, D> x_now_, x_plan_;  // owned positions now and at the plan
   std::vector<double> y_local_;    // the local state, made at output times (refresh_local)
   std::vector<double> halo_rows_;  // the halo's state rows of the latest exchange
+  // The vectors made by wrap_state and their clones, while any lives (repartition() moves them).
+  mutable std::vector<std::weak_ptr<VectorFamily>> families_;
   std::vector<double> initial_state_;  // take_initial_state()
   double stable_step_ = 0.0, first_stable_step_ = 0.0, widest_step_ = 0.0;
   long rhs_evals_ = 0;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sphmol/parallel/vector_family.hpp"
 #include "sphmol/time/fixed_point_norm.hpp"
 
 namespace sphmol::parallel {
@@ -70,8 +71,15 @@ N_Vector with_fixed_point_reductions(N_Vector v) {
 
 N_Vector make_fixed_point_norm_vector(MPI_Comm comm, double* data, std::size_t local, std::size_t whole, SUNContext ctx) {
   check_sizes(comm, whole);
-  return with_fixed_point_reductions(
+  N_Vector v = with_fixed_point_reductions(
       N_VMake_Parallel(comm, static_cast<sunindextype>(local), static_cast<sunindextype>(whole), data, ctx));
+  try {
+    track_clones(v);
+  } catch (...) {
+    N_VDestroy(v);
+    throw;
+  }
+  return v;
 }
 
 N_Vector new_fixed_point_vector(MPI_Comm comm, std::size_t local, std::size_t whole, SUNContext ctx) {

@@ -13,7 +13,8 @@
 namespace sphmol::parallel {
 
 // Collective: an MPI vector over this rank's `local` doubles at `data` (no copy), `whole` doubles in
-// all, on `comm` (which must outlive the vector and its clones), with the fixed-point norm and dot product.
+// all, on `comm` (which must outlive the vector and its clones), with the fixed-point norm and dot
+// product; the root of a family that records its clones (vector_family.hpp: family_of).
 N_Vector make_fixed_point_norm_vector(MPI_Comm comm, double* data, std::size_t local, std::size_t whole, SUNContext ctx);
 // Collective: the same over `local` doubles of its own.
 N_Vector new_fixed_point_vector(MPI_Comm comm, std::size_t local, std::size_t whole, SUNContext ctx);

@@ -128,17 +128,20 @@ class MpiRun final : public PartitionedRun<D> {
     // after the integrator is started on the new share (its first evaluation there, and the operator
     // recorded by it, are replaced by the restored arrays: the steps go on bit for bit).
     nlohmann::json js = integrator.save_state();
-    // ARKODE and CVODE keep their step history (error controller, Adams history) inside SUNDIALS;
-    // starting them again on a new share would change the steps from the serial run's. ARKODE's
-    // ERKStep resizes its vectors keeping that history (Integrator::resize); CVODE cannot, so its
-    // particles stay where they are (counted in the summary).
+    // ARKODE and CVODE keep their step history (error controller, Adams history, interpolation
+    // history) inside SUNDIALS, in vectors cloned from the state vector: the repartition moves them
+    // all with the particles (vector_family.hpp), and the integrator goes on with them
+    // (Integrator::resize); starting it again on the new share would change the steps from the
+    // serial run's. arkode_imex records its frozen viscous operator again on the new share, at the
+    // state where the serial run recorded it: an evaluation the serial run does not make, which the
+    // case's monitors do not watch. (ERKStep also resizes its vectors itself.)
     if (!js.contains("f")) {
-      if (!integrator.can_resize()) {
-        ++declined_;
-        return;
-      }
+      if (!integrator.can_resize())
+        throw std::logic_error("MpiRun::rebalance: integrator '" + integrator.name() + "' cannot move with the particles");
       sys_.repartition(t, y_, {}, {});
+      sys_.watch_evaluations(false);
       integrator.resize(sys_, t, y_.data());
+      sys_.watch_evaluations(true);
       if (health_) health_->moved(y_);
       return;
     }
@@ -241,7 +244,6 @@ class MpiRun final : public PartitionedRun<D> {
             {"load_imbalance", s.imbalance},
             {"load_imbalance_last_plan", s.imbalance_seen},
             {"repartitions", s.repartitions},
-            {"repartitions_declined", declined_},
             {"halo_depth_list_radii", s.depth},
             {"halo_plans", s.plans},
             {"ghost_mirror_margin_max", s.mirror_margin_max},
@@ -270,7 +272,6 @@ class MpiRun final : public PartitionedRun<D> {
   std::optional<DistributedHealthCheck<D>> health_;  // from start_health_check()
   const SphSystem<D>* whole_;  // the scene as every rank builds it (never evaluated here; released but on rank 0)
   std::vector<std::string> whole_terms_;
-  long declined_ = 0;  // imbalances past the threshold left alone (the integrator cannot move)
   // Collective calls (the same on every rank): whole states and whole fields gathered on rank 0,
   // and pieces made (VTK outputs, probe samples).
   long whole_state_gathers_ = 0, whole_field_gathers_ = 0, owned_pieces_ = 0;

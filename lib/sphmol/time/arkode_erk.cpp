@@ -135,6 +135,13 @@ void ArkodeErk::restore_state(const nlohmann::json& s) {
 void ArkodeErk::resize(OdeSystem& sys, double t, double* y) {
   if (!mem_) throw std::logic_error("ArkodeErk::resize before initialize");
   if (t != t_) throw std::logic_error("ArkodeErk::resize: the state is not at the integrator's time");
+  if (N_VGetArrayPointer(y_) != y) throw std::logic_error("ArkodeErk::resize: the system did not move the state vector with its share");
+  sys_ = &sys;
+}
+
+void ArkodeErk::restart(OdeSystem& sys, double t, double* y) {
+  if (!mem_) throw std::logic_error("ArkodeErk::restart before initialize");
+  if (t != t_) throw std::logic_error("ArkodeErk::restart: the state is not at the integrator's time");
   sys_ = &sys;
   N_VDestroy(y_);
   y_ = make_state_vector(sys, y, omp_get_max_threads(), ctx_);

@@ -37,14 +37,15 @@ class ArkodeErk final : public Integrator {
   // not bit for bit.
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state) override;
-  // ERKStepResize: the step size and the error controller's history stay; ARKODE evaluates f at
-  // (t, y) once more, as it does at a start, for its first stage (f is a function of (t, y) alone,
-  // so that evaluation gives the values the run had).
+  // A repartition over ranks moves the state vector and every vector ERKStep cloned from it (the
+  // step solution, stages, the last f, the interpolation history, error weights) with the particles
+  // (StateVectorMaker, time/state_vector.hpp): ERKStep goes on as in the serial run, without an
+  // evaluation. Nothing else here holds per-particle values.
   bool can_resize() const override { return true; }
-  // ERKStepResize at (t, y): the vectors and the first stage are computed anew, the step size and
-  // the counts are kept.
-  void restart(OdeSystem& sys, double t, double* y) override { resize(sys, t, y); }
   void resize(OdeSystem& sys, double t, double* y) override;
+  // ERKStepResize at (t, y): the vectors and the first stage are computed anew (f changed: fluid
+  // was taken out), the step size, the error controller's history and the counts are kept.
+  void restart(OdeSystem& sys, double t, double* y) override;
 
  private:
   static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);

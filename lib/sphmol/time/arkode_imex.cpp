@@ -223,6 +223,30 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   check(ARKStepSetDeduceImplicitRhs(mem_, 1), "SetDeduceImplicitRhs");
 }
 
+void ArkodeImex::resize(OdeSystem& sys, double t, double* y) {
+  if (!mem_) throw std::logic_error("ArkodeImex::resize before initialize");
+  if (t != t_) throw std::logic_error("ArkodeImex::resize: the state is not at the integrator's time");
+  if (N_VGetArrayPointer(y_) != y) throw std::logic_error("ArkodeImex::resize: the system did not move the state vector with its share");
+  sys_ = &sys;
+  imex_ = dynamic_cast<ImexSystem*>(&sys);
+  if (!imex_) throw std::invalid_argument("time.integrator: arkode_imex needs a system with an implicit-explicit split");
+  vb_ = sys.velocities_begin();
+  nv_ = sys.velocities_end() - vb_;
+  const std::size_t n = sys.size();
+  cache_fe_.assign(n, 0.0);
+  cache_w_.assign(nv_, 0.0);
+  wn_.assign(nv_, 0.0);
+  cached_ = false;
+  // Between steps y is y_n, at which step_done_callback (or initialize) recorded L_n, b_n and left
+  // that evaluation cached: recorded again here over the new share, the same rows with the same
+  // entries (parallel/distributed_system.hpp).
+  evaluate(t, y);
+  std::swap(frozen_, scratch_);
+  cache_frozen_ = true;
+  if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
+  ls_->set_block(vb_, n);
+}
+
 void ArkodeImex::advance(double tout) {
   while (t_ < tout) step_toward(tout);
 }

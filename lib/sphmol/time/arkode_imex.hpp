@@ -52,6 +52,15 @@ class ArkodeImex final : public Integrator {
   // ARKStep's stages are of the old f: freed, and ARKStep started again at (t, y), counts kept.
   void restart(OdeSystem& sys, double t, double* y) override;
   double step_toward(double tout) override;
+  // A repartition over ranks moves the state vector and every vector ARKStep, its nonlinear and
+  // linear solver interfaces and its interpolation module cloned from it (the step solution, stages,
+  // error weights, the predictor's interpolation history) with the particles (StateVectorMaker,
+  // time/state_vector.hpp). What this class holds per particle is made again on the new share: the
+  // frozen operator L_n, b_n (and the cached evaluation) by one evaluation at (t, y), which is y_n,
+  // where the serial run recorded them (step_done_callback); the stage solver's block bounds. The
+  // steps, stage solves and Krylov iterations go on as in the serial run.
+  bool can_resize() const override { return true; }
+  void resize(OdeSystem& sys, double t, double* y) override;
   // As arkode_erk: the step size is saved, the Runge-Kutta history is not (a restart agrees within
   // the tolerance).
   nlohmann::json save_state() const override;

@@ -40,6 +40,13 @@ void CvodeAdams::restart(OdeSystem& sys, double t, double* y) {
   rejected_before_ = s.rejected_steps;
 }
 
+void CvodeAdams::resize(OdeSystem& sys, double t, double* y) {
+  if (!mem_) throw std::logic_error("CvodeAdams::resize before initialize");
+  if (t != t_) throw std::logic_error("CvodeAdams::resize: the state is not at the integrator's time");
+  if (N_VGetArrayPointer(y_) != y) throw std::logic_error("CvodeAdams::resize: the system did not move the state vector with its share");
+  sys_ = &sys;
+}
+
 nlohmann::json CvodeAdams::describe() const {
   return {{"name", name()},
           {"method", "Adams-Moulton, fixed-point iteration"},

@@ -35,6 +35,13 @@ class CvodeAdams final : public Integrator {
   IntegratorStats stats() const override;
   // CVODE's Adams history is of the old f: freed, and CVODE started again at (t, y), counts kept.
   void restart(OdeSystem& sys, double t, double* y) override;
+  // A repartition over ranks moves the state vector and every vector CVODE and its fixed-point
+  // solver cloned from it (the Nordsieck history, error weights, corrections) with the particles
+  // (StateVectorMaker, time/state_vector.hpp): CVODE goes on with its order, step and history as in
+  // the serial run. Nothing else here holds per-particle values; the step limit, from the latest
+  // evaluation, is unchanged.
+  bool can_resize() const override { return true; }
+  void resize(OdeSystem& sys, double t, double* y) override;
 
  private:
   void release();

@@ -47,9 +47,10 @@ class Integrator {
   virtual void restore_state(const nlohmann::json& state) {}
 
   // Between steps, the state was moved between processes (a repartition over MPI ranks): `y`, of
-  // sys.size() values now, holds the same whole state at the same time in a new share. An integrator
-  // that keeps its step history through that (can_resize) goes on with the steps it would have taken;
-  // the others are started again by the caller, or keep their share.
+  // sys.size() values now, holds the same whole state at the same time in a new share, and every
+  // vector made by make_state_vector and cloned from it moved with it (time/state_vector.hpp). An
+  // integrator that keeps its step history through that (can_resize) goes on with the steps it would
+  // have taken; the others (the leapfrogs) are started again by the caller from their saved state.
   virtual bool can_resize() const { return false; }
   virtual void resize(OdeSystem& sys, double t, double* y) {}
 

@@ -31,6 +31,11 @@ class StageLinearSolver {
   // Where gamma comes from; set before the first solve.
   void set_gamma(std::function<double()> gamma) { gamma_ = std::move(gamma); }
   SUNLinearSolver get() const { return ls_; }
+  // The velocity block and this process's length after the state's share changed (a repartition).
+  void set_block(std::size_t vb, std::size_t length) {
+    vb_ = vb;
+    length_ = length;
+  }
 
  private:
   static StageLinearSolver* self(SUNLinearSolver S) { return static_cast<StageLinearSolver*>(S->content); }

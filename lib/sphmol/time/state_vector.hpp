@@ -17,7 +17,10 @@ class StateVectorMaker {
  public:
   virtual ~StateVectorMaker() = default;
   // An N_Vector over `length` doubles at `data` (this process's part of the state), owned by the
-  // caller (N_VDestroy). Collective when the state is split over processes.
+  // caller (N_VDestroy). Collective when the state is split over processes. When the state's share
+  // changes between steps (a repartition), the vector and every vector cloned from it, the
+  // integrator's history, move with the particles: the vector then wraps the state's new storage
+  // and the clones hold their values in the new share (parallel/vector_family.hpp).
   virtual N_Vector wrap_state(double* data, std::size_t length, SUNContext ctx) const = 0;
 };
 
