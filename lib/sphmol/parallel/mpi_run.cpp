@@ -287,9 +287,10 @@ void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
       integrator != "cvode_adams" && integrator != "arkode_imex")
     why.push_back("time.integrator: '" + integrator +
                   "' (leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_imex and cvode_adams run over ranks)");
-  if (disc.boundary != "wall_particles" && disc.boundary != "ghost")
-    why.push_back("discretization.boundary: '" + disc.boundary + "' (wall_particles and ghost run over ranks)");
-  if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
+  // Every discretization.boundary runs over ranks, and so do repulsive wall bodies: the repulsive
+  // force (boundary/repulsive_force.hpp) sums over each fluid row's wall neighbours in the stored pair
+  // list, which the halo holds as for any other term, and the per-body laws are among the tables every
+  // rank keeps whole (parallel/particle_columns.hpp).
   if (disc.reorder) why.push_back("discretization.reorder: true");
   // Ghost walls are the one generated set the local systems rebuild (distributed_system.hpp).
   if (whole.has_generator() && !dynamic_cast<const GhostGenerator<D>*>(whole.generator()))
