@@ -4,8 +4,8 @@
 # and a .pvd that lists the .pvtp files), the same front positions byte for byte and the same
 # checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
 # same state, and so does the 1D Sod tube (energy equation, variable h); ARKODE and CVODE on 2
-# ranks end in the particles of 1 rank; rank 0 alone prints the summary; a setting a run over ranks
-# does not support ends every rank with exit code 2, and so does a subcommand. Inputs: SPHMOL,
+# ranks end in the particles of 1 rank, and so does the dam break with a reordered workspace; rank 0
+# alone prints the summary; a subcommand ends every rank with exit code 2. Inputs: SPHMOL,
 # PIECES_EQUAL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR, WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -118,15 +118,18 @@ foreach(integrator arkode_erk cvode_adams)
                "${integrator}: the final particles of 2 ranks against 1")
 endforeach()
 
-execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --config ${SOURCE_DIR}/verification/poiseuille.yaml
-                        --set time.t_end=0.01 --set output.times=[0.01] --set discretization.reorder=true --output ${WORK_DIR}/refused
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 2 OR NOT err MATCHES "not available in a run over several MPI ranks yet: discretization.reorder: true")
-  message(FATAL_ERROR "reorder: true over 2 ranks: exit ${rc}, expected 2 and a config error\n${err}")
-endif()
-if(EXISTS ${WORK_DIR}/refused)
-  message(FATAL_ERROR "a refused run wrote ${WORK_DIR}/refused")
-endif()
+# Reordering (Morton-sorted workspace): on 2 ranks the same particles as on 1, to the bit.
+set(sorted --set discretization.spacing=0.04 --set discretization.reorder=true --set time.t_end=0.06
+           --set output.times=[0.06] --set output.plots=false --set output.vtk=true --quiet)
+foreach(n 1 2)
+  execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} ${n} ${FLAGS} ${SPHMOL} --config ${dam} ${sorted} --output ${WORK_DIR}/reorder-n${n}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "reorder: true on ${n} ranks: exit ${rc}\n${out}\n${err}")
+  endif()
+endforeach()
+check_pieces(${WORK_DIR}/reorder-n1/fluid_0001.vtp ${WORK_DIR}/reorder-n2/fluid_0001.pvtp 2
+             "reorder: true: the final particles of 2 ranks against 1")
 
 execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} kernels RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "does not run over several MPI ranks")

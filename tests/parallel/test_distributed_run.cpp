@@ -4,7 +4,8 @@
 // the dam break (continuity density with dynamic wall densities in the state; particles travel
 // far enough to re-plan the halo many times) and the shock tube in 1D and 2D (the energy equation:
 // e in the state, the walls' fixed e in each local system). Rank 0 runs the serial reference.
-// Unsupported settings are refused with a ConfigError on every rank (ghost walls: test_distributed_ghost.cpp).
+// Ghost walls: test_distributed_ghost.cpp; repulsive walls: test_distributed_repulsive.cpp; reordering:
+// test_distributed_reorder.cpp.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -124,23 +125,6 @@ TEST_CASE("distributed run: particle shifting equals the serial run bit for bit"
                                       "output.times=[0.03]", "output.plots=false", "discretization.density=continuity",
                                       "discretization.particle_shifting={coefficient: 4}"}));
   }
-}
-
-TEST_CASE("distributed run: settings it does not support are refused on every rank", "[parallel][run]") {
-  const Communicator comm;
-  const MpiRunPartitioner partitioner(comm, MpiRunPartitioner::default_tolerance, 1.2);
-  const std::vector<std::string> base{"discretization.particles_across=20", "time.t_end=0.01", "output.times=[0.01]",
-                                      "output.plots=false"};
-  auto with = [&](const std::string& extra) {
-    auto o = base;
-    o.push_back(extra);
-    return load_config(verification("poiseuille.yaml"), o);
-  };
-  CHECK_THROWS_AS(run(with("discretization.reorder=true"), &partitioner), ConfigError);
-  CHECK_THROWS_WITH(run(with("discretization.reorder=true"), &partitioner), Catch::Contains("discretization.reorder"));
-  // Virtual particles with a repulsive force (ghost mirror walls run: test_distributed_ghost.cpp).
-  CHECK_THROWS_WITH(run(short_shock_tube("shock_tube_virtual.yaml"), &partitioner),
-                    Catch::Contains("discretization.boundary: 'virtual_repulsive'"));
 }
 
 TEST_CASE("distributed run: a 3D tank equals the serial run bit for bit", "[parallel][run]") {

@@ -9,9 +9,11 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
+#include "sphmol/neighbors/particle_reorder.hpp"
 #include "sphmol/parallel/halo_particles.hpp"
 #include "sphmol/parallel/migration.hpp"
 #include "sphmol/parallel/particle_selection.hpp"
@@ -50,7 +52,10 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       implicit_terms_(whole.implicit_terms()),
       monitors_(whole.monitors()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
-  if (whole.reorder()) throw std::invalid_argument("DistributedSystem: reordering is not supported");
+  // Reordering: the local systems keep their particles in the serial workspace's order instead of
+  // reordering a workspace of their own (the header), so they are assembled without it.
+  reorder_ = whole.reorder();
+  config_.discretization.reorder = false;
   // Ghost (mirror) walls: every local system is assembled with the whole system's mirrors (the header).
   if (whole.has_generator()) {
     const auto* ghosts = dynamic_cast<const GhostGenerator<D>*>(whole.generator());
@@ -85,6 +90,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   const std::size_t slice_fluid = std::clamp(P.n_fluid, lo, hi) - lo;
   owned_ = select_particles(P, slice, slice_fluid);
   gid_.assign(slice.begin(), slice.end());
+  if (reorder_)
+    for (auto& c : x_sorted_) c.assign(slice.size(), 0.0);
   // Walls keep the energy the scene gave them (the state holds the fluid's only), and with a variable
   // h every particle keeps its h(0) (the walls' h; with h from the density the fluid's reference):
   // per owned particle, moving with it (extras()), and sent with the halo (plan()).
@@ -186,6 +193,8 @@ template <int D>
 std::vector<std::vector<double>*> DistributedSystem<D>::extras(std::vector<std::vector<double>*> arrays) {
   if (whole_layout_.has_energy) arrays.push_back(&e_own_);
   if (variable_h_) arrays.push_back(&h0_own_);
+  if (reorder_)
+    for (auto& c : x_sorted_) arrays.push_back(&c);
   return arrays;
 }
 
@@ -350,6 +359,41 @@ double DistributedSystem<D>::mirror_margin() const {
 }
 
 template <int D>
+bool DistributedSystem<D>::serial_list_stale() {
+  // The serial Verlet list's test (neighbors/verlet_list.hpp) on the whole scene, with the same
+  // operations: its support (the largest h over all ranks with a variable h), the room its growth
+  // since the rebuild leaves in the skin, and every particle's displacement since the rebuild,
+  // reduced over the ranks. The positions are owned_positions()', those of the serial workspace.
+  const double support = variable_h_ ? support_ * hmax_ : support_ * (config_.discretization.smoothing_ratio * spacing_);
+  bool stale = !sorted_once_;
+  if (!stale) {
+    const double room = skin_ - std::max(0.0, support - sorted_support_);
+    if (room <= 0.0) {
+      stale = true;
+    } else {
+      const double limit2 = 0.25 * room * room;
+      bool far = false;
+      for (std::size_t o = 0; o < owned_.size(); ++o) {
+        double r2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double dx = domain_.min_image(d, x_now_[d][o] - x_sorted_[d][o]);
+          r2 += dx * dx;
+        }
+        far |= r2 > limit2;
+      }
+      stale = !comm_.all(!far);
+    }
+  }
+  if (!stale) return false;
+  x_sorted_ = x_now_;
+  sorted_support_ = support;
+  sorted_cell_ = 0.5 * (support + skin_);  // SphSystem: half the list radius
+  sorted_once_ = true;
+  ++stats_.serial_sorts;
+  return true;
+}
+
+template <int D>
 bool DistributedSystem<D>::moved_too_far(double t, const double* y) const {
   // A support grown since the plan eats into the skin (the Verlet list's rule, neighbors/verlet_list.hpp);
   // hmax_ is the same on every rank, so this decision is too. The ghost margin's growth does not:
@@ -404,7 +448,26 @@ void DistributedSystem<D>::plan() {
   const auto gid_of = [&](std::uint32_t k) { return k < no ? gid_[k] : hgid[k - no]; };
   std::vector<std::uint32_t> order(no + nh);
   std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return gid_of(a) < gid_of(b); });
+  if (reorder_ && sorted_once_) {
+    // The serial workspace's order (SphSystem::reorder_workspace): fluid first, each part by the
+    // Morton code of the positions at the serial list's latest rebuild, on the serial grid, and
+    // within a cell by global id (the serial state index).
+    std::array<std::vector<double>, D> xs_all;
+    std::array<const double*, D> xk;
+    for (int d = 0; d < D; ++d) {
+      xs_all[d] = x_sorted_[d];
+      const std::vector<double> xh = halo_->exchange(comm_, x_sorted_[d]);
+      xs_all[d].insert(xs_all[d].end(), xh.begin(), xh.end());
+      xk[d] = xs_all[d].data();
+    }
+    const MortonGrid<D> grid(domain_, sorted_cell_);
+    std::vector<std::uint64_t> code(no + nh);
+    for (std::size_t k = 0; k < no + nh; ++k) code[k] = grid.code(xk, k);
+    const auto key = [&](std::uint32_t k) { return std::make_tuple(gid_of(k) >= n_fluid_global_, code[k], gid_of(k)); };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  } else {
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return gid_of(a) < gid_of(b); });
+  }
   nf_local_ = static_cast<std::size_t>(std::count_if(order.begin(), order.end(), [&](std::uint32_t k) { return gid_of(k) < n_fluid_global_; }));
   owned_at_.resize(no);
   halo_at_.resize(nh);
@@ -488,6 +551,9 @@ void DistributedSystem<D>::plan() {
 template <int D>
 void DistributedSystem<D>::take_out(const std::vector<std::size_t>& gone, double* y) {
   const auto leaving = [&](std::uint64_t id) { return std::binary_search(gone.begin(), gone.end(), static_cast<std::size_t>(id)); };
+  // The serial system rebuilds its list (and sorts its workspace) at the next evaluation after
+  // fluid has left (SphSystem::retire).
+  if (!gone.empty()) sorted_once_ = false;
   for (std::size_t o = 0; o < nfo_; ++o)
     if (leaving(gid_[o])) {
       owned_.kind[o] = Kind::Out;
@@ -557,7 +623,16 @@ void DistributedSystem<D>::prepare_local(double t, const double* y) {
     margin_ = mirror_margin();
     stats_.mirror_margin_max = std::max(stats_.mirror_margin_max, margin_);
   }
-  if (due || moved_too_far(t, y)) {
+  // Reordering: where the serial run rebuilds its list and sorts its workspace, the local system is
+  // made again in the new order. Not at an evaluation the serial run does not make (an integrator
+  // starting again on a new share): the serial list is not tested there.
+  bool sorted = false;
+  if (reorder_ && *watching_) {
+    if (!stored) owned_positions(t, y);
+    stored = true;
+    sorted = serial_list_stale();
+  }
+  if (due || sorted || moved_too_far(t, y)) {
     if (!stored) owned_positions(t, y);
     plan();
   }

@@ -52,6 +52,16 @@
 // evaluation at a stage state refreshes the halo from that state like any other, since the state
 // alone is exchanged per evaluation.
 //
+// Reordering (discretization.reorder, neighbors/particle_reorder.hpp): the serial run sorts its
+// workspace along a Morton curve at each rebuild of its neighbour list, particles in one cell by
+// state index, and its rows list their neighbours in that order. Each rank runs the serial list's
+// displacement test on the whole scene (serial_list_stale(): every particle's displacement since the
+// serial rebuild, reduced over the ranks, with the serial support and skin) and, where the serial
+// run rebuilds, keeps each particle's position there, which moves with it and travels with the halo.
+// A local system (assembled without reordering) then holds its particles in the serial workspace's
+// order, by the Morton codes of those positions on the serial grid and ties by global id, and is made
+// again at every serial rebuild: every row lists the serial neighbours in the serial order.
+//
 // The implicit-explicit integrators (arkode_imex, leapfrog_imex) see an ImexSystem: rhs_explicit
 // records the viscous operator of the owned fluid rows, taken from the local system's operator,
 // whose columns past the owned rows are halo velocities (velocity_halo.hpp). Applying it fetches
@@ -152,8 +162,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void refresh_local(double t, const double* y);
   const SphSystem<D>& local_system() const { return *local_; }
   const std::vector<double>& local_state() const { return y_local_; }
-  // The local system's row of each owned particle, and the global id of each local row (fluid and
-  // walls, ascending; ghost images have none).
+  // The local system's row of each owned particle, and the global id of each local row (fluid, then
+  // walls, each ascending, or in the serial workspace's order when reordering; ghost images have none).
   const std::vector<std::uint32_t>& owned_rows() const { return owned_at_; }
   const std::vector<std::uint64_t>& local_gid() const { return local_gid_; }
 
@@ -186,6 +196,7 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
     double imbalance_seen = 1.0;    // the same, at the last re-plan
     long repartitions = 0;          // partitions after the first
     double mirror_margin_max = 0.0; // the deepest crossing of a ghost mirror, times 2 D, over the run (m)
+    long serial_sorts = 0;          // reordering: rebuilds of the serial list, each a new local order
   };
   Stats stats() const;
   // Pairs in the rows of the current local neighbour list: the owned rows' (this rank's share of
@@ -197,6 +208,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // x_now_ (current after prepare_local() only when a plan was made or the scene has ghost walls).
   void owned_positions(double t, const double* y);
   bool moved_too_far(double t, const double* y) const;  // collective
+  // Collective, reordering: whether the serial list would be rebuilt now (x_now_ current); if so its
+  // positions and grid are taken for the local order.
+  bool serial_list_stale();
   // Collective: the owned positions at (t, y), the largest h, and a halo plan when one is due.
   void prepare_local(double t, const double* y);
   void exchange_halo(const double* y);        // collective: the halo's state rows into halo_rows_
@@ -241,6 +255,13 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<GhostPlane<D>> ghost_planes_;
   double margin_ = 0.0, margin_plan_ = 0.0;  // mirror_margin() now and at the halo plan
   std::vector<double> e_own_;  // per owned particle: the scene's fixed e (walls; unused for the fluid)
+  // Reordering: per owned particle its position at the serial list's latest rebuild, which orders the
+  // local systems; that rebuild's support and Morton cell; whether there was one since the start or
+  // since fluid last left the run.
+  bool reorder_ = false;
+  std::array<std::vector<double>, D> x_sorted_;
+  double sorted_support_ = 0.0, sorted_cell_ = 0.0;
+  bool sorted_once_ = false;
   // Variable h: h(0) of each owned particle; the largest h of the latest evaluation and of
   // the halo plan (the list radius, and the halo's reach, follow it); the kernel support per unit h.
   bool variable_h_ = false;

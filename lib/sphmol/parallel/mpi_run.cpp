@@ -247,6 +247,7 @@ class MpiRun final : public PartitionedRun<D> {
             {"halo_depth_list_radii", s.depth},
             {"halo_plans", s.plans},
             {"ghost_mirror_margin_max", s.mirror_margin_max},
+            {"reorder_serial_list_rebuilds", s.serial_sorts},
             {"owned_particles", owned},
             {"owned_fluid", fluid},
             {"halo_particles_max", halo},
@@ -281,17 +282,17 @@ class MpiRun final : public PartitionedRun<D> {
 // What the distributed system does not support yet: a ConfigError naming the keys, on every rank.
 template <int D>
 void refuse_unsupported(const Config& config, const SphSystem<D>& whole) {
-  const auto& disc = config.discretization;
   std::vector<std::string> why;
   const std::string& integrator = config.time.integrator;
   if (integrator != "leapfrog" && integrator != "leapfrog_kdk" && integrator != "leapfrog_imex" && integrator != "arkode_erk" &&
       integrator != "cvode_adams" && integrator != "arkode_imex")
     why.push_back("time.integrator: '" + integrator +
                   "' (leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_imex and cvode_adams run over ranks)");
-  if (disc.boundary != "wall_particles" && disc.boundary != "ghost")
-    why.push_back("discretization.boundary: '" + disc.boundary + "' (wall_particles and ghost run over ranks)");
-  if (whole.particles().any_body_treatment(WallTreatment::repulsive)) why.push_back("walls with treatment: repulsive");
-  if (disc.reorder) why.push_back("discretization.reorder: true");
+  // Every discretization.boundary runs over ranks, and so do repulsive wall bodies: the repulsive
+  // force (boundary/repulsive_force.hpp) sums over each fluid row's wall neighbours in the stored pair
+  // list, which the halo holds as for any other term, and the per-body laws are among the tables every
+  // rank keeps whole (parallel/particle_columns.hpp). Reordering runs too: the local systems keep
+  // their particles in the serial workspace's order (parallel/distributed_system.hpp).
   // Ghost walls are the one generated set the local systems rebuild (distributed_system.hpp).
   if (whole.has_generator() && !dynamic_cast<const GhostGenerator<D>*>(whole.generator()))
     why.push_back("generated particles other than ghost walls");

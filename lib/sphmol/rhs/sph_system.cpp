@@ -590,8 +590,21 @@ std::vector<std::string> SphSystem<D>::implicit_terms() const {
 template <int D>
 void SphSystem<D>::release_particles() {
   if (rhs_calls_ > 0 || workspace_allocated_) throw std::logic_error("SphSystem::release_particles: the system was evaluated");
-  if (reorder_) throw std::logic_error("SphSystem::release_particles: not with reordering");
   const auto drop = [](auto& v) { std::decay_t<decltype(v)>().swap(v); };
+  // Reordering keeps a copy of the particles for its workspace (set_reorder), in the initial order.
+  if (reorder_) {
+    for (int d = 0; d < D; ++d) {
+      drop(wp_.x[d]);
+      drop(wp_.v[d]);
+      drop(wp_.x_ref[d]);
+      drop(wp_.wall_normal[d]);
+    }
+    for (auto* v : {&wp_.mass, &wp_.rho, &wp_.wall_depth, &wp_.rest_density, &wp_.viscosity}) drop(*v);
+    drop(wp_.kind);
+    drop(wp_.stationary);
+    drop(wp_.body);
+    drop(wp_.motion);
+  }
   for (int d = 0; d < D; ++d) {
     drop(particles_.x[d]);
     drop(particles_.v[d]);
@@ -681,10 +694,12 @@ void SphSystem<D>::reorder_workspace() {
   const std::size_t nf = layout_.n, nb = n_base_;
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = ws_.x[d].data();
-  // Cells half the list radius wide: neighbours within a few cells, a few particles per cell.
+  // Cells half the list radius wide: neighbours within a few cells, a few particles per cell. Those
+  // in one cell by state index: the order is then a function of the positions alone, which a run
+  // over ranks reproduces in its local systems from the global ids (parallel/distributed_system.hpp).
   const double cell = 0.5 * pairs_->list_radius();
-  const auto fluid = morton_order<D>(xs, 0, nf, domain_, cell);
-  const auto walls = morton_order<D>(xs, nf, nb, domain_, cell);
+  const auto fluid = morton_order<D>(xs, 0, nf, domain_, cell, perm_.data());
+  const auto walls = morton_order<D>(xs, nf, nb, domain_, cell, perm_.data());
   std::vector<double> td;
   std::vector<std::uint32_t> tu;
   std::vector<std::uint8_t> tb;

@@ -136,7 +136,8 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // Ghost particles (or any generated set) rebuilt at every evaluation; see rhs/particle_generator.hpp.
   void set_generator(std::unique_ptr<ParticleGenerator<D>> g);
   // Locality reordering (neighbors/particle_reorder.hpp): at every Verlet-list rebuild the workspace
-  // index is re-sorted along a Morton curve. Only the workspace is reordered: y and ydot keep the
+  // index is re-sorted along a Morton curve, particles in one cell by state index (so the order is a
+  // function of the positions at the rebuild). Only the workspace is reordered: y and ydot keep the
   // state order (gathered and scattered through the permutation), so an integrator never sees it and
   // results change only by floating-point summation order. Set before the first rhs(); not with a
   // particle generator (its images refer to workspace indices of the previous order).
