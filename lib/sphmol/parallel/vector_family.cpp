@@ -60,8 +60,9 @@ namespace {
 // The clone operations of a member: nvector_parallel's own, then the clone joins its template's
 // family. They are C callbacks: no exception may leave them (SUNDIALS reads a null clone as a failed
 // allocation).
-N_Vector tracked_clone(N_Vector w) {
-  N_Vector v = N_VClone_Parallel(w);
+// nvector_parallel's clone `make` of w, joined to w's family.
+N_Vector join_family(N_Vector w, N_Vector (*make)(N_Vector)) {
+  N_Vector v = make(w);
   if (!v) return nullptr;
   try {
     if (auto family = FamilyRegistry::get().find(w)) FamilyRegistry::get().add(v, std::move(family));
@@ -72,17 +73,8 @@ N_Vector tracked_clone(N_Vector w) {
   return v;
 }
 
-N_Vector tracked_clone_empty(N_Vector w) {
-  N_Vector v = N_VCloneEmpty_Parallel(w);
-  if (!v) return nullptr;
-  try {
-    if (auto family = FamilyRegistry::get().find(w)) FamilyRegistry::get().add(v, std::move(family));
-  } catch (...) {
-    N_VDestroy_Parallel(v);
-    return nullptr;
-  }
-  return v;
-}
+N_Vector tracked_clone(N_Vector w) { return join_family(w, N_VClone_Parallel); }
+N_Vector tracked_clone_empty(N_Vector w) { return join_family(w, N_VCloneEmpty_Parallel); }
 
 void tracked_destroy(N_Vector v) {
   if (!v) return;

@@ -153,8 +153,24 @@ int ArkodeImex::step_done_callback(double t, N_Vector y, void* self) {
   return 0;
 }
 
-void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
+void ArkodeImex::bind(OdeSystem& sys, double t, const double* y) {
   sys_ = &sys;
+  imex_ = dynamic_cast<ImexSystem*>(&sys);
+  if (!imex_) throw std::invalid_argument("time.integrator: arkode_imex needs a system with an implicit-explicit split");
+  vb_ = sys.velocities_begin();
+  nv_ = sys.velocities_end() - vb_;
+  const std::size_t n = sys.size();
+  cache_fe_.assign(n, 0.0);
+  cache_w_.assign(nv_, 0.0);
+  wn_.assign(nv_, 0.0);
+  cached_ = false;
+  evaluate(t, y);  // primes the CFL limit and records the operator of the step starting at (t, y)
+  std::swap(frozen_, scratch_);
+  cache_frozen_ = true;
+  if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
+}
+
+void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   imex_ = dynamic_cast<ImexSystem*>(&sys);
   if (!imex_) throw std::invalid_argument("time.integrator: arkode_imex needs a system with an implicit-explicit split");
   if (imex_->implicit_terms().empty())
@@ -162,16 +178,7 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
   const auto pair = ark_pair_of(opt_.table);
   if (!pair) throw std::invalid_argument("time.table: '" + opt_.table + "' is not one table of an ARK ImEx pair");
   t_ = t0;
-  vb_ = sys.velocities_begin();
-  nv_ = sys.velocities_end() - vb_;
-  const std::size_t n = sys.size();
-  cache_fe_.assign(n, 0.0);
-  cache_w_.assign(nv_, 0.0);
-  wn_.assign(nv_, 0.0);
-  evaluate(t0, y);  // primes the CFL limit and the operator of the first step
-  std::swap(frozen_, scratch_);
-  cache_frozen_ = true;
-  if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
+  bind(sys, t0, y);
 
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNContext_Create failed");
   // Order-independent norms (time/state_vector.hpp): the same steps on any thread or rank count.
@@ -204,7 +211,7 @@ void ArkodeImex::initialize(OdeSystem& sys, double t0, double* y) {
     check(ARKStepSetCFLFraction(mem_, kCflFraction), "SetCFLFraction");
     check(ARKStepSetInitStep(mem_, sys.stable_step()), "SetInitStep");
   }
-  ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_, n);
+  ls_ = std::make_unique<StageLinearSolver>(ctx_, opt_.krylov, &frozen_, vb_, sys.size());
   ls_->set_gamma([this] {
     double gamma = 0.0;
     check(ARKStepGetCurrentGamma(mem_, &gamma), "GetCurrentGamma");
@@ -227,24 +234,11 @@ void ArkodeImex::resize(OdeSystem& sys, double t, double* y) {
   if (!mem_) throw std::logic_error("ArkodeImex::resize before initialize");
   if (t != t_) throw std::logic_error("ArkodeImex::resize: the state is not at the integrator's time");
   if (N_VGetArrayPointer(y_) != y) throw std::logic_error("ArkodeImex::resize: the system did not move the state vector with its share");
-  sys_ = &sys;
-  imex_ = dynamic_cast<ImexSystem*>(&sys);
-  if (!imex_) throw std::invalid_argument("time.integrator: arkode_imex needs a system with an implicit-explicit split");
-  vb_ = sys.velocities_begin();
-  nv_ = sys.velocities_end() - vb_;
-  const std::size_t n = sys.size();
-  cache_fe_.assign(n, 0.0);
-  cache_w_.assign(nv_, 0.0);
-  wn_.assign(nv_, 0.0);
-  cached_ = false;
   // Between steps y is y_n, at which step_done_callback (or initialize) recorded L_n, b_n and left
   // that evaluation cached: recorded again here over the new share, the same rows with the same
   // entries (parallel/distributed_system.hpp).
-  evaluate(t, y);
-  std::swap(frozen_, scratch_);
-  cache_frozen_ = true;
-  if (frozen_.size() != nv_) throw std::logic_error("arkode_imex: the implicit operator does not match the velocity block");
-  ls_->set_block(vb_, n);
+  bind(sys, t, y);
+  ls_->set_block(vb_, sys.size());
 }
 
 void ArkodeImex::advance(double tout) {

@@ -77,6 +77,9 @@ class ArkodeImex final : public Integrator {
   // f_E(t, y) unfrozen and W = L(x) v + b(x) of the state, from the cache when (t, y) is the last
   // state evaluated.
   void evaluate(double t, const double* y);
+  // Takes `sys` at (t, y): its velocity block, empty caches, and the frozen operator recorded at
+  // (t, y). initialize() and resize() (the new share after a repartition) alike.
+  void bind(OdeSystem& sys, double t, const double* y);
 
   Options opt_;
   OdeSystem* sys_ = nullptr;
