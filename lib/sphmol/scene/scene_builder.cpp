@@ -490,7 +490,8 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShar
     std::array<double, D> v0{};
     for (std::size_t d = 0; d < w.velocity.size(); ++d) v0[d] = w.velocity[d];
     // A moving body's walls start with its motion's velocity at t = 0 (Particles::set_motion), which
-    // the velocity scale reads: one wall particle of the body stands for the motion's law here.
+    // the velocity scale reads for every wall particle, kept or not: `one` holds a copy of each
+    // (the body's walls, a surface's size) to get it from the motion.
     std::int32_t motion = -1;
     if (w.motion) {
       try {
