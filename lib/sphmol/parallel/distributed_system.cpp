@@ -50,12 +50,15 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       domain_(whole.domain()),
       whole_layout_(whole.layout()),
       implicit_terms_(whole.implicit_terms()),
+      cfl_(whole.cfl_limits()),
       monitors_(whole.monitors()) {
   if (whole.rhs_evaluations() > 0) throw std::logic_error("DistributedSystem: the whole system must not be evaluated yet");
   // Reordering: the local systems keep their particles in the serial workspace's order instead of
   // reordering a workspace of their own (the header), so they are assembled without it.
   reorder_ = whole.reorder();
   config_.discretization.reorder = false;
+  // The most viscous liquid of the whole scene, whatever part of it `whole` holds (max is exact).
+  cfl_.kinematic_viscosity = comm.max(cfl_.kinematic_viscosity);
   // Ghost (mirror) walls: every local system is assembled with the whole system's mirrors (the header).
   if (whole.has_generator()) {
     const auto* ghosts = dynamic_cast<const GhostGenerator<D>*>(whole.generator());
@@ -686,7 +689,7 @@ void DistributedSystem<D>::evaluate(double t, const double* y, double* ydot, Vis
   double all[3];
   MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MIN, comm_.handle());
   // As SphSystem: no viscous limit for the explicit part of an IMEX split.
-  const CflLimits& cfl = local_->cfl_limits();
+  const CflLimits& cfl = cfl_;
   stable_step_ = cfl_step(cfl, all[0], -all[1], all[2], op == nullptr);
   widest_step_ = cfl_step(cfl.widest(), all[0], -all[1], all[2], op == nullptr);
   if (rhs_evals_ == 1) first_stable_step_ = stable_step_;

@@ -278,6 +278,10 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   std::vector<std::uint32_t> local_row_, local_column_;
   ViscousOperator local_op_;
   std::vector<std::string> implicit_terms_;
+  // The whole scene's step limits: a local system's viscous limit would be that of the liquids it
+  // holds (the most viscous of its own and halo particles), and ranks holding different liquids would
+  // step differently.
+  CflLimits cfl_;
   std::unique_ptr<SphSystem<D>> local_;
   std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // the whole system's
   std::shared_ptr<bool> watching_ = std::make_shared<bool>(true);
