@@ -69,6 +69,18 @@ void require_same_pairs(const Cloud<D>& c, double radius) {
       if (c.kind[i] == Kind::Wall && c.kind[ref.j[k]] == Kind::Wall) ++walls_only;
   CHECK(walls_only == 0);
   CHECK(ref.pairs() > 0);
+  // The rows' lengths without the pairs (what a partition by pair count reads), from every search;
+  // the cell list counts in its own pass, then builds its list again as before.
+  std::vector<std::uint32_t> lengths(ref.rows());
+  for (std::size_t i = 0; i < ref.rows(); ++i) lengths[i] = ref.offset[i + 1] - ref.offset[i];
+  CellListSearch<D> counting;
+  CHECK(counting.row_lengths(c.input(radius)) == lengths);
+  PairList again;
+  counting.build(c.input(radius), again);
+  CHECK(again.offset == ref.offset);
+  CHECK(again.j == ref.j);
+  CHECK(KdTreeSearch<D>().row_lengths(c.input(radius)) == lengths);
+  CHECK(AllPairsSearch<D>().row_lengths(c.input(radius)) == lengths);
 }
 
 }  // namespace

@@ -164,14 +164,6 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
         const std::uint8_t in_i = in.kind[i] != Kind::Out ? 1 : 0;
         std::array<double, D> xi;
         for (int d = 0; d < D; ++d) xi[d] = in.x[d][i];
-        // A row holds at most m entries (room for them per row, not per cell: one crowded cell
-        // could otherwise ask for m^2).
-        if (capacity < used + m) {
-          capacity = std::max(capacity + capacity / 4, used + m);
-          auto grown = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
-          std::copy(local.get(), local.get() + used, grown.get());
-          local = std::move(grown);
-        }
         // pd.is_pair(in, i, cand[k]) on the copied coordinates, in two loops: the tests into a mask
         // over contiguous arrays, with no store that depends on the outcome, which vectorises; then
         // the listed candidates moved to the row (the one serial dependency, len).
@@ -181,6 +173,20 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
           std::array<double, D> dx;
           for (int d = 0; d < D; ++d) dx[d] = xi[d] - cand_x[d][k];
           on[k] = static_cast<std::uint8_t>(pd.within(dx) & (cand[k] != i) & (fi | cand_fluid[k]) & in_i & cand_in[k]);
+        }
+        if (counting_) {
+          std::uint32_t len = 0;
+          for (std::size_t k = 0; k < m; ++k) len += on[k];
+          out.offset[i + 1] = len;
+          continue;
+        }
+        // A row holds at most m entries (room for them per row, not per cell: one crowded cell
+        // could otherwise ask for m^2).
+        if (capacity < used + m) {
+          capacity = std::max(capacity + capacity / 4, used + m);
+          auto grown = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
+          std::copy(local.get(), local.get() + used, grown.get());
+          local = std::move(grown);
         }
         std::uint32_t* const row = local.get() + used;
         std::size_t len = 0;
@@ -196,28 +202,44 @@ void CellListSearch<D>::build(const SearchInput<D>& in, PairList& out) {
     // Row lengths to offsets: a prefix sum over fixed blocks of rows, then the block sums.
     const long lo = n * t / threads, hi = n * (t + 1) / threads;
 #pragma omp barrier
-    std::size_t sum = 0;
-    for (long i = lo; i < hi; ++i) sum += out.offset[i + 1];
-    block_sum[t + 1] = sum;
+    if (!counting_) {  // the same on every thread (barriers inside)
+      std::size_t sum = 0;
+      for (long i = lo; i < hi; ++i) sum += out.offset[i + 1];
+      block_sum[t + 1] = sum;
 #pragma omp barrier
 #pragma omp single
-    {
-      for (int b = 0; b < threads; ++b) block_sum[b + 1] += block_sum[b];
-      out.j.resize(block_sum[threads]);
-    }
-    auto running = static_cast<std::uint32_t>(block_sum[t]);
-    for (long i = lo; i < hi; ++i) out.offset[i + 1] = running += out.offset[i + 1];
-#pragma omp barrier
-    for (std::size_t c = c_lo; c < c_hi; ++c)
-      for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
-        const std::uint32_t i = cell_items_[q];
-        const std::uint32_t* const from = local.get() + row_at_[i];
-        std::copy(from, from + (out.offset[i + 1] - out.offset[i]), out.j.begin() + out.offset[i]);
+      {
+        for (int b = 0; b < threads; ++b) block_sum[b + 1] += block_sum[b];
+        out.j.resize(block_sum[threads]);
       }
+      auto running = static_cast<std::uint32_t>(block_sum[t]);
+      for (long i = lo; i < hi; ++i) out.offset[i + 1] = running += out.offset[i + 1];
+#pragma omp barrier
+      for (std::size_t c = c_lo; c < c_hi; ++c)
+        for (std::uint32_t q = cell_start_[c]; q < cell_start_[c + 1]; ++q) {
+          const std::uint32_t i = cell_items_[q];
+          const std::uint32_t* const from = local.get() + row_at_[i];
+          std::copy(from, from + (out.offset[i + 1] - out.offset[i]), out.j.begin() + out.offset[i]);
+        }
+    }
     // Released, not kept for the next build: with it the list existed twice between builds, which
     // made a quarter of the peak memory at 1e6 particles (sph-bench Memory).
     local.reset();
   }
+}
+
+template <int D>
+std::vector<std::uint32_t> CellListSearch<D>::row_lengths(const SearchInput<D>& in) {
+  PairList lengths;  // offset[i + 1]: row i's length; no pair stored
+  counting_ = true;
+  try {
+    build(in, lengths);
+  } catch (...) {
+    counting_ = false;
+    throw;
+  }
+  counting_ = false;
+  return std::vector<std::uint32_t>(lengths.offset.begin() + 1, lengths.offset.end());
 }
 
 template class CellListSearch<1>;

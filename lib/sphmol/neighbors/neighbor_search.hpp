@@ -28,6 +28,15 @@ class NeighborSearch {
   virtual ~NeighborSearch() = default;
   virtual std::string_view name() const = 0;
   virtual void build(const SearchInput<D>& in, PairList& out) = 0;
+  // The length of every row of the list build() makes (each particle's pair count), without keeping
+  // the pairs: what a partition by pair count weighs particles by. Default: build() and the offsets.
+  virtual std::vector<std::uint32_t> row_lengths(const SearchInput<D>& in) {
+    PairList list;
+    build(in, list);
+    std::vector<std::uint32_t> len(in.n);
+    for (std::size_t i = 0; i < in.n; ++i) len[i] = static_cast<std::uint32_t>(list.offset[i + 1] - list.offset[i]);
+    return len;
+  }
 };
 
 // "kdtree", "cell_list" or "all_pairs".

@@ -11,6 +11,7 @@
 #include <string>
 #include <tuple>
 
+#include "sphmol/core/scene_share.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/neighbors/neighbor_search.hpp"
 #include "sphmol/neighbors/particle_reorder.hpp"
@@ -48,7 +49,7 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
       rcb_(std::make_unique<RcbPartitioner<D>>(comm, imbalance_tolerance)),
       rebalance_threshold_(rebalance_threshold),
       domain_(whole.domain()),
-      whole_layout_(whole.layout()),
+      whole_layout_(whole.whole_layout()),
       implicit_terms_(whole.implicit_terms()),
       cfl_(whole.cfl_limits()),
       monitors_(whole.monitors()) {
@@ -66,9 +67,13 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     ghost_walls_ = ghosts->walls();
     ghost_planes_ = ghosts->planes();
   }
+  // `whole` holds the whole scene or this rank's share of it (SphSystem::is_share): its particles are
+  // the scene's [first, first + P.size()).
   const Particles<D>& P = whole.particles();
-  const std::size_t n = P.size();
-  n_fluid_global_ = P.n_fluid;
+  const auto scene = whole.whole_scene();
+  const std::size_t n = scene.size, first = scene.first;
+  n_fluid_global_ = scene.fluid;
+  scene_particles_built_ = P.size();
   variable_h_ = config.discretization.smoothing_length != "constant";
   support_ = kernel_info<D>(config.discretization.kernel).support;
   // The local systems are assembled with the scene's own spacing: h = smoothing_ratio * spacing and
@@ -84,14 +89,21 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   range_ = stats_.depth * whole.pair_list().list_radius();
   skin_ = config.discretization.skin * h;
 
-  if (y0.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem: y0 is not a whole state");
-  // Each rank starts from an equal slice of the global ids, which RCB cuts by particle count.
-  const auto R = static_cast<std::size_t>(comm.size()), r = static_cast<std::size_t>(comm.rank());
-  const std::size_t lo = n * r / R, hi = n * (r + 1) / R;
-  std::vector<std::uint32_t> slice(hi - lo);
+  const StateLayout<D>& Y = whole.layout();  // y0's
+  if (y0.size() != Y.size()) throw std::invalid_argument("DistributedSystem: y0 is not a state of the scene's particles");
+  // Each rank starts from an equal slice of the global ids (core/scene_share.hpp), which RCB cuts by
+  // particle count.
+  const SceneShare share{static_cast<std::size_t>(comm.rank()), static_cast<std::size_t>(comm.size())};
+  const std::size_t lo = share.begin(n), hi = share.end(n);
+  if (lo < first || hi > first + P.size() || (whole.is_share() && (lo != first || hi != first + P.size())))
+    throw std::invalid_argument("DistributedSystem: the system holds particles [" + std::to_string(first) + ", " +
+                                std::to_string(first + P.size()) + ") of the scene, not this rank's share [" +
+                                std::to_string(lo) + ", " + std::to_string(hi) + ")");
+  std::vector<std::uint32_t> slice(hi - lo), rows(hi - lo);
   std::iota(slice.begin(), slice.end(), static_cast<std::uint32_t>(lo));
-  const std::size_t slice_fluid = std::clamp(P.n_fluid, lo, hi) - lo;
-  owned_ = select_particles(P, slice, slice_fluid);
+  std::iota(rows.begin(), rows.end(), static_cast<std::uint32_t>(lo - first));
+  const std::size_t slice_fluid = std::clamp(n_fluid_global_, lo, hi) - lo;
+  owned_ = select_particles(P, rows, slice_fluid);
   gid_.assign(slice.begin(), slice.end());
   if (reorder_)
     for (auto& c : x_sorted_) c.assign(slice.size(), 0.0);
@@ -101,24 +113,24 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   if (whole_layout_.has_energy) {
     const std::vector<double>& e = whole.energy();
     e_own_.resize(slice.size());
-    for (std::size_t k = 0; k < slice.size(); ++k) e_own_[k] = e[slice[k]];
+    for (std::size_t k = 0; k < slice.size(); ++k) e_own_[k] = e[rows[k]];
   }
   if (variable_h_) {
     const std::vector<double>& h0 = whole.smoothing_lengths();
     h0_own_.resize(slice.size());
-    for (std::size_t k = 0; k < slice.size(); ++k) h0_own_[k] = h0[slice[k]];
+    for (std::size_t k = 0; k < slice.size(); ++k) h0_own_[k] = h0[rows[k]];
   }
   std::array<std::vector<double>, D> xw;
   for (int d = 0; d < D; ++d) {
     xw[d].resize(hi - lo);
     for (std::size_t i = lo; i < hi; ++i)
-      xw[d][i - lo] = domain_.wrap(d, i < P.n_fluid ? y0[whole_layout_.position(d) + i] : P.wall_position(d, i, t0));
+      xw[d][i - lo] = domain_.wrap(d, i < n_fluid_global_ ? y0[Y.position(d) + (i - first)] : P.wall_position(d, i - first, t0));
   }
   // The slice's part of the start state moves with the particles from here on: neither the whole
   // scene nor y0 is read again, and the caller may drop them now (scene_read), before the searches
   // of the partition by pair count.
   set_layout();
-  std::vector<double> y = local_part(y0);
+  std::vector<double> y = local_part(y0, Y, first);
   if (scene_read) scene_read();
   {
     std::array<const double*, D> xs;
@@ -172,10 +184,10 @@ void DistributedSystem<D>::balance_by_pairs(double t0, std::vector<double>& y) {
   in.n = kind.size();
   in.domain = &domain_;
   in.radius = range_ / stats_.depth;  // the list radius
-  PairList rows;
-  make_neighbor_search<D>(config_.discretization.neighbor_search)->build(in, rows);
+  // The rows' lengths alone: the pairs themselves are not needed (NeighborSearch::row_lengths).
+  const std::vector<std::uint32_t> rows = make_neighbor_search<D>(config_.discretization.neighbor_search)->row_lengths(in);
   weight_.resize(no);
-  for (std::size_t o = 0; o < no; ++o) weight_[o] = 1.0 + (rows.offset[o + 1] - rows.offset[o]);
+  for (std::size_t o = 0; o < no; ++o) weight_[o] = 1.0 + rows[o];
   std::array<const double*, D> xs;
   for (int d = 0; d < D; ++d) xs[d] = x_now_[d].data();
   const RcbResult<D> cut = rcb_->partition(xs, weight_.data(), gid_.data(), gid_.size());
@@ -757,15 +769,22 @@ std::vector<double> DistributedSystem<D>::whole_fluid_density() const {
 
 template <int D>
 std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& whole) const {
-  if (whole.size() != whole_layout_.size()) throw std::invalid_argument("DistributedSystem::local_part: not a whole state");
+  return local_part(whole, whole_layout_, 0);
+}
+
+template <int D>
+std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& source, const StateLayout<D>& W,
+                                                     std::size_t first) const {
+  if (source.size() != W.size()) throw std::invalid_argument("DistributedSystem::local_part: not a state of that layout");
   const StateLayout<D>& L = layout_;
-  const StateLayout<D>& W = whole_layout_;
   const std::size_t blocks = state_blocks();
   std::vector<double> y(L.size());
+  // Fluid id g is the source's fluid row g - first; wall id g its wall (g - first) - W.n.
   for (std::size_t o = 0; o < nfo_; ++o)
-    for (std::size_t b = 0; b < blocks; ++b) y[b * nfo_ + o] = whole[b * W.n + gid_[o]];
+    for (std::size_t b = 0; b < blocks; ++b) y[b * nfo_ + o] = source[b * W.n + (gid_[o] - first)];
   if (L.n_wall_density > 0)
-    for (std::size_t o = nfo_; o < owned_.size(); ++o) y[L.wall_density() + (o - nfo_)] = whole[W.wall_density() + (gid_[o] - W.n)];
+    for (std::size_t o = nfo_; o < owned_.size(); ++o)
+      y[L.wall_density() + (o - nfo_)] = source[W.wall_density() + (gid_[o] - first - W.n)];
   return y;
 }
 

@@ -135,6 +135,8 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // every rank's part, on rank 0 only (the one that measures and writes); returns true there. On the
   // other ranks `whole` is left as it was: no rank but the root holds a gathered copy of the scene.
   std::vector<double> local_part(const std::vector<double>& whole) const;
+  // The particles this rank built of the scene: all of them, or its share (SphSystem::is_share).
+  std::size_t scene_particles_built() const { return scene_particles_built_; }
   // This rank's part of the constructor's y0 (once; empty afterwards).
   std::vector<double> take_initial_state() { return std::move(initial_state_); }
   bool gather(const double* y, std::vector<double>& whole) const;
@@ -282,6 +284,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   // holds (the most viscous of its own and halo particles), and ranks holding different liquids would
   // step differently.
   CflLimits cfl_;
+  std::size_t scene_particles_built_ = 0;
+  // The owned rows of `source`, a state of layout W of the scene's particles [first, ...).
+  std::vector<double> local_part(const std::vector<double>& source, const StateLayout<D>& W, std::size_t first) const;
   std::unique_ptr<SphSystem<D>> local_;
   std::vector<std::shared_ptr<Monitor<D>>> monitors_;  // the whole system's
   std::shared_ptr<bool> watching_ = std::make_shared<bool>(true);

@@ -11,6 +11,7 @@
 #include "sphmol/parallel/communicator_reduction.hpp"
 #include "sphmol/parallel/distributed_health_check.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
+#include "sphmol/parallel/piece_collectives.hpp"
 #include "sphmol/parallel/whole_fields.hpp"
 #include "sphmol/io/double_codec.hpp"
 
@@ -103,15 +104,7 @@ class MpiRun final : public PartitionedRun<D> {
         if (sources[g] < owned_fluid.size() && owned_fluid[sources[g]]) p.ghost_rows.push_back(ghosts->base() + g);
     }
     p.row_ids.assign(sys_.local_gid().begin(), sys_.local_gid().end());
-    p.rank = comm_.rank();
-    p.ranks = comm_.size();
-    p.barrier = [this] { comm_.barrier(); };
-    p.sum = [this](std::uint64_t v) { return comm_.sum(v); };
-    p.min = [this](double v) { return comm_.min(v); };
-    p.max = [this](double v) { return comm_.max(v); };
-    p.gather_bytes = [this](const std::vector<std::byte>& v) { return comm_.gather_v(v, 0); };
-    p.max_each = [this](const std::vector<double>& v) { return comm_.max(v); };
-    p.sum_each = [this](const std::vector<std::uint64_t>& v) { return comm_.sum(v); };
+    static_cast<PieceCollectives&>(p) = piece_collectives(comm_);
     return p;
   }
   void barrier() override { comm_.barrier(); }
@@ -235,7 +228,11 @@ class MpiRun final : public PartitionedRun<D> {
     const auto whole_rebuilds = comm_.sum(static_cast<std::uint64_t>(whole_->pair_list().rebuilds()));
     // The whole scene's particles each rank still holds: rank 0's alone, after the set-up.
     const auto held = comm_.all_gather(static_cast<std::uint64_t>(whole_->particles_released() ? 0 : whole_->base_particles()));
+    // The particles each rank built of the scene: rank 0 the whole scene; the others their share
+    // when the case builds shares (Case::build_share), else the whole scene too.
+    const auto built = comm_.all_gather(static_cast<std::uint64_t>(sys_.scene_particles_built()));
     return {{"terms_not_run", output_only},
+            {"scene_particles_built", built},
             {"whole_scene_particles_held", held},
             {"whole_scene_evaluations", whole_evaluations},
             {"whole_scene_neighbour_rebuilds", whole_rebuilds},
@@ -309,6 +306,12 @@ MpiRunPartitioner::MpiRunPartitioner(const Communicator& comm, double imbalance_
   if (!(imbalance_tolerance > 1.0)) throw std::invalid_argument("the load imbalance tolerance must be > 1");
   if (!(rebalance_threshold >= 1.0)) throw std::invalid_argument("the rebalance threshold must be >= 1");
 }
+
+SceneShare MpiRunPartitioner::share() const {
+  return {static_cast<std::size_t>(comm_.rank()), static_cast<std::size_t>(comm_.size())};
+}
+
+PieceCollectives MpiRunPartitioner::collectives() const { return piece_collectives(comm_); }
 
 template <int D>
 std::unique_ptr<PartitionedRun<D>> MpiRunPartitioner::make(const Config& config, const SphSystem<D>& whole,

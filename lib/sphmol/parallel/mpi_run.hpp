@@ -17,6 +17,8 @@ class MpiRunPartitioner final : public RunPartitioner {
   MpiRunPartitioner(const Communicator& comm, double imbalance_tolerance, double rebalance_threshold);
 
   bool root() const override { return comm_.rank() == 0; }
+  SceneShare share() const override;
+  PieceCollectives collectives() const override;
   std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
                                                const std::vector<double>& y0, double t0,
                                                const std::function<void()>& scene_read = {}) const override;

@@ -57,7 +57,12 @@ std::string every_text(const ProbeConfig& p) {
 
 template <int D>
 ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
-    : output_times_(config.output.times), t_end_(config.time.t_end), h_(sys.smoothing_length()) {
+    : ProbeObserver(config, whole_piece(sys, sys.initial_state().data())) {}  // the state lives to the end of the call
+
+template <int D>
+ProbeObserver<D>::ProbeObserver(const Config& config, const OwnedPiece<D>& start)
+    : output_times_(config.output.times), t_end_(config.time.t_end), h_(start.system->smoothing_length()) {
+  const SphSystem<D>& sys = *start.system;
   const auto K = kernel_info<D>(sys.kernel_name());
   W_ = K.W;
   dWdr_ = K.dWdr;
@@ -76,17 +81,20 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
   // support (periodic axes: the period).
   const auto& P = sys.particles();
   const auto& dom = sys.domain();
-  const std::vector<double> y0 = sys.initial_state();
+  const double* y0 = start.y;
   const auto& L = sys.layout();
   std::array<double, D> lo, hi;
   for (int d = 0; d < D; ++d) {
     lo[d] = std::numeric_limits<double>::infinity();
     hi[d] = -lo[d];
-    for (std::size_t i = 0; i < P.size(); ++i) {
-      const double x = i < P.n_fluid ? y0[L.position(d) + i] : P.x_ref[d][i];
+    const auto widen = [&](double x) {
       lo[d] = std::min(lo[d], x);
       hi[d] = std::max(hi[d], x);
-    }
+    };
+    for (const std::size_t i : start.fluid_rows) widen(y0[L.position(d) + i]);
+    for (const std::size_t i : start.wall_rows) widen(P.x_ref[d][i]);
+    lo[d] = start.min(lo[d]);
+    hi[d] = start.max(hi[d]);
     if (dom.periodic[d]) {
       lo[d] = dom.lo[d];
       hi[d] = dom.hi[d];
@@ -162,7 +170,9 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
                       " m where the kernel sum of the fluid is 1/2 (scanned in steps of h/4), " + when +
                       "; empty: no fluid on the line";
     } else {  // force
-      const bool any = std::find(P.body.begin(), P.body.end(), c.body_index) != P.body.end();
+      std::uint64_t mine = 0;
+      for (const std::size_t j : start.wall_rows) mine += P.body[j] == c.body_index ? 1 : 0;
+      const bool any = start.sum(mine) > 0;
       if (!any) throw ConfigError(c.where + ": wall body '" + c.body + "' has no wall particles in the scene");
       const auto b = static_cast<std::size_t>(c.body_index);
       if (b < P.body_treatment.size() && P.body_treatment[b] == WallTreatment::repulsive)
@@ -170,7 +180,7 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const SphSystem<D>& sys)
                           "which its massless particles do not exert");
       const auto known = std::find_if(walls_.begin(), walls_.end(), [&](const BodyWalls<D>& w) { return w.body == c.body_index; });
       s.walls = static_cast<std::size_t>(known - walls_.begin());
-      if (known == walls_.end()) walls_.push_back(body_walls<D>(P, c.body_index));
+      if (known == walls_.end()) walls_.push_back(gather_body_walls<D>(start, c.body_index));
       const char* unit = D == 3 ? "N" : D == 2 ? "N/m" : "N/m^2";
       for (int d = 0; d < D; ++d) head << ",F" << kAxis[d] << " [" << unit << "]";
       s.description = "probe " + c.name + ": force of the fluid on wall body " + c.body +

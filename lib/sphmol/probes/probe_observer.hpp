@@ -16,6 +16,7 @@
 #include "sphmol/probes/probe_config.hpp"
 #include "sphmol/probes/wall_force.hpp"
 #include "sphmol/run/case.hpp"
+#include "sphmol/run/whole_piece.hpp"
 
 namespace sphmol {
 
@@ -26,7 +27,12 @@ class ProbeObserver final : public OutputObserver<D> {
   // bounding box widened by the kernel support is a ConfigError at the probe's key (FILE:LINE).
   // The only call that reads sys.particles(): it copies the force probes' walls (BodyWalls). Over
   // ranks, the piece methods read of `whole` only its domain; the rank's own system gives the rest.
+  // A serial run: the whole scene at its initial state.
   ProbeObserver(const Config& config, const SphSystem<D>& sys);
+  // Over ranks (collective): `start` is the rank's particles as the run starts (run/start_piece.hpp);
+  // the probes' checks see the whole scene (its box, the force probes' bodies) and each force probe
+  // keeps the body's walls, gathered from the ranks, without a rank holding the whole scene.
+  ProbeObserver(const Config& config, const OwnedPiece<D>& start);
 
   void at_output(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   // Only the probes without `every` sample at the output times.

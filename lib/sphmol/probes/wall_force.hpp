@@ -15,6 +15,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <stdexcept>
 #include <optional>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "sphmol/parallel/particle_selection.hpp"
 #include "sphmol/physics/artificial_viscosity.hpp"
 #include "sphmol/probes/point_bins.hpp"
+#include "sphmol/run/owned_piece.hpp"
 
 namespace sphmol {
 
@@ -115,6 +118,62 @@ BodyWalls<D> body_walls(const Particles<D>& P, int body) {
   for (std::size_t j = P.n_fluid; j < P.body.size(); ++j)
     if (P.body[j] == body) B.ids.push_back(j);
   B.walls = parallel::select_particles(P, B.ids, 0);  // every per-particle array; n_fluid = 0
+  return B;
+}
+
+// The same from the particles the ranks start a run with (run/start_piece.hpp), collective over its
+// ranks: each rank's walls of the body, joined on every rank in global-id order (a rank building its
+// share of the scene alone holds no other; one rank: body_walls of the whole scene).
+template <int D>
+BodyWalls<D> gather_body_walls(const OwnedPiece<D>& start, int body) {
+  const Particles<D>& P = start.system->particles();
+  std::vector<std::size_t> rows;
+  std::vector<std::uint64_t> ids;
+  for (std::size_t k = 0; k < start.wall_rows.size(); ++k)
+    if (P.body[start.wall_rows[k]] == body) {
+      rows.push_back(start.wall_rows[k]);
+      ids.push_back(static_cast<std::uint64_t>(start.wall_ids[k]));
+    }
+  const Particles<D> mine = parallel::select_particles(P, rows, 0);
+  // This rank's part: the count, the ids, then each per-particle column as its byte count and bytes.
+  std::vector<std::byte> bytes;
+  const auto put = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const std::byte*>(data);
+    bytes.insert(bytes.end(), b, b + n);
+  };
+  const std::uint64_t count = ids.size();
+  put(&count, sizeof count);
+  put(ids.data(), ids.size() * sizeof(std::uint64_t));
+  parallel::for_each_particle_column(mine, [&](const auto& c) {
+    const std::uint64_t n = c.size() * sizeof(c[0]);
+    put(&n, sizeof n);
+    put(c.data(), n);
+  });
+  const std::vector<std::byte> all = start.all_gather_bytes(bytes);
+  BodyWalls<D> B;
+  B.body = body;
+  std::size_t at = 0;
+  const auto get = [&](void* data, std::size_t n) {
+    if (at + n > all.size()) throw std::logic_error("gather_body_walls: the ranks' walls are malformed");
+    if (n > 0) std::memcpy(data, all.data() + at, n);
+    at += n;
+  };
+  while (at < all.size()) {
+    std::uint64_t n_rank = 0;
+    get(&n_rank, sizeof n_rank);
+    std::vector<std::uint64_t> rank_ids(n_rank);
+    get(rank_ids.data(), n_rank * sizeof(std::uint64_t));
+    B.ids.insert(B.ids.end(), rank_ids.begin(), rank_ids.end());
+    parallel::for_each_particle_column(B.walls, [&](auto& c) {
+      std::uint64_t n = 0;
+      get(&n, sizeof n);
+      const std::size_t old = c.size();
+      c.resize(old + n / sizeof(c[0]));
+      get(c.data() + old, n);
+    });
+  }
+  parallel::copy_body_tables(B.walls, P);
+  B.walls.n_fluid = 0;
   return B;
 }
 

@@ -639,6 +639,60 @@ void SphSystem<D>::release_particles() {
   // it from the rows they watch).
   for (const auto& m : monitors_) m->release_whole();
   released_ = true;
+  if (share_) {
+    // From here on the system stands for the whole scene, as a released whole system does.
+    for (auto& i : retired_) i += whole_.first;
+    layout_.n = whole_.fluid;
+    n_base_ = whole_.size;
+    layout_.n_wall_density = fields_.wall_density ? whole_.size - whole_.fluid : 0;
+    ws_.n_wall_density = layout_.n_wall_density;
+    share_ = false;
+  }
+}
+
+template <int D>
+void SphSystem<D>::set_whole_scene(const WholeScene& whole) {
+  if (released_) throw std::logic_error("SphSystem::set_whole_scene: the particles were released");
+  const std::size_t n = n_base_, nf = particles_.n_fluid;
+  // Fluid first in the whole scene: the share's fluid is the whole scene's fluid in its range.
+  if (whole.first + n > whole.size || whole.fluid > whole.size ||
+      nf != std::clamp(whole.fluid, whole.first, whole.first + n) - whole.first)
+    throw std::invalid_argument("SphSystem::set_whole_scene: particles [" + std::to_string(whole.first) + ", " +
+                                std::to_string(whole.first + n) + ") with " + std::to_string(nf) +
+                                " fluid are not a share of a scene of " + std::to_string(whole.size) + " particles, " +
+                                std::to_string(whole.fluid) + " fluid");
+  whole_ = whole;
+  share_ = true;
+}
+
+template <int D>
+typename SphSystem<D>::WholeScene SphSystem<D>::whole_scene() const {
+  if (share_) return whole_;
+  return {0, n_base_, layout_.n};
+}
+
+template <int D>
+StateLayout<D> SphSystem<D>::whole_layout() const {
+  StateLayout<D> w = layout_;
+  if (!share_) return w;
+  w.n = whole_.fluid;
+  w.n_wall_density = fields_.wall_density ? whole_.size - whole_.fluid : 0;
+  return w;
+}
+
+template <int D>
+std::vector<double> SphSystem<D>::share_of(const std::vector<double>& whole) const {
+  const StateLayout<D> W = whole_layout();
+  if (whole.size() != W.size()) throw std::invalid_argument("SphSystem::share_of: not a state of the whole scene");
+  if (!share_) return whole;
+  const StateLayout<D>& L = layout_;
+  std::vector<double> y(L.size());
+  const std::size_t first = whole_.first, nf = L.n, blocks = 2 * D + L.extra_blocks();
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t i = 0; i < nf; ++i) y[b * nf + i] = whole[b * W.n + first + i];
+  // Wall densities: the share's walls are the whole scene's [first + nf, ...), after its fluid.
+  for (std::size_t k = 0; k < L.n_wall_density; ++k) y[L.wall_density() + k] = whole[W.wall_density() + (first + nf - W.n) + k];
+  return y;
 }
 
 template <int D>

@@ -205,6 +205,22 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   // is_retired() and any evaluation are errors afterwards; retire() only records the indices.
   void release_particles();
   bool particles_released() const { return released_; }
+  // A share of a scene (scene/scene_builder.hpp's SceneShare: a run over ranks whose ranks build
+  // their own part of the scene): the system's particles are the whole scene's of global index
+  // [first, first + base_particles()), fluid first as in the whole scene, of `size` particles, `fluid`
+  // of them fluid. Its own state, evaluation and indices are the share's; release_particles() then
+  // leaves the whole scene's counts and layout, as a released whole system has them.
+  struct WholeScene {
+    std::size_t first = 0, size = 0, fluid = 0;
+  };
+  void set_whole_scene(const WholeScene& whole);
+  bool is_share() const { return share_; }
+  // The scene this system is a share of (for a system that is not a share: itself).
+  WholeScene whole_scene() const;
+  // The whole scene's state layout (layout() with its counts).
+  StateLayout<D> whole_layout() const;
+  // This share's part of a whole state in the whole scene's layout (a checkpoint's), in layout().
+  std::vector<double> share_of(const std::vector<double>& whole) const;
   const Domain<D>& domain() const { return domain_; }
   const CflLimits& cfl_limits() const { return cfl_; }
   double smoothing_length() const { return ws_.h; }
@@ -248,6 +264,8 @@ class SphSystem final : public OdeSystem, public ImexSystem {
 
   Particles<D> particles_;
   bool released_ = false;  // release_particles()
+  bool share_ = false;     // set_whole_scene()
+  WholeScene whole_;
   Domain<D> domain_;
   StateLayout<D> layout_;
   std::unique_ptr<KernelPass<D>> kernel_;

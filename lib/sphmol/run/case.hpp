@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/core/scene_share.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/run/owned_piece.hpp"
 #include "sphmol/run/whole_piece.hpp"
@@ -47,6 +48,14 @@ class Case {
   virtual ~Case() = default;
   // Builds the particles, domain and RHS. Called once.
   virtual std::unique_ptr<SphSystem<D>> build(const Config& config) = 0;
+  // A run over ranks: whether the case can build a share of its scene alone, and that build (instead
+  // of build(); called once): the system of the share's particles (SphSystem::set_whole_scene), with
+  // the case's whole-scene quantities (velocity scale, ...) as build() sets them, computed without
+  // holding the whole scene.
+  virtual bool builds_shares() const { return false; }
+  virtual std::unique_ptr<SphSystem<D>> build_share(const Config& config, SceneShare share) {
+    throw std::logic_error("Case::build_share: the case builds the whole scene only");
+  }
   // Name of the reference solution (for the summary).
   virtual std::string reference() const = 0;
   // Error measures at an output time, under the documented keys of the case (e.g. e_rms, e_max).

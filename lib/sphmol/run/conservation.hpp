@@ -80,19 +80,17 @@ class ConservationLog {
   // (run/piece_reduction.hpp), so the two agree to the bit.
   explicit ConservationLog(const SphSystem<D>& sys)
       : fluid_mass_(fixed_point_total(sys.particles().mass.data(), sys.layout().n)) {}
+  // The log of a run starting at t from `start` (collective over its ranks: each rank's particles as
+  // the run starts, run/start_piece.hpp): the fluid mass and the first record, without a rank
+  // holding the whole scene.
+  ConservationLog(const OwnedPiece<D>& start, double t) {
+    fluid_mass_ = record_totals(start, t).mass;
+  }
+  // The scene's fluid mass (the exact sum).
+  double fluid_mass() const { return fluid_mass_; }
   void record(const SphSystem<D>& sys, const double* y, double t) { record(whole_piece(sys, y), t); }
   // Collective over the piece's ranks: every rank records the whole run's totals.
-  void record(const OwnedPiece<D>& piece, double t) {
-    const auto& L = piece.system->layout();
-    const FluidTotals<D> f = fluid_totals(piece);
-    const auto& p = f.momentum;
-    const double ke = f.kinetic, scale = f.momentum_scale, internal = f.internal;
-    times_.push_back(t);
-    momentum_.push_back(p);
-    kinetic_.push_back(ke);
-    momentum_scale_ = std::max(momentum_scale_, scale);
-    if (L.has_energy) total_.push_back(ke + internal);
-  }
+  void record(const OwnedPiece<D>& piece, double t) { record_totals(piece, t); }
 
   nlohmann::json to_json(const SphSystem<D>& sys) const {
     nlohmann::json j;
@@ -127,6 +125,19 @@ class ConservationLog {
   }
 
  private:
+  FluidTotals<D> record_totals(const OwnedPiece<D>& piece, double t) {
+    const auto& L = piece.system->layout();
+    const FluidTotals<D> f = fluid_totals(piece);
+    const auto& p = f.momentum;
+    const double ke = f.kinetic, scale = f.momentum_scale, internal = f.internal;
+    times_.push_back(t);
+    momentum_.push_back(p);
+    kinetic_.push_back(ke);
+    momentum_scale_ = std::max(momentum_scale_, scale);
+    if (L.has_energy) total_.push_back(ke + internal);
+    return f;
+  }
+
   std::vector<double> times_;
   std::vector<std::array<double, D>> momentum_;
   std::vector<double> kinetic_;

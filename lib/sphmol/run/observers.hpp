@@ -7,8 +7,10 @@
 
 namespace sphmol {
 
+// `start`: the rank's particles of the built scene at its initial state (run/start_piece.hpp; a
+// serial run: the whole scene). Probes check their positions against the whole scene and take its
+// kernel. Collective over the ranks of `start`.
 template <int D>
-// `sys`: the built scene (probes check their positions against it and take its kernel).
-std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config, const SphSystem<D>& sys);
+std::vector<std::unique_ptr<OutputObserver<D>>> make_observers(const Config& config, const OwnedPiece<D>& start);
 
 }  // namespace sphmol

@@ -21,7 +21,9 @@
 // on every rank as in the serial run), and each rank takes them out of its own particles and their
 // halo copies (PartitionedRun::take_out).
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -29,6 +31,8 @@
 #include <vector>
 
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/owned_piece.hpp"
+#include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/blow_up.hpp"
 
 namespace sphmol {
@@ -55,59 +59,81 @@ std::vector<std::size_t> fluid_outside_domain(const SphSystem<D>& sys, const dou
 template <int D>
 class Outflow {
  public:
-  // max_fraction: health.max_outflow_fraction, of the fluid mass M of the scene.
-  Outflow(const SphSystem<D>& sys, double max_fraction) : max_fraction_(max_fraction) {
-    const auto& m = sys.particles().mass;
-    for (std::size_t i = 0; i < sys.layout().n; ++i) fluid_mass_ += m[i];
-  }
-
+  // max_fraction: health.max_outflow_fraction, of the fluid mass M of the scene (the exact sum of
+  // the fluid's masses: over ranks the conservation log's, ConservationLog::fluid_mass(), for which no
+  // rank needs the whole scene).
+  Outflow(double fluid_mass, double max_fraction) : max_fraction_(max_fraction), fluid_mass_(fluid_mass) {}
+  Outflow(const SphSystem<D>& sys, double max_fraction)
+      : Outflow(fixed_point_total(sys.particles().mass.data(), sys.layout().n), max_fraction) {}
   // Takes out the fluid outside the domain at (t, y): velocities zeroed in y, SphSystem::retire().
   // Returns whether any particle was taken out; the caller then restarts the integrator. Throws
-  // BlowUp once more than max_fraction of the fluid mass has left. at_start: the state the run
-  // starts from (a checkpoint's), whose particles outside left before it: counted apart, with no
-  // exit time of this run.
-  bool take_out(SphSystem<D>& sys, double* y, double t, bool at_start = false) {
+  // BlowUp once more than max_fraction of the fluid mass has left.
+  bool take_out(SphSystem<D>& sys, double* y, double t) {
     const std::vector<std::size_t> leaving = fluid_outside_domain(sys, y);
     const auto& L = sys.layout();
     for (const std::size_t i : leaving)
       for (int d = 0; d < D; ++d) y[L.velocity(d) + i] = 0.0;
-    return take_out(sys, leaving, t, at_start);
+    return take_out(sys, leaving, t);
+  }
+  // The state the run starts from (a checkpoint's), whose particles outside the domain left before
+  // it: counted apart, with no exit time of this run. Collective over the ranks of `start`, the
+  // rank's particles as the run starts (run/start_piece.hpp): each rank finds those among its own
+  // particles; every rank receives all of them, by global id in ascending order with their masses,
+  // counts them as the serial run does, and takes those its system holds out of it (a share: its own
+  // rows), zeroing their velocities in y (sys's own state). Over ranks the partition then carries
+  // their kind to the ranks' particles.
+  bool take_out_at_start(SphSystem<D>& sys, double* y, const OwnedPiece<D>& start, double t) {
+    const auto& L = sys.layout();
+    const auto& dom = sys.domain();
+    const auto& m = sys.particles().mass;
+    struct Leaver {
+      std::uint64_t id;
+      double mass;
+    };
+    std::vector<Leaver> mine;
+    for (std::size_t k = 0; k < start.fluid_rows.size(); ++k) {
+      const std::size_t i = start.fluid_rows[k];
+      if (sys.is_retired(i)) continue;
+      for (int d = 0; d < D; ++d)
+        if (dom.outside(d, y[L.position(d) + i])) {
+          mine.push_back({static_cast<std::uint64_t>(start.fluid_ids[k]), m[i]});
+          break;
+        }
+    }
+    std::vector<std::byte> bytes(mine.size() * sizeof(Leaver));
+    if (!mine.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
+    bytes = start.all_gather_bytes(bytes);  // in rank order: ascending ids
+    std::vector<Leaver> all(bytes.size() / sizeof(Leaver));
+    if (!all.empty()) std::memcpy(all.data(), bytes.data(), bytes.size());
+    std::vector<std::size_t> leaving, rows;
+    std::vector<double> masses;
+    const std::size_t first = sys.whole_scene().first;
+    for (const Leaver& l : all) {
+      leaving.push_back(static_cast<std::size_t>(l.id));
+      masses.push_back(l.mass);
+      if (l.id < first || l.id - first >= L.n) continue;
+      rows.push_back(static_cast<std::size_t>(l.id - first));
+      for (int d = 0; d < D; ++d) y[L.velocity(d) + rows.back()] = 0.0;
+    }
+    sys.retire(rows);
+    return count(leaving, masses, t, true);
   }
   // The same for particles found to have left elsewhere: `leaving`, fluid state indices in ascending
   // order, not taken out yet (over ranks: the global ids the ranks' checks found, whose velocities
   // each rank zeroes in its own state). y is not touched.
-  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, double t, bool at_start = false) {
+  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, double t) {
     const auto& m = sys.particles().mass;
     std::vector<double> masses(leaving.size());
     for (std::size_t k = 0; k < leaving.size(); ++k) masses[k] = m[leaving[k]];
-    return take_out(sys, leaving, masses, t, at_start);
+    return take_out(sys, leaving, masses, t);
   }
   // The same with the leavers' masses given, in the same order: over ranks they come from their
   // owners, since only rank 0 keeps the whole scene's particles (SphSystem::release_particles).
-  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, const std::vector<double>& masses, double t,
-                bool at_start = false) {
+  bool take_out(SphSystem<D>& sys, const std::vector<std::size_t>& leaving, const std::vector<double>& masses, double t) {
     if (leaving.empty()) return false;
-    if (masses.size() != leaving.size()) throw std::invalid_argument("Outflow::take_out: one mass per particle");
-    for (const double m : masses) mass_ += m;  // in index order, as any rank count adds them
     sys.retire(leaving);
-    if (at_start) {
-      at_start_ += leaving.size();
-    } else if (count_ == at_start_) {
-      t_first_ = t;
-      first_ = leaving.front();
-    }
-    count_ += leaving.size();
-    if (fraction() > max_fraction_) {
-      char buf[320];
-      std::snprintf(buf, sizeof buf,
-                    "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain, more than "
-                    "health.max_outflow_fraction = %g (an open tank losing that much is not a sound run)",
-                    count_, fraction(), max_fraction_);
-      throw BlowUp(t, static_cast<long>(leaving.front()), buf);
-    }
-    return true;
+    return count(leaving, masses, t, false);
   }
-
   std::size_t count() const { return count_; }
   double fraction() const { return fluid_mass_ > 0.0 ? mass_ / fluid_mass_ : 0.0; }
   // The summary's "outflow" object.
@@ -141,6 +167,29 @@ class Outflow {
   }
 
  private:
+  // Counts the particles `leaving` (ascending ids) with their masses; BlowUp past the limit.
+  bool count(const std::vector<std::size_t>& leaving, const std::vector<double>& masses, double t, bool at_start) {
+    if (leaving.empty()) return false;
+    if (masses.size() != leaving.size()) throw std::invalid_argument("Outflow::take_out: one mass per particle");
+    for (const double m : masses) mass_ += m;  // in index order, as any rank count adds them
+    if (at_start) {
+      at_start_ += leaving.size();
+    } else if (count_ == at_start_) {
+      t_first_ = t;
+      first_ = leaving.front();
+    }
+    count_ += leaving.size();
+    if (fraction() > max_fraction_) {
+      char buf[320];
+      std::snprintf(buf, sizeof buf,
+                    "outflow: %zu fluid particle(s), %.4g of the fluid mass, left the domain, more than "
+                    "health.max_outflow_fraction = %g (an open tank losing that much is not a sound run)",
+                    count_, fraction(), max_fraction_);
+      throw BlowUp(t, static_cast<long>(leaving.front()), buf);
+    }
+    return true;
+  }
+
   double max_fraction_;
   double fluid_mass_ = 0.0, mass_ = 0.0;
   std::size_t count_ = 0, first_ = 0, at_start_ = 0;

@@ -3,10 +3,12 @@
 // (run/run_case.cpp) needs from the decomposition, declared here without MPI so that the serial
 // library stays MPI-free. The implementation lives in lib/sphmol/parallel (parallel/mpi_run.hpp).
 //
-// Every rank builds the whole scene; the integrator then advances each rank's own part of the
-// state, and the ranks other than the root drop the whole scene's particles and the whole state
-// once the partition has taken theirs (SphSystem::release_particles): what needs the whole scene
-// later (the health limits' sums, checkpoints, the end) is computed or written on the root. At output times the case measures from each rank's own particles (owned_piece()), its sums
+// The root rank builds the whole scene, and so does every rank for a case that cannot build a share
+// of it (Case::build_share; user scenes can): the others build only the particles they start with.
+// The integrator then advances each rank's own part of the state, and the ranks other than the root
+// drop the scene's particles and the whole state once the partition has taken theirs
+// (SphSystem::release_particles): what needs the whole scene later (the health limits' sums,
+// checkpoints, the end) is computed or written on the root. At output times the case measures from each rank's own particles (owned_piece()), its sums
 // and the conservation sums reduced exactly over the ranks (run/piece_reduction.hpp); observers that
 // write per-rank files (VTK pieces) get those particles too, as do the probes at their own sampling
 // times and at the output times, which combine the ranks' terms on the root. Only an observer that
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/core/scene_share.hpp"
 #include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/run/health_limits.hpp"
 #include "sphmol/run/owned_piece.hpp"
@@ -103,8 +106,16 @@ class RunPartitioner {
   virtual ~RunPartitioner() = default;
   // The rank that writes files and the summary.
   virtual bool root() const = 0;
-  // Collective. `whole`: the scene as built on every rank; (t0, y0) the whole state the run starts
-  // from. Throws ConfigError on every rank for a configuration the partitioned run does not support.
+  // This rank's share of the scene, SceneShare{rank, ranks}: a case that builds shares
+  // (Case::build_share) builds only it on every rank but the root, which keeps the whole scene. And
+  // the collectives over the ranks, for the set-up's sums and gathers before the partition
+  // (run/start_piece.hpp).
+  virtual SceneShare share() const = 0;
+  virtual PieceCollectives collectives() const = 0;
+  // Collective. `whole`: the scene as built on this rank, whole or this rank's share
+  // (SphSystem::is_share); (t0, y0) the state the run starts from, of `whole`'s particles (whole's
+  // own layout). Throws ConfigError on every rank for a configuration the partitioned run does not
+  // support.
   virtual std::unique_ptr<PartitionedRun<1>> partition(const Config& config, const SphSystem<1>& whole,
                                                        const std::vector<double>& y0, double t0,
                                                        const std::function<void()>& scene_read = {}) const = 0;

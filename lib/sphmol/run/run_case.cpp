@@ -30,6 +30,7 @@
 #include "sphmol/run/progress.hpp"
 #include "sphmol/run/restart_check.hpp"
 #include "sphmol/run/signals.hpp"
+#include "sphmol/run/start_piece.hpp"
 #include "sphmol/time/integrator.hpp"
 
 namespace sphmol {
@@ -46,10 +47,17 @@ template <int D>
 nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt, const OutputSink& out,
                         std::optional<OutputFolder>& folder) {
   const auto start = std::chrono::steady_clock::now();
-  auto sys = c.build(config);
+  // Over ranks every rank but the root builds only the particles it starts with when the case can
+  // (Case::build_share); the root keeps the whole scene, for the files it alone writes. The set-up's
+  // sums and gathers over the scene go through each rank's particles as the run starts
+  // (run/start_piece.hpp): no rank but the root holds the whole scene at any time.
+  const bool root = !opt.partitioner || opt.partitioner->root();
+  const SceneShare share = opt.partitioner ? opt.partitioner->share() : SceneShare{};
+  const PieceCollectives ranks = opt.partitioner ? opt.partitioner->collectives() : one_rank_collectives();
+  auto sys = !root && c.builds_shares() ? c.build_share(config, share) : c.build(config);
   std::vector<double> y = sys->initial_state();
   auto integrator = make_integrator(config.time);
-  auto observers = make_observers<D>(config, *sys);
+  auto observers = make_observers<D>(config, start_piece(*sys, y.data(), share, ranks));
   // Over several ranks (run/partitioned_run.hpp) the integrator advances this rank's part of the
   // state, and `y` holds the whole state only after a gather (checkpoints, the end, output times for
   // an observer that reads it); the case measures from each rank's own particles, and the root rank
@@ -64,14 +72,17 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   std::optional<Checkpoint> restart;
   if (!opt.restart_from.empty()) {
     restart = read_checkpoint(opt.restart_from);
-    if (restart->case_name != config.case_name || restart->dimension != D || restart->y.size() != y.size() ||
+    const std::size_t whole_size = sys->whole_layout().size();
+    if (restart->case_name != config.case_name || restart->dimension != D || restart->y.size() != whole_size ||
         restart->integrator != integrator->name())
       throw CheckpointError(opt.restart_from + ": checkpoint (case " + restart->case_name + ", " +
                             std::to_string(restart->y.size()) + " state values, integrator " + restart->integrator +
                             ") does not match the config (case " + config.case_name + ", " +
-                            std::to_string(y.size()) + " state values, integrator " + integrator->name() + ")");
+                            std::to_string(whole_size) + " state values, integrator " + integrator->name() + ")");
     check_restart(*restart, config, opt.restart_from, opt.force_physics_change);
-    y = std::move(restart->y);  // the checkpoint's copy is not needed again
+    // The checkpoint's copy is not needed again; a share keeps its own part.
+    y = sys->is_share() ? sys->share_of(restart->y) : std::move(restart->y);
+    std::vector<double>().swap(restart->y);
     t = restart->t;
     errors = restart->errors;
     rhs_before = restart->rhs_evals;
@@ -79,22 +90,24 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     rhs_before_s = restart->rhs_seconds;
     search_before_s = restart->search_seconds;
   }
+  // The particles this rank starts with, at the state the run starts from (collectives: every rank;
+  // its lists are dropped once the log has its first record).
+  std::optional<OwnedPiece<D>> starting = start_piece(*sys, y.data(), share, ranks);
   // Fluid that has left the domain is out of the run (run/outflow.hpp); a restarted run finds the
   // particles an earlier part took out where they left, outside the domain, and takes them out
-  // again before its first evaluation (over ranks on every rank's whole system, before the
+  // again before its first evaluation (over ranks each rank from the particles it holds, before the
   // partition, which carries their kind to the ranks' particles).
-  Outflow<D> outflow(*sys, config.health.max_outflow_fraction);
-  outflow.take_out(*sys, y.data(), t, true);
+  Outflow<D> outflow(fluid_totals(*starting).mass, config.health.max_outflow_fraction);
+  outflow.take_out_at_start(*sys, y.data(), *starting, t);
   // The conservation log starts from the state the run starts from (no evaluation needed).
-  ConservationLog<D> conservation(*sys);
-  conservation.record(*sys, y.data(), t);
+  ConservationLog<D> conservation(*starting, t);
+  starting.reset();
   // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
   // rank count wrote it). Once a rank has taken its slice of the scene, only the root, which
   // writes the files (the checkpoints' and the end's whole state, the last good state) and computes
   // the health limits' sums, keeps the whole scene and the whole state y: every other rank drops
   // them there, before the partition's searches and its first evaluation, keeping its own particles
   // alone (in its local systems) and the scene's counts.
-  const bool root = !opt.partitioner || opt.partitioner->root();
   if (opt.partitioner)
     part = opt.partitioner->partition(config, *sys, y, t, [&] {
       if (root) return;

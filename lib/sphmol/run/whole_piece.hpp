@@ -33,13 +33,7 @@ OwnedPiece<D> whole_piece(const SphSystem<D>& sys, const double* y) {
   for (std::size_t g = base; g < P.size(); ++g) p.ghost_rows.push_back(g);
   p.row_ids.resize(base);
   std::iota(p.row_ids.begin(), p.row_ids.end(), std::int64_t{0});
-  p.barrier = [] {};
-  p.sum = [](std::uint64_t v) { return v; };
-  p.min = [](double v) { return v; };
-  p.max = [](double v) { return v; };
-  p.gather_bytes = [](const std::vector<std::byte>& v) { return v; };
-  p.max_each = [](const std::vector<double>& v) { return v; };
-  p.sum_each = [](const std::vector<std::uint64_t>& v) { return v; };
+  static_cast<PieceCollectives&>(p) = one_rank_collectives();
   return p;
 }
 

@@ -388,7 +388,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShar
   for (const auto& b : body_walls) n_whole += b.size();
   n_whole += n_fluid_whole;
   if (share.count < 1 || share.index >= share.count) throw std::invalid_argument("build_scene: no share " + std::to_string(share.index) + " of " + std::to_string(share.count));
-  const std::size_t first = n_whole * share.index / share.count, last = n_whole * (share.index + 1) / share.count;
+  const std::size_t first = share.begin(n_whole), last = share.end(n_whole);
   out.first = first;
   out.whole_size = n_whole;
   out.whole_fluid = n_fluid_whole;

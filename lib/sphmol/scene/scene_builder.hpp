@@ -30,6 +30,7 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/core/domain.hpp"
 #include "sphmol/core/particles.hpp"
+#include "sphmol/core/scene_share.hpp"
 #include "sphmol/scene/scene_spec.hpp"
 
 namespace sphmol {
@@ -58,11 +59,6 @@ struct BuiltScene {
   double velocity_scale = 0.0, fluid_mass = 0.0, fluid_kinetic_energy = 0.0;
 };
 
-// Which part of the scene a build keeps: share `index` of `count` equal shares of the global indices,
-// [N index / count, N (index + 1) / count) of the N particles. The default keeps the whole scene.
-struct SceneShare {
-  std::size_t index = 0, count = 1;
-};
 
 // The particle spacing of the scene: discretization.spacing, or the domain's x length over
 // discretization.particles_across. Throws ConfigError when a periodic or wall axis is not a whole

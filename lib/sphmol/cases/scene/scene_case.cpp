@@ -14,7 +14,12 @@ namespace sphmol {
 
 template <int D>
 std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
-  BuiltScene<D> s = build_scene<D>(config.settings<SceneSettings>().spec, config);
+  return build_share(config, SceneShare{});
+}
+
+template <int D>
+std::unique_ptr<SphSystem<D>> SceneCase<D>::build_share(const Config& config, SceneShare share) {
+  BuiltScene<D> s = build_scene<D>(config.settings<SceneSettings>().spec, config, share);
   spacing_ = s.spacing;
   velocity_scale_ = s.velocity_scale;
   // A mirror plane moving along itself drives the fluid as a moving wall body does.
@@ -34,8 +39,10 @@ std::unique_ptr<SphSystem<D>> SceneCase<D>::build(const Config& config) {
   // measurement is at the first output time, not at t = 0.
   ke0_ = s.fluid_kinetic_energy;
   mass0_ = s.fluid_mass;
-  return assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr, {},
-                            s.ghost_planes);
+  auto sys = assemble_system<D>(config, std::move(s.particles), s.domain, s.spacing, s.ghost ? &s.walls : nullptr, {},
+                                s.ghost_planes);
+  if (share.count > 1) sys->set_whole_scene({s.first, s.whole_size, s.whole_fluid});
+  return sys;
 }
 
 template <int D>

@@ -18,6 +18,8 @@ template <int D>
 class SceneCase final : public Case<D> {
  public:
   std::unique_ptr<SphSystem<D>> build(const Config& config) override;
+  bool builds_shares() const override { return true; }
+  std::unique_ptr<SphSystem<D>> build_share(const Config& config, SceneShare share) override;
   std::string reference() const override { return "none (conservation of mass, momentum and kinetic energy)"; }
   // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
   bool measures_pieces() const override { return true; }
