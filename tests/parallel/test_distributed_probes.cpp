@@ -150,17 +150,22 @@ probes:
 
 TEST_CASE("distributed probes: ranks that build only their share of the scene write the serial files to the bit",
           "[parallel][probes][shares]") {
-  // Every rank but 0 builds only the particles it starts with (Case::build_share): the probes' box
-  // comes from the ranks' extremes, the force probes' walls are gathered from their shares.
+  // Every rank builds only the particles it starts with (Case::build_share): the probes' box comes
+  // from the ranks' extremes, the force probes' walls are gathered from their shares; no rank holds
+  // the whole scene after the set-up.
   const nlohmann::json split = check_probes_equal_serial(tank("0.004"), "tank-shares", 9);
   const Communicator comm;
   if (comm.rank() == 0) {
     const auto n = split["particles"]["fluid"].get<std::size_t>() + split["particles"]["wall"].get<std::size_t>();
     const auto built = split["parallel"]["scene_particles_built"].get<std::vector<std::size_t>>();
-    REQUIRE(built.size() == static_cast<std::size_t>(comm.size()));
-    CHECK(built[0] == n);  // the root keeps the whole scene
+    const auto held = split["parallel"]["whole_scene_particles_held"].get<std::vector<std::size_t>>();
     const auto R = static_cast<std::size_t>(comm.size());
-    for (std::size_t r = 1; r < R; ++r) CHECK(built[r] == n * (r + 1) / R - n * r / R);
+    REQUIRE(built.size() == R);
+    REQUIRE(held.size() == R);
+    for (std::size_t r = 0; r < R; ++r) {
+      CHECK(built[r] == n * (r + 1) / R - n * r / R);
+      CHECK(held[r] == (R == 1 ? n : 0));
+    }
   }
 }
 

@@ -25,12 +25,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "sphmol/parallel/communicator.hpp"
 #include "sphmol/parallel/distributed_system.hpp"
+#include "sphmol/parallel/piece_collectives.hpp"
 #include "sphmol/run/health_check.hpp"
 #include "sphmol/run/health_limits.hpp"
 #include "sphmol/run/physical_bounds.hpp"
@@ -41,23 +43,32 @@ namespace sphmol::parallel {
 template <int D>
 class DistributedHealthCheck {
  public:
-  // `start`: start_sums() of the whole scene at t0 (the same on every rank), for the body force's
-  // power at t0; `y_local`: this rank's part of y0.
-  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, const PhysicalSums<D>& start,
-                         const std::vector<double>& y_local, double t0, HealthLimits limits)
+  // `y_local`: this rank's part of the state at t0. Collective: the physical bounds' sums at t0 (for
+  // the body force's power there) from each rank's own particles, added in rank order as at every
+  // check; the particles taken out at a restart's start are massless.
+  DistributedHealthCheck(const Communicator& comm, const DistributedSystem<D>& sys, const std::vector<double>& y_local,
+                         double t0, HealthLimits limits)
       : comm_(comm), sys_(sys), last_good_(y_local), last_good_t_(t0), bounds_(std::move(limits), t0) {
+    const auto& L = sys_.layout();
+    const long n = static_cast<long>(L.n);
+    PhysicalInputs<D> in;
+    in.V = bounds_.frame_velocity(t0);
+    in.mass = sys_.owned().mass.data();
+    in.kind = sys_.owned().kind.data();
+    PhysicalSums<D> start;
+    for (const PhysicalSums<D>& s : comm_.all_gather(bounds_.sums(L, y_local.data(), in, n))) start.add(s);
     bounds_.start(start);
   }
-  // The physical bounds' sums of the whole scene `whole` at (t0, y0), as the serial check starts
-  // from them: computed where the whole scene is (rank 0) and sent to the other ranks.
-  static PhysicalSums<D> start_sums(const SphSystem<D>& whole, const std::vector<double>& y0, double t0, const HealthLimits& limits) {
-    const PhysicalBounds<D> bounds(limits, t0);
-    PhysicalInputs<D> in;
-    in.V = bounds.frame_velocity(t0);
-    in.mass = whole.particles().mass.data();
-    // A restart's particles out at its start (taken out of `whole` before the partition) are massless.
-    if (!whole.retired().empty()) in.kind = whole.particles().kind.data();
-    return bounds.sums(whole.layout(), y0.data(), in, static_cast<long>(whole.layout().n));
+  // The elastic energy of the fluid at the system's latest evaluation (the first one, for the
+  // limits' budget): exact over the ranks, the serial run's sum to the bit (run/health_limits.hpp).
+  static double elastic_energy(const Communicator& comm, const DistributedSystem<D>& sys, const HealthLimits::Elastic& el) {
+    const std::size_t n = sys.layout().n;
+    std::vector<double> rho(n);
+    for (std::size_t o = 0; o < n; ++o) rho[o] = sys.owned_density(o);
+    std::vector<std::size_t> fluid(n);
+    std::iota(fluid.begin(), fluid.end(), std::size_t{0});
+    const auto& P = sys.owned();
+    return elastic_energy_total(el, fluid, P.mass, rho, P.rest_density, P.kind, piece_collectives(comm));
   }
 
   // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.

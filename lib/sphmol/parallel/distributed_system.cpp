@@ -753,21 +753,6 @@ double DistributedSystem<D>::owned_density(std::size_t o) const {
 }
 
 template <int D>
-std::vector<double> DistributedSystem<D>::whole_fluid_density() const {
-  struct Row {
-    std::uint64_t gid;
-    double rho;
-  };
-  std::vector<Row> mine(nfo_);
-  for (std::size_t o = 0; o < nfo_; ++o) mine[o] = {gid_[o], owned_density(o)};
-  const std::vector<Row> rows = comm_.gather_v(mine, 0);
-  if (comm_.rank() != 0) return {};
-  std::vector<double> rho(whole_layout_.n, 0.0);
-  for (const Row& r : rows) rho[r.gid] = r.rho;
-  return rho;
-}
-
-template <int D>
 std::vector<double> DistributedSystem<D>::local_part(const std::vector<double>& whole) const {
   return local_part(whole, whole_layout_, 0);
 }

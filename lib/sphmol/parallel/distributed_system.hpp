@@ -173,10 +173,6 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   const Particles<D>& owned() const { return owned_; }
   const std::vector<std::uint64_t>& gid() const { return gid_; }
   double owned_density(std::size_t o) const;
-  // Collective: the latest evaluation's density of every fluid particle of the scene, in the serial
-  // order, on rank 0 (the values the whole system's evaluation of that state would give); empty on
-  // the other ranks.
-  std::vector<double> whole_fluid_density() const;
   const Domain<D>& domain() const { return domain_; }
   // Whether the monitors watch the evaluations (true unless set otherwise): not while an integrator
   // starts again on a new share (MpiRun::rebalance), whose evaluation the serial run does not make.

@@ -40,7 +40,9 @@ class MpiRun final : public PartitionedRun<D> {
     ++whole_state_gathers_;
     sys_.gather(y_.data(), whole);
   }
-  std::vector<double> whole_fluid_density() override { return sys_.whole_fluid_density(); }
+  double elastic_energy(const HealthLimits::Elastic& elastic) override {
+    return DistributedHealthCheck<D>::elastic_energy(comm_, sys_, elastic);
+  }
   int check(double t, double, int signal) override {
     if (!health_) throw std::logic_error("MpiRun::check before start_health_check");
     return (*health_)(t, y_.data(), signal);
@@ -54,15 +56,7 @@ class MpiRun final : public PartitionedRun<D> {
     return health_ ? health_->leaver_masses() : none;
   }
   void take_out(const std::vector<std::size_t>& gone) override { sys_.take_out(gone, y_.data()); }
-  void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
-                          const HealthLimits& limits) override {
-    // The whole scene's sums where it is whole (rank 0; the others release theirs after the set-up).
-    PhysicalSums<D> start{};
-    if (comm_.rank() == 0) start = DistributedHealthCheck<D>::start_sums(whole, y0, t0, limits);
-    comm_.broadcast(start);
-    health_.emplace(comm_, sys_, start, y_, t0, limits);
-  }
-  void share_from_root(void* data, std::size_t bytes) override { comm_.broadcast_bytes(data, bytes, 0); }
+  void start_health_check(double t0, const HealthLimits& limits) override { health_.emplace(comm_, sys_, y_, t0, limits); }
   void gather_last_good(std::vector<double>& whole) override {
     if (health_) sys_.gather(health_->last_good_state().data(), whole);
   }

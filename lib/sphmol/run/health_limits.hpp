@@ -26,14 +26,20 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/rhs/sph_system.hpp"
+#include "sphmol/run/owned_piece.hpp"
+#include "sphmol/run/piece_reduction.hpp"
+#include "sphmol/run/whole_piece.hpp"
 
 namespace sphmol {
 
@@ -131,43 +137,69 @@ struct HealthLimits {
 
 // The frame of the walls when all of them (and at least one) follow one moving rigid translation:
 // the same translation or oscillation (not `stationary`, which leaves the walls in place), and no
-// generated (ghost) walls, which stay where the domain is.
+// generated (ghost) walls, which stay where the domain is. Collective over the ranks of `piece` (the
+// ranks' particles as the run starts, run/start_piece.hpp): each rank looks at its own walls.
 template <int D>
-HealthLimits::WallFrame common_wall_frame(const SphSystem<D>& sys) {
+HealthLimits::WallFrame common_wall_frame(const OwnedPiece<D>& piece) {
   HealthLimits::WallFrame f;
+  const SphSystem<D>& sys = *piece.system;
   const auto& P = sys.particles();
-  if (sys.has_generator() || P.size() == P.n_fluid) return f;
-  const WallMotion<D>* first = nullptr;
-  for (std::size_t i = P.n_fluid; i < P.size(); ++i) {
+  const auto same = [](const WallMotion<D>& a, const WallMotion<D>& b) {
+    bool s = a.kind == b.kind && a.frequency == b.frequency && a.phase == b.phase;
+    for (int d = 0; d < D; ++d) s = s && a.velocity[d] == b.velocity[d] && a.amplitude[d] == b.amplitude[d];
+    return s;
+  };
+  // This rank: whether all its walls translate alike, and the motion of its first wall (-1: none).
+  std::int32_t first = -1;
+  std::uint64_t unlike = 0;
+  for (const std::size_t i : piece.wall_rows) {
     const std::int32_t k = P.motion[i];
-    if (k < 0) return f;
-    const WallMotion<D>& m = P.motions[static_cast<std::size_t>(k)];
-    const bool translates = m.kind == WallMotionKind::translation || m.kind == WallMotionKind::oscillation;
-    if (!translates || m.stationary) return f;
-    if (first == nullptr) {
-      first = &m;
-      continue;
+    if (k < 0) {
+      unlike = 1;
+      break;
     }
-    if (&m == first) continue;
-    bool same = m.kind == first->kind && m.frequency == first->frequency && m.phase == first->phase;
-    for (int d = 0; d < D; ++d) same = same && m.velocity[d] == first->velocity[d] && m.amplitude[d] == first->amplitude[d];
-    if (!same) return f;
+    const WallMotion<D>& m = P.motions[static_cast<std::size_t>(k)];
+    if ((m.kind != WallMotionKind::translation && m.kind != WallMotionKind::oscillation) || m.stationary) {
+      unlike = 1;
+      break;
+    }
+    if (first < 0) first = k;
+    else if (k != first && !same(m, P.motions[static_cast<std::size_t>(first)])) {
+      unlike = 1;
+      break;
+    }
   }
+  // Over the ranks: every rank's first motion, and whether any rank has walls unlike its own first.
+  std::vector<std::byte> mine(sizeof first);
+  std::memcpy(mine.data(), &first, sizeof first);
+  const std::vector<std::byte> all = piece.all_gather_bytes(mine);
+  const std::uint64_t unlike_anywhere = piece.sum(unlike);
+  if (sys.has_generator() || unlike_anywhere > 0) return f;
+  const WallMotion<D>* frame = nullptr;
+  for (std::size_t r = 0; r * sizeof first < all.size(); ++r) {
+    std::int32_t k = -1;
+    std::memcpy(&k, all.data() + r * sizeof first, sizeof first);
+    if (k < 0) continue;  // a rank with no walls
+    const WallMotion<D>& m = P.motions[static_cast<std::size_t>(k)];
+    if (!frame) frame = &m;
+    else if (!same(m, *frame)) return f;
+  }
+  if (!frame) return f;  // no walls at all
   f.on = true;
-  f.oscillation = first->kind == WallMotionKind::oscillation;
+  f.oscillation = frame->kind == WallMotionKind::oscillation;
   for (int d = 0; d < D; ++d) {
-    f.velocity[d] = first->velocity[d];
-    f.amplitude[d] = first->amplitude[d];
+    f.velocity[d] = frame->velocity[d];
+    f.amplitude[d] = frame->amplitude[d];
   }
-  f.omega = 2.0 * std::numbers::pi * first->frequency;
-  f.phase = first->phase;
+  f.omega = 2.0 * std::numbers::pi * frame->frequency;
+  f.phase = frame->phase;
   return f;
 }
 
 // What the limits read from the whole scene at the start: the fluid's mass, kinetic energy (in the
 // walls' frame), internal and elastic energy, its largest speed, and the walls' frame and largest
-// speed. Trivially copyable: a run over ranks computes them on the rank that holds the whole scene
-// and sends them to the others (every rank then makes the same limits, to the bit).
+// speed. A run over ranks sums them over the ranks' particles (health_sums, elastic_energy_total),
+// exactly: every rank makes the serial run's limits, to the bit.
 struct HealthSums {
   HealthLimits::WallFrame frame;
   double mass = 0.0, ke0 = 0.0, e0 = 0.0, el0 = 0.0, v0max = 0.0, wall_speed = 0.0;
@@ -187,35 +219,68 @@ inline HealthLimits::Elastic elastic_energy(const Config& c) {
   return el;
 }
 
-// `density`: the fluid densities of an evaluation at y0 in the serial order, where `sys` itself was
-// not evaluated (a run over ranks); null: sys.density(), of its initial evaluation.
+// The sums of the state the run starts from (collective over the ranks of `start`, the ranks'
+// particles as the run starts, run/start_piece.hpp; a serial run: the whole scene), exact in any
+// order (run/piece_reduction.hpp), so every rank count has the serial sums to the bit. Fluid taken
+// out (run/outflow.hpp) is no part of the fluid's energy. The elastic energy needs an evaluation's
+// densities: elastic_energy_total(), added once the run's first evaluation has been made.
 template <int D>
-HealthSums health_sums(const Config& c, const SphSystem<D>& sys, const double* y0, const std::vector<double>* density = nullptr) {
+HealthSums health_sums(const OwnedPiece<D>& start) {
   HealthSums s;
-  s.frame = common_wall_frame(sys);
+  s.frame = common_wall_frame(start);
+  const SphSystem<D>& sys = *start.system;
   const auto& L = sys.layout();
   const auto& m = sys.particles().mass;
-  for (std::size_t i = 0; i < L.n; ++i) {
-    if (sys.is_retired(i)) continue;  // taken out (run/outflow.hpp): no part of the fluid's energy
+  const double* y0 = start.y;
+  PieceReduction r;
+  const auto mass = r.sum(), ke0 = r.sum(), e0 = r.sum(), v0max = r.largest(), wall_speed = r.largest();
+  for (const std::size_t i : start.fluid_rows) {
+    if (sys.is_retired(i)) continue;
     double v2 = 0.0, w2 = 0.0;  // w: relative to the walls' frame when there is one
     for (int d = 0; d < D; ++d) {
       const double v = y0[L.velocity(d) + i], w = v - (s.frame.on ? s.frame.V(d, 0.0) : 0.0);
       v2 += v * v;
       w2 += w * w;
     }
-    s.mass += m[i];
-    s.ke0 += 0.5 * m[i] * w2;
-    s.v0max = std::max(s.v0max, std::sqrt(v2));
-    if (L.has_energy) s.e0 += m[i] * y0[L.energy() + i];
+    r.add(mass, m[i]);
+    r.add(ke0, 0.5 * m[i] * w2);
+    r.add(v0max, std::sqrt(v2));
+    if (L.has_energy) r.add(e0, m[i] * y0[L.energy() + i]);
   }
   // Moving walls can feed the fluid up to 1/2 M V^2, V the largest speed of any wall (a lid, a plate,
-  // a rotating wall's max |omega r|).
-  s.wall_speed = sys.max_wall_speed();
-  const HealthLimits::Elastic elastic = elastic_energy(c);
-  const auto& rho = density ? *density : sys.density();  // of the initial evaluation
-  const auto& own = sys.particles().rest_density;  // several rest densities: each particle's own
-  for (std::size_t i = 0; i < L.n && i < rho.size(); ++i)
-    if (!sys.is_retired(i)) s.el0 += m[i] * elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0);
+  // a rotating wall's max |omega r|): each rank's walls, and the generated ones alike on every rank.
+  r.add(wall_speed, sys.max_wall_speed());
+  r.reduce(start);
+  s.mass = r.value(mass);
+  s.ke0 = r.value(ke0);
+  s.e0 = r.value(e0);
+  s.v0max = std::max(0.0, r.value(v0max));  // no fluid: -infinity
+  s.wall_speed = r.value(wall_speed);
+  return s;
+}
+
+// The elastic energy sum_i m_i e(rho_i) of the fluid particles i = rows[k] not taken out, with the
+// densities `rho` of an evaluation and each particle's own rest density `own` (empty: the fluid's),
+// exact over the ranks of `ranks` (run/piece_reduction.hpp).
+inline double elastic_energy_total(const HealthLimits::Elastic& elastic, const std::vector<std::size_t>& rows,
+                                   const std::vector<double>& mass, const std::vector<double>& rho,
+                                   const std::vector<double>& own, const std::vector<Kind>& kind,
+                                   const PieceCollectives& ranks) {
+  PieceReduction r;
+  const auto el = r.sum();
+  for (const std::size_t i : rows)
+    if (kind[i] != Kind::Out) r.add(el, mass[i] * elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0));
+  r.reduce(ranks);
+  return r.value(el);
+}
+
+// A serial run's sums: the whole scene at y0, with the densities of its evaluation at y0.
+template <int D>
+HealthSums health_sums(const Config& c, const SphSystem<D>& sys, const double* y0) {
+  const OwnedPiece<D> whole = whole_piece(sys, y0);
+  HealthSums s = health_sums(whole);
+  const auto& P = sys.particles();
+  s.el0 = elastic_energy_total(elastic_energy(c), whole.fluid_rows, P.mass, sys.density(), P.rest_density, P.kind, whole);
   return s;
 }
 
@@ -261,8 +326,8 @@ HealthLimits health_limits(const Config& c, double velocity_scale, bool free_sur
 
 template <int D>
 HealthLimits health_limits(const Config& c, double velocity_scale, bool free_surface, const SphSystem<D>& sys,
-                           const double* y0, const std::vector<double>* density = nullptr) {
-  return health_limits<D>(c, velocity_scale, free_surface, health_sums<D>(c, sys, y0, density));
+                           const double* y0) {
+  return health_limits<D>(c, velocity_scale, free_surface, health_sums<D>(c, sys, y0));
 }
 
 }  // namespace sphmol

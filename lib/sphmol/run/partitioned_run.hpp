@@ -40,12 +40,9 @@ class PartitionedRun {
   // Collective: the whole state in the serial layout, on the root rank (the one that measures and
   // writes); the other ranks' `whole` is left as it was.
   virtual void gather(std::vector<double>& whole) = 0;
-  // Collective: the latest evaluation's density of every fluid particle, in the serial order, on the
-  // root (empty elsewhere).
-  virtual std::vector<double> whole_fluid_density() = 0;
-  // Collective: `bytes` bytes at `data` as the root has them, on every rank (what only the root,
-  // which keeps the whole scene, can compute).
-  virtual void share_from_root(void* data, std::size_t bytes) = 0;
+  // Collective: the elastic energy of the fluid at the latest evaluation (the first one, for the
+  // health limits' budget), exact over the ranks (run/health_limits.hpp's elastic_energy_total).
+  virtual double elastic_energy(const HealthLimits::Elastic& elastic) = 0;
   // Collective, at an output time t: the per-particle fields of the whole state at (t, state())
   // set on `whole` on the root rank (SphSystem::set_fields), from the ranks' evaluations of their
   // own particles: the whole system is never evaluated and never builds a neighbour list.
@@ -72,11 +69,9 @@ class PartitionedRun {
   virtual const std::vector<std::size_t>& leavers() const = 0;
   virtual const std::vector<double>& leaver_masses() const = 0;  // theirs, in the same order
   virtual void take_out(const std::vector<std::size_t>& gone) = 0;
-  // Before the first check: the physical bounds (run/health_limits.hpp) made from the whole scene
-  // as the serial run makes them, with the whole state (t0, y0) the run starts from (collective:
-  // read on the root only).
-  virtual void start_health_check(const SphSystem<D>& whole, const std::vector<double>& y0, double t0,
-                                  const HealthLimits& limits) = 0;
+  // Collective, before the first check: the physical bounds (run/health_limits.hpp), the serial
+  // run's, from the state at t0 the run starts from.
+  virtual void start_health_check(double t0, const HealthLimits& limits) = 0;
   // Collective, after check() threw: the last state that passed the checks, whole in the serial
   // layout, on the root (which writes it as the serial run does, run/last_good_state.hpp).
   virtual void gather_last_good(std::vector<double>& whole) = 0;

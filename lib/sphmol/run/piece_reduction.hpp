@@ -57,8 +57,7 @@ class PieceReduction {
 
   // Collective over the piece's ranks (every rank with the same slots): afterwards value() is the
   // whole run's on every rank.
-  template <int D>
-  void reduce(const OwnedPiece<D>& piece) {
+  void reduce(const PieceCollectives& piece) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     // One max over: per sum, the largest |term| (finite) and whether a NaN, +inf or -inf term was
     // seen; per largest / smallest, the value (the smallest negated) and whether a NaN was seen.

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -47,14 +48,14 @@ template <int D>
 nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt, const OutputSink& out,
                         std::optional<OutputFolder>& folder) {
   const auto start = std::chrono::steady_clock::now();
-  // Over ranks every rank but the root builds only the particles it starts with when the case can
-  // (Case::build_share); the root keeps the whole scene, for the files it alone writes. The set-up's
-  // sums and gathers over the scene go through each rank's particles as the run starts
-  // (run/start_piece.hpp): no rank but the root holds the whole scene at any time.
+  // Over ranks every rank builds only the particles it starts with when the case can
+  // (Case::build_share), and no rank holds the whole scene at any time; otherwise every rank builds
+  // the whole scene and the root keeps it (the case measures it there). The set-up's sums and gathers
+  // over the scene go through each rank's particles as the run starts (run/start_piece.hpp).
   const bool root = !opt.partitioner || opt.partitioner->root();
   const SceneShare share = opt.partitioner ? opt.partitioner->share() : SceneShare{};
   const PieceCollectives ranks = opt.partitioner ? opt.partitioner->collectives() : one_rank_collectives();
-  auto sys = !root && c.builds_shares() ? c.build_share(config, share) : c.build(config);
+  auto sys = opt.partitioner && c.builds_shares() ? c.build_share(config, share) : c.build(config);
   std::vector<double> y = sys->initial_state();
   auto integrator = make_integrator(config.time);
   auto observers = make_observers<D>(config, start_piece(*sys, y.data(), share, ranks));
@@ -101,16 +102,19 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   outflow.take_out_at_start(*sys, y.data(), *starting, t);
   // The conservation log starts from the state the run starts from (no evaluation needed).
   ConservationLog<D> conservation(*starting, t);
+  // The health limits' sums of that state (run/health_limits.hpp; the elastic energy follows the
+  // first evaluation).
+  HealthSums start_sums = health_sums(*starting);
   starting.reset();
   // Partitioned from the state the run starts from (a checkpoint holds the whole state, whatever
-  // rank count wrote it). Once a rank has taken its slice of the scene, only the root, which
-  // writes the files (the checkpoints' and the end's whole state, the last good state) and computes
-  // the health limits' sums, keeps the whole scene and the whole state y: every other rank drops
-  // them there, before the partition's searches and its first evaluation, keeping its own particles
-  // alone (in its local systems) and the scene's counts.
+  // rank count wrote it). Once a rank has taken its slice of the scene it drops what it built and
+  // its state y, before the partition's searches and its first evaluation, keeping its own particles
+  // alone (in its local systems) and the scene's counts; the root keeps a whole scene it had to
+  // build (a case without shares measures it), and gathers the whole state into y where it writes
+  // it (checkpoints, the end, the last good state).
   if (opt.partitioner)
     part = opt.partitioner->partition(config, *sys, y, t, [&] {
-      if (root) return;
+      if (root && !sys->is_share()) return;
       sys->release_particles();
       std::vector<double>().swap(y);
     });
@@ -139,25 +143,24 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // Over ranks, SIGINT/SIGTERM as the ranks agree at the last step's check: the largest signal any
   // rank has received, the same on every rank, so that all stop at the same step (run/signals.hpp).
   int agreed_signal = 0;
-  // The physical bounds from the whole scene after an evaluation at t (the elastic energy reads its
-  // densities): the serial system was evaluated by the integrator's initialisation; over ranks the
-  // ranks' own particles were, and their densities are gathered in the serial order, so that no rank
-  // evaluates (or holds the neighbour list of) the whole scene for them.
+  // The physical bounds from the whole scene's sums at t and the elastic energy of the evaluation at
+  // t that the integrator's initialisation made: serially of the whole system; over ranks of the
+  // ranks' own particles, summed exactly over the ranks, so that no rank evaluates (or holds the
+  // neighbour list of) the whole scene for them and every rank count has the serial limits.
   const HealthLimits limits = [&] {
-    if (!part) return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), *sys, y.data());
-    // Over ranks the whole scene's sums on the root, which alone keeps the scene after the set-up,
-    // and from it on every rank. The gathered densities (one per fluid particle, on the root) are
-    // needed here only, not for the whole run.
-    HealthSums sums;
-    {
-      const std::vector<double> first_density = part->whole_fluid_density();
-      if (root) sums = health_sums<D>(config, *sys, y.data(), &first_density);
+    const HealthLimits::Elastic elastic = elastic_energy(config);
+    if (part) {
+      start_sums.el0 = part->elastic_energy(elastic);
+    } else {
+      const auto& P = sys->particles();
+      std::vector<std::size_t> fluid(sys->layout().n);
+      std::iota(fluid.begin(), fluid.end(), std::size_t{0});
+      start_sums.el0 = elastic_energy_total(elastic, fluid, P.mass, sys->density(), P.rest_density, P.kind, ranks);
     }
-    part->share_from_root(&sums, sizeof sums);
-    return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), sums);
+    return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), start_sums);
   }();
   if (part) {
-    part->start_health_check(*sys, y, t, limits);
+    part->start_health_check(t, limits);
     integrator->set_step_hook([&part, &agreed_signal](double tt, const double*, double hh) {
       agreed_signal = part->check(tt, hh, pending_signal());
     });
