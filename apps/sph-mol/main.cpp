@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/config/scene_checks.hpp"
 #include "sphmol/core/version.hpp"
 #include "sphmol/run/checkpoint.hpp"
 #include "sphmol/run/openmp_wait_policy.hpp"
@@ -150,6 +151,10 @@ int main(int argc, char** argv) {
         }
         return s.run();
       }
+#ifdef SPHMOL_HAVE_MPI
+    // The config's memory check asks this machine for its ranks' shares of the scene.
+    if (world) sphmol::set_ranks_on_machine({ranks, world->ranks_on_this_machine()});
+#endif
     std::ostringstream elsewhere;  // every rank reads the config alike: rank 0 tells
     const auto config = sphmol::app::resolve_run_config(app, cmd, root ? static_cast<std::ostream&>(std::cerr) : elsewhere);
     if (!config) return 2;

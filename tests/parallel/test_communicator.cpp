@@ -23,6 +23,8 @@ TEST_CASE("communicator: reductions and gathers", "[parallel][communicator]") {
   std::vector<int> expected;
   for (int r = 0; r < P; ++r) expected.insert(expected.end(), static_cast<std::size_t>(r), r);
   CHECK(v == expected);
+  // The tests run on one machine: every rank shares it.
+  CHECK(comm.ranks_on_this_machine() == P);
 }
 
 TEST_CASE("communicator: all-to-all of bytes delivers each rank's message in rank order", "[parallel][communicator]") {

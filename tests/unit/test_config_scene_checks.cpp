@@ -115,6 +115,36 @@ TEST_CASE("scene checks: absurd sizes are refused before allocation with the est
   CHECK(physical_memory_bytes() > 1e8);
 }
 
+TEST_CASE("scene checks: over MPI ranks the memory check asks this machine for its ranks' shares", "[config][scene]") {
+  // The 3D dam break at 2 mm: about 6.5e7 particles by the scene's bound, hundreds of GB as one
+  // process. Split over many ranks on many machines each machine holds its ranks' shares; with all
+  // the ranks on this machine it holds the whole scene again.
+  const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/examples/dam_break_3d.yaml";
+  const std::vector<std::string> fine = {"discretization.spacing=0.002", "probes=[]"};
+  const auto error = [&] {
+    try {
+      (void)load_config(file, fine);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("<no error>");
+  };
+  struct Restore {
+    ~Restore() { set_ranks_on_machine({}); }
+  } restore;
+  const std::string serial = error();
+  INFO(serial);
+  CHECK(serial.find("the run needs about ") != std::string::npos);
+  CHECK(serial.find("MPI ranks") == std::string::npos);
+  set_ranks_on_machine({1 << 20, 1});  // one of a million ranks here
+  CHECK(error() == "<no error>");
+  set_ranks_on_machine({1 << 20, 1 << 20});  // all of them here
+  const std::string all_here = error();
+  CHECK(all_here.find("of it on this machine (1048576 of the run's 1048576 MPI ranks), more than this machine's ") != std::string::npos);
+  CHECK_THROWS_AS(set_ranks_on_machine({2, 3}), std::invalid_argument);
+  CHECK_THROWS_AS(set_ranks_on_machine({0, 0}), std::invalid_argument);
+}
+
 TEST_CASE("scene checks: step and checkpoint counts beyond time.max_steps are refused up front", "[config][scene]") {
   const std::string fixed = load_error("cavity", {"time.max_steps=1000"});
   CHECK(fixed.rfind(shipped("cavity") + ":", 0) == 0);  // the line of time.dt in the file

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,18 @@ double kernel_support(int dim, const std::string& name) {
 const char* resolution_key(const Config& c) { return c.discretization.particles_across > 0 ? "particles_across" : "spacing"; }
 
 }  // namespace
+
+namespace {
+RanksOnMachine g_ranks;  // set_ranks_on_machine()
+}  // namespace
+
+void set_ranks_on_machine(RanksOnMachine r) {
+  if (r.ranks < 1 || r.here < 1 || r.here > r.ranks)
+    throw std::invalid_argument("set_ranks_on_machine: " + std::to_string(r.here) + " of " + std::to_string(r.ranks) + " ranks");
+  g_ranks = r;
+}
+
+RanksOnMachine ranks_on_machine() { return g_ranks; }
 
 double physical_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
@@ -84,11 +97,17 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
   const double neighbours = c.dimension == 1 ? 2.0 * r_dx : c.dimension == 2 ? std::numbers::pi * r_dx * r_dx
                                                                             : 4.0 / 3.0 * std::numbers::pi * r_dx * r_dx * r_dx;
   s.bytes_per_particle = 256.0 + 32.0 * neighbours;
+  // Over MPI ranks this machine holds its ranks' shares of the scene.
   const double limit = physical_memory_bytes();
-  if (limit > 0 && s.bytes() > limit)
+  const RanksOnMachine rk = ranks_on_machine();
+  const double here = s.bytes() * rk.here / rk.ranks;
+  if (limit > 0 && here > limit)
     disc.fail(resolution_key(c), "the run needs about " + shown(s.bytes() / 1e9) + " GB (" + shown(s.fluid) + " fluid + " + shown(s.wall) +
-                      " wall particles at about " + shown(s.bytes_per_particle) + " bytes each), more than this machine's " +
-                      shown(limit / 1e9) + " GB of memory");
+                      " wall particles at about " + shown(s.bytes_per_particle) + " bytes each)" +
+                      (rk.ranks > 1 ? ", " + shown(here / 1e9) + " GB of it on this machine (" + std::to_string(rk.here) +
+                                          " of the run's " + std::to_string(rk.ranks) + " MPI ranks)"
+                                    : std::string()) +
+                      ", more than this machine's " + shown(limit / 1e9) + " GB of memory");
 
   // Steps: a fixed step, or the CFL bound's smallest possible step (at rest), against max_steps.
   const auto& t = c.time;

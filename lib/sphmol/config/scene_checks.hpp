@@ -50,4 +50,14 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& size);
 // Physical memory of this machine in bytes (sysconf), the limit for SceneSize::bytes().
 double physical_memory_bytes();
 
+// A run split over MPI ranks (docs/parallel.md): `ranks` in all, `here` of them on this machine.
+// Each rank holds about 1/ranks of the scene, so the memory check asks this machine for the share
+// of its ranks, not for the whole scene. Process-wide, set by the program before it loads a config;
+// one rank (the default) is a serial run.
+struct RanksOnMachine {
+  int ranks = 1, here = 1;
+};
+void set_ranks_on_machine(RanksOnMachine r);
+RanksOnMachine ranks_on_machine();
+
 }  // namespace sphmol

@@ -48,6 +48,15 @@ double Communicator::min(double v) const {
   return out;
 }
 
+int Communicator::ranks_on_this_machine() const {
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(comm_, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  int n = 1;
+  MPI_Comm_size(node, &n);
+  MPI_Comm_free(&node);
+  return n;
+}
+
 bool Communicator::all(bool v) const {
   int in = v ? 1 : 0, out = 0;
   MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LAND, comm_);

@@ -26,6 +26,8 @@ class Communicator {
   int max(int v) const;
   double min(double v) const;
   bool all(bool v) const;  // true on every rank
+  // The ranks on this rank's machine (sharing its memory), this one included (collective).
+  int ranks_on_this_machine() const;
   // Element by element over the ranks (every rank passes as many values): the largest, and the sum
   // modulo 2^64.
   std::vector<double> max(const std::vector<double>& v) const;

@@ -14,17 +14,22 @@ namespace sphmol {
 
 namespace {
 
-// Past this many particles the scene is not built while loading: the shared memory check gets the
-// bound (scene_particle_bound) and refuses what the machine cannot hold.
-constexpr double kBuildWhileLoading = 2.0e7;
+// Past this many particles the scene is not counted while loading (built_size: no memory, but the
+// time of going through every particle): the shared memory check gets the bound
+// (scene_particle_bound, the lattice of the whole domain box) and refuses what the machine cannot hold.
+constexpr double kBuildWhileLoading = 1.0e8;
 
+// The scene's counts from a build that goes through every particle (and so refuses what the run's
+// build would) but keeps none: a share too small to hold one (scene/scene_builder.hpp), so that the
+// loader needs no memory for the scene (over MPI ranks every rank loads the config).
 template <int D>
 SceneSize built_size(CaseReaders& r, const SceneSpec& spec, const Config& c) {
-  const BuiltScene<D> s = build_scene<D>(spec, c);
+  constexpr std::size_t kNoParticle = std::size_t{1} << 62;  // N / kNoParticle = 0 for any scene
+  const BuiltScene<D> s = build_scene<D>(spec, c, SceneShare{0, kNoParticle});
   if (c.discretization.transport_velocity.enabled && (s.open_faces || !s.fills_domain))
     r.discretization.fail("transport_velocity", "needs a confined liquid; this scene has a free surface (an open face, or "
                                                 "fluid that does not fill the domain)");
-  return {s.spacing, static_cast<double>(s.particles.n_fluid), static_cast<double>(s.particles.n_wall())};
+  return {s.spacing, static_cast<double>(s.whole_fluid), static_cast<double>(s.whole_size - s.whole_fluid)};
 }
 
 CaseRead read_scene_case(CaseReaders& r, const Config& c) {
