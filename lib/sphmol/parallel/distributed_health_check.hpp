@@ -25,7 +25,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,10 +64,7 @@ class DistributedHealthCheck {
     const std::size_t n = sys.layout().n;
     std::vector<double> rho(n);
     for (std::size_t o = 0; o < n; ++o) rho[o] = sys.owned_density(o);
-    std::vector<std::size_t> fluid(n);
-    std::iota(fluid.begin(), fluid.end(), std::size_t{0});
-    const auto& P = sys.owned();
-    return elastic_energy_total(el, fluid, P.mass, rho, P.rest_density, P.kind, piece_collectives(comm));
+    return elastic_energy_total(el, sys.owned(), n, rho, piece_collectives(comm));
   }
 
   // `signal`: this rank's pending signal (0: none); returns the largest of all ranks'.

@@ -75,19 +75,13 @@ FluidTotals<D> fluid_totals(const SphSystem<D>& sys, const double* y) {
 template <int D>
 class ConservationLog {
  public:
-  // The fluid's mass from the scene as built (over ranks the ranks other than 0 release its particles
-  // after the set-up, SphSystem::release_particles): the exact sum of the measurements'
-  // (run/piece_reduction.hpp), so the two agree to the bit.
-  explicit ConservationLog(const SphSystem<D>& sys)
-      : fluid_mass_(fixed_point_total(sys.particles().mass.data(), sys.layout().n)) {}
   // The log of a run starting at t from `start` (collective over its ranks: each rank's particles as
-  // the run starts, run/start_piece.hpp): the fluid mass and the first record, without a rank
+  // the run starts, run/start_piece.hpp): the fluid mass, the exact sum the measurements take
+  // (run/piece_reduction.hpp), so the two agree to the bit, and the first record, without a rank
   // holding the whole scene.
   ConservationLog(const OwnedPiece<D>& start, double t) {
     fluid_mass_ = record_totals(start, t).mass;
   }
-  // The scene's fluid mass (the exact sum).
-  double fluid_mass() const { return fluid_mass_; }
   void record(const SphSystem<D>& sys, const double* y, double t) { record(whole_piece(sys, y), t); }
   // Collective over the piece's ranks: every rank records the whole run's totals.
   void record(const OwnedPiece<D>& piece, double t) { record_totals(piece, t); }

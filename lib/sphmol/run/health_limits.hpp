@@ -259,28 +259,33 @@ HealthSums health_sums(const OwnedPiece<D>& start) {
   return s;
 }
 
-// The elastic energy sum_i m_i e(rho_i) of the fluid particles i = rows[k] not taken out, with the
-// densities `rho` of an evaluation and each particle's own rest density `own` (empty: the fluid's),
-// exact over the ranks of `ranks` (run/piece_reduction.hpp).
-inline double elastic_energy_total(const HealthLimits::Elastic& elastic, const std::vector<std::size_t>& rows,
-                                   const std::vector<double>& mass, const std::vector<double>& rho,
-                                   const std::vector<double>& own, const std::vector<Kind>& kind,
-                                   const PieceCollectives& ranks) {
+// The elastic energy sum_i m_i e(rho_i) of the fluid particles i < n of P (fluid first) not taken
+// out, with the densities `rho` of an evaluation and each particle's own rest density
+// (Particles::rest_density; empty: the fluid's), exact over the ranks of `ranks`
+// (run/piece_reduction.hpp): a rank's owned particles, or a serial run's whole scene.
+template <int D>
+double elastic_energy_total(const HealthLimits::Elastic& elastic, const Particles<D>& P, std::size_t n,
+                            const std::vector<double>& rho, const PieceCollectives& ranks) {
   PieceReduction r;
   const auto el = r.sum();
-  for (const std::size_t i : rows)
-    if (kind[i] != Kind::Out) r.add(el, mass[i] * elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0));
+  const auto& own = P.rest_density;
+  for (std::size_t i = 0; i < n; ++i)
+    if (P.kind[i] != Kind::Out) r.add(el, P.mass[i] * elastic.per_mass(rho[i], i < own.size() ? own[i] : 0.0));
   r.reduce(ranks);
   return r.value(el);
+}
+
+// The elastic energy of a serial run's whole scene at its latest evaluation.
+template <int D>
+double elastic_energy_total(const HealthLimits::Elastic& elastic, const SphSystem<D>& sys) {
+  return elastic_energy_total(elastic, sys.particles(), sys.layout().n, sys.density(), one_rank_collectives());
 }
 
 // A serial run's sums: the whole scene at y0, with the densities of its evaluation at y0.
 template <int D>
 HealthSums health_sums(const Config& c, const SphSystem<D>& sys, const double* y0) {
-  const OwnedPiece<D> whole = whole_piece(sys, y0);
-  HealthSums s = health_sums(whole);
-  const auto& P = sys.particles();
-  s.el0 = elastic_energy_total(elastic_energy(c), whole.fluid_rows, P.mass, sys.density(), P.rest_density, P.kind, whole);
+  HealthSums s = health_sums(whole_piece(sys, y0));
+  s.el0 = elastic_energy_total(elastic_energy(c), sys);
   return s;
 }
 

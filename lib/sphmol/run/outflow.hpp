@@ -60,8 +60,8 @@ template <int D>
 class Outflow {
  public:
   // max_fraction: health.max_outflow_fraction, of the fluid mass M of the scene (the exact sum of
-  // the fluid's masses: over ranks the conservation log's, ConservationLog::fluid_mass(), for which no
-  // rank needs the whole scene).
+  // the fluid's masses, as the conservation log's: over ranks from the ranks' starting particles,
+  // run/conservation.hpp's fluid_totals, for which no rank needs the whole scene).
   Outflow(double fluid_mass, double max_fraction) : max_fraction_(max_fraction), fluid_mass_(fluid_mass) {}
   Outflow(const SphSystem<D>& sys, double max_fraction)
       : Outflow(fixed_point_total(sys.particles().mass.data(), sys.layout().n), max_fraction) {}

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -149,14 +148,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   // neighbour list of) the whole scene for them and every rank count has the serial limits.
   const HealthLimits limits = [&] {
     const HealthLimits::Elastic elastic = elastic_energy(config);
-    if (part) {
-      start_sums.el0 = part->elastic_energy(elastic);
-    } else {
-      const auto& P = sys->particles();
-      std::vector<std::size_t> fluid(sys->layout().n);
-      std::iota(fluid.begin(), fluid.end(), std::size_t{0});
-      start_sums.el0 = elastic_energy_total(elastic, fluid, P.mass, sys->density(), P.rest_density, P.kind, ranks);
-    }
+    start_sums.el0 = part ? part->elastic_energy(elastic) : elastic_energy_total(elastic, *sys);
     return health_limits<D>(config, c.velocity_scale(config), c.free_surface(), start_sums);
   }();
   if (part) {
