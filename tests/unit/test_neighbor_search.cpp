@@ -130,3 +130,42 @@ TEST_CASE("Verlet list reuses its pairs until a particle moved half the skin", "
     for (auto k = exact.offset[i]; k < exact.offset[i + 1]; ++k)
       CHECK(std::binary_search(P.j.begin() + P.offset[i], P.j.begin() + P.offset[i + 1], exact.j[k]));
 }
+
+TEST_CASE("Verlet list kept by its owner skips its own displacement test", "[neighbors]") {
+  // keep_until_replaced(): the owner (a run over MPI ranks) tests the displacements itself and makes
+  // a new list in time; the list still rebuilds when invalidated, when the particle count changes
+  // and when a grown support eats the skin.
+  auto c = random_cloud<2>(400, true, 0.1, 4);
+  VerletList<2> list(std::make_unique<KdTreeSearch<2>>(), 0.08, 0.02);
+  list.keep_until_replaced();
+  CHECK(list.update(c.input(0.0)));  // the first call builds
+  c.x[0][5] += 0.05;                 // far more than skin/2
+  CHECK_FALSE(list.stale(c.input(0.0)));
+  CHECK_FALSE(list.update(c.input(0.0)));
+  // The test run inside the caller's threads (SphSystem's gather region) decides the same.
+  list.begin_check(c.input(0.0));
+  list.check_in_team(c.input(0.0));
+  CHECK_FALSE(list.update(c.input(0.0)));
+  CHECK(list.rebuilds() == 1);
+  // A list that is not kept rebuilds at the same positions: the kept one skipped a real test.
+  VerletList<2> plain(std::make_unique<KdTreeSearch<2>>(), 0.08, 0.02);
+  auto moved = c;
+  moved.x[0][5] -= 0.05;
+  CHECK(plain.update(moved.input(0.0)));
+  CHECK(plain.update(c.input(0.0)));
+  list.invalidate();
+  CHECK(list.update(c.input(0.0)));
+  CHECK(list.rebuilds() == 2);
+  list.set_support(0.08 + 0.021);  // the support grew past the skin
+  CHECK(list.stale(c.input(0.0)));
+  CHECK(list.update(c.input(0.0)));
+  list.set_support(0.08);
+  c.x[0].push_back(0.5);
+  c.x[1].push_back(0.5);
+  c.kind.push_back(Kind::Fluid);
+  CHECK(list.stale(c.input(0.0)));  // one particle more
+  list.begin_check(c.input(0.0));
+  list.check_in_team(c.input(0.0));
+  CHECK(list.update(c.input(0.0)));
+  CHECK(list.rebuilds() == 4);
+}

@@ -24,6 +24,7 @@ class VerletList {
   // True when update(in) would rebuild.
   bool stale(const SearchInput<D>& in) const {
     if (!built_) return true;
+    if (kept_) return trivially_far(in);
     if (checked_ && same_check(in)) return far_.load(std::memory_order_relaxed);
     return moved_too_far(in);
   }
@@ -37,7 +38,7 @@ class VerletList {
     checked_ = built_;
     const bool far = built_ && trivially_far(in);
     far_.store(far, std::memory_order_relaxed);
-    scan_ = checked_ && !far;  // read by every thread: all of them meet the loop, or none
+    scan_ = checked_ && !far && !kept_;  // read by every thread: all of them meet the loop, or none
     check_n_ = in.n;
     check_x_ = in.x[0];
     check_support_ = support_;
@@ -99,6 +100,14 @@ class VerletList {
   // Forces a rebuild at the next update (the particle set itself changed, e.g. ghost particles).
   void invalidate() { built_ = false; }
 
+  // The owner of the particles tests their displacements itself and replaces the list (the whole
+  // system holding it) before any particle has moved half the skin since the build: the list skips
+  // its own displacement test from then on, and is rebuilt only when invalidated, when the particle
+  // count changes or when the support eats the skin. A run over MPI ranks
+  // (parallel/distributed_system.hpp) makes each local system anew at every halo plan, planned on
+  // that same test over every rank's particles, so the local list's own test would repeat it.
+  void keep_until_replaced() { kept_ = true; }
+
   const PairList& pairs() const { return pairs_; }
   long rebuilds() const { return rebuilds_; }
   double list_radius() const { return support_ + skin_; }
@@ -138,6 +147,7 @@ class VerletList {
   PairList pairs_;
   std::array<std::vector<double>, D> x_build_;
   bool built_ = false;
+  bool kept_ = false;  // keep_until_replaced()
   long rebuilds_ = 0;
   // The test of begin_check / check_in_team: valid for check_n_ particles at support check_support_.
   bool checked_ = false, scan_ = false;

@@ -418,18 +418,29 @@ bool DistributedSystem<D>::moved_too_far(double t, const double* y) const {
   const double room = skin_ - std::max(0.0, support_ * (hmax_ - hmax_plan_));
   if (!(room > 0.0)) return true;
   const double limit2 = 0.25 * room * room;
-  // The positions as owned_positions() makes them, from y without storing them (the test runs at
-  // every evaluation, a plan rarely), and the largest displacement without an exit per particle,
-  // so that the fluid's loop vectorises.
-  double r2max = 0.0;
+  // From y without storing the positions (the test runs at every evaluation, a plan rarely). The
+  // fluid's loop in the neighbour list's arithmetic (VerletList::check_in_team): the minimum image
+  // of the displacement from the state's position needs no wrap first; the box's constants in
+  // locals and the test ORed into an integer, without an exit per particle, so that it vectorises.
+  std::array<double, D> period, inv_period;
+  std::array<const double*, D> xs, x0;
+  for (int d = 0; d < D; ++d) {
+    period[d] = domain_.period(d);
+    inv_period[d] = domain_.inv_period(d);
+    xs[d] = y + layout_.position(d);
+    x0[d] = x_plan_[d].data();
+  }
+  std::int64_t far = 0;
   for (std::size_t o = 0; o < nfo_; ++o) {
     double r2 = 0.0;
     for (int d = 0; d < D; ++d) {
-      const double dx = domain_.min_image(d, domain_.wrap(d, y[layout_.position(d) + o]) - x_plan_[d][o]);
-      r2 += dx * dx;
+      const double dx = xs[d][o] - x0[d][o];
+      const double m = dx - period[d] * std::nearbyint(dx * inv_period[d]);
+      r2 += m * m;
     }
-    r2max = std::max(r2max, r2);
+    far |= static_cast<std::int64_t>(r2 > limit2);
   }
+  double r2max = far != 0 ? std::numeric_limits<double>::infinity() : 0.0;
   for (std::size_t o = nfo_; o < owned_.size(); ++o) {
     double r2 = 0.0;
     for (int d = 0; d < D; ++d) {
@@ -519,6 +530,12 @@ void DistributedSystem<D>::plan() {
   // Fluid taken out of the run arrives as Kind::Out (the owners' kind), which the new local system
   // starts with retired (SphSystem's constructor): no pair, zero rates.
   if (variable_h_) local_->set_initial_smoothing_lengths(local_values(h0_own_));
+  // Its pair list is built at this plan's positions, and moved_too_far() plans again (with a new
+  // local system) once any particle of any rank, halo particles' owners included, has moved half the
+  // skin since: the list's own test could never be the first to find it stale. With a variable h
+  // the local support follows the local largest h, which the plan's test does not watch, and
+  // generated images (ghost walls) rebuild the list anyway: there the list keeps its test.
+  if (!variable_h_ && !ghost_walls_) local_->keep_pair_list_until_replaced();
   if (!monitors_.empty()) {
     // The monitors watch the owned fluid rows, by global id (the halo's are their owners' to watch).
     WatchedRows rows;

@@ -233,6 +233,9 @@ class SphSystem final : public OdeSystem, public ImexSystem {
   std::vector<std::string> active_terms() const;
   std::string_view kernel_name() const { return kernel_->kernel_name(); }
   const VerletList<D>& pair_list() const { return *pairs_; }
+  // The caller replaces this system before any particle has moved half the skin since its list was
+  // built, and tests that itself (VerletList::keep_until_replaced): the list skips its own test.
+  void keep_pair_list_until_replaced() { pairs_->keep_until_replaced(); }
   // Pairs inside the kernel support at the most recent evaluation (directed: each pair twice).
   std::size_t active_pairs() const;
   // The density and pressure of the most recent evaluation (all particles, in state order); before
