@@ -99,49 +99,75 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     throw std::invalid_argument("DistributedSystem: the system holds particles [" + std::to_string(first) + ", " +
                                 std::to_string(first + P.size()) + ") of the scene, not this rank's share [" +
                                 std::to_string(lo) + ", " + std::to_string(hi) + ")");
-  std::vector<std::uint32_t> slice(hi - lo), rows(hi - lo);
-  std::iota(slice.begin(), slice.end(), static_cast<std::uint32_t>(lo));
+  std::vector<std::uint32_t> rows(hi - lo);
   std::iota(rows.begin(), rows.end(), static_cast<std::uint32_t>(lo - first));
-  const std::size_t slice_fluid = std::clamp(n_fluid_global_, lo, hi) - lo;
-  owned_ = select_particles(P, rows, slice_fluid);
-  gid_.assign(slice.begin(), slice.end());
-  if (reorder_)
-    for (auto& c : x_sorted_) c.assign(slice.size(), 0.0);
-  // Walls keep the energy the scene gave them (the state holds the fluid's only), and with a variable
-  // h every particle keeps its h(0) (the walls' h; with h from the density the fluid's reference):
-  // per owned particle, moving with it (extras()), and sent with the halo (plan()).
-  if (whole_layout_.has_energy) {
-    const std::vector<double>& e = whole.energy();
-    e_own_.resize(slice.size());
-    for (std::size_t k = 0; k < slice.size(); ++k) e_own_[k] = e[rows[k]];
-  }
-  if (variable_h_) {
-    const std::vector<double>& h0 = whole.smoothing_lengths();
-    h0_own_.resize(slice.size());
-    for (std::size_t k = 0; k < slice.size(); ++k) h0_own_[k] = h0[rows[k]];
-  }
   std::array<std::vector<double>, D> xw;
   for (int d = 0; d < D; ++d) {
     xw[d].resize(hi - lo);
     for (std::size_t i = lo; i < hi; ++i)
       xw[d][i - lo] = domain_.wrap(d, i < n_fluid_global_ ? y0[Y.position(d) + (i - first)] : P.wall_position(d, i - first, t0));
   }
-  // The slice's part of the start state moves with the particles from here on: neither the whole
-  // scene nor y0 is read again, and the caller may drop them now (scene_read), before the searches
-  // of the partition by pair count.
-  set_layout();
-  std::vector<double> y = local_part(y0, Y, first);
-  if (scene_read) scene_read();
-  {
-    std::array<const double*, D> xs;
-    for (int d = 0; d < D; ++d) xs[d] = xw[d].data();
-    std::vector<double> count(hi - lo, 1.0);
-    const RcbResult<D> cut = rcb_->partition(xs, count.data(), gid_.data(), gid_.size());
-    for (auto& c : xw) std::vector<double>().swap(c);
+  // The cut by count, of the slices.
+  std::vector<std::uint64_t> slice(hi - lo);
+  std::iota(slice.begin(), slice.end(), static_cast<std::uint64_t>(lo));
+  std::array<const double*, D> xs;
+  for (int d = 0; d < D; ++d) xs[d] = xw[d].data();
+  std::vector<double> count(hi - lo, 1.0);
+  const RcbResult<D> cut = rcb_->partition(xs, count.data(), slice.data(), slice.size());
+  for (auto& c : xw) std::vector<double>().swap(c);
+  std::vector<double> y;
+  if (!whole.is_share() && comm.size() > 1) {
+    // Every rank holds the whole scene (a case that builds it whole): each takes its own particles
+    // from it by the cut's destinations, which every rank learns (4 bytes per particle), instead of
+    // receiving their data from the slices' ranks. The same particles in migrate()'s order
+    // (ascending global id: fluid first), so the same start as the migration's.
+    const std::vector<int> destination = comm.all_gather_v(cut.destination);  // in global-id order
+    std::vector<std::uint32_t> mine;
+    for (std::size_t g = 0; g < destination.size(); ++g)
+      if (destination[g] == comm.rank()) mine.push_back(static_cast<std::uint32_t>(g - first));
+    take_particles(whole, mine, first);
+    y = local_part(y0, Y, first);
+    if (scene_read) scene_read();
+  } else {
+    // A share (or one rank): the slice's part of the start state moves with the particles from
+    // here on, and neither the scene nor y0 is read again; the caller may drop them now
+    // (scene_read), before the migration and the searches of the partition by pair count.
+    take_particles(whole, rows, first);
+    y = local_part(y0, Y, first);
+    if (scene_read) scene_read();
     migrate_state(cut.destination, y, {});
   }
   balance_by_pairs(t0, y);
   initial_state_ = std::move(y);
+}
+
+template <int D>
+void DistributedSystem<D>::take_particles(const SphSystem<D>& whole, const std::vector<std::uint32_t>& rows, std::size_t first) {
+  // Rows of `whole`, whose particles are the scene's [first, ...); fluid ids come before walls'.
+  const Particles<D>& P = whole.particles();
+  gid_.resize(rows.size());
+  std::size_t fluid = 0;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    gid_[k] = first + rows[k];
+    fluid += gid_[k] < n_fluid_global_ ? 1 : 0;
+  }
+  owned_ = select_particles(P, rows, fluid);
+  if (reorder_)
+    for (auto& c : x_sorted_) c.assign(rows.size(), 0.0);
+  // Walls keep the energy the scene gave them (the state holds the fluid's only), and with a variable
+  // h every particle keeps its h(0) (the walls' h; with h from the density the fluid's reference):
+  // per owned particle, moving with it (extras()), and sent with the halo (plan()).
+  if (whole_layout_.has_energy) {
+    const std::vector<double>& e = whole.energy();
+    e_own_.resize(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) e_own_[k] = e[rows[k]];
+  }
+  if (variable_h_) {
+    const std::vector<double>& h0 = whole.smoothing_lengths();
+    h0_own_.resize(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) h0_own_[k] = h0[rows[k]];
+  }
+  set_layout();
 }
 
 template <int D>

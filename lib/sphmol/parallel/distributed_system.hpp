@@ -233,6 +233,9 @@ class DistributedSystem final : public OdeSystem, public ImexSystem, public Stat
   void to_columns(const std::vector<double>& array, std::size_t blocks, std::vector<std::vector<double>>& columns) const;
   void from_columns(const std::vector<std::vector<double>>& columns, std::size_t blocks, std::vector<double>& array) const;
   void set_layout();
+  // The particles of `whole` at `rows` (global ids first + row, ascending) become the owned ones,
+  // with their per-owned arrays (extras()) and the layout.
+  void take_particles(const SphSystem<D>& whole, const std::vector<std::uint32_t>& rows, std::size_t first);
   // `arrays` and the per-owned arrays that move with the particles (e_own_, h0_own_), for migrate().
   std::vector<std::vector<double>*> extras(std::vector<std::vector<double>*> arrays);
   // Blocks of n values in the state: positions, velocities and the optional per-particle fields.
