@@ -26,7 +26,9 @@
 // its depth behind it, per mirror; the halo reaches that much farther (mirror_margin()).
 //
 // The halo plan is made again, with a new local system, when some particle has moved more than half
-// the skin since the last plan (the Verlet rule, halo.hpp). With a variable h the list radius is the
+// the skin since the last plan (the Verlet rule, halo.hpp); the local system's own list, built at the
+// plan's positions, skips its own test then (VerletList::keep_until_replaced), which could never find
+// it stale first. With a variable h the list radius is the
 // kernel support of the largest h over all ranks (reduced at every evaluation): the halo reaches P
 // such radii at the plan, and the support's growth since then eats into the skin, as in the
 // Verlet list (neighbors/verlet_list.hpp). After such a re-plan, when the largest
