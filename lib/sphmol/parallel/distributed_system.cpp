@@ -99,8 +99,6 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     throw std::invalid_argument("DistributedSystem: the system holds particles [" + std::to_string(first) + ", " +
                                 std::to_string(first + P.size()) + ") of the scene, not this rank's share [" +
                                 std::to_string(lo) + ", " + std::to_string(hi) + ")");
-  std::vector<std::uint32_t> rows(hi - lo);
-  std::iota(rows.begin(), rows.end(), static_cast<std::uint32_t>(lo - first));
   std::array<std::vector<double>, D> xw;
   for (int d = 0; d < D; ++d) {
     xw[d].resize(hi - lo);
@@ -132,6 +130,8 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
     // A share (or one rank): the slice's part of the start state moves with the particles from
     // here on, and neither the scene nor y0 is read again; the caller may drop them now
     // (scene_read), before the migration and the searches of the partition by pair count.
+    std::vector<std::uint32_t> rows(hi - lo);
+    std::iota(rows.begin(), rows.end(), static_cast<std::uint32_t>(lo - first));
     take_particles(whole, rows, first);
     y = local_part(y0, Y, first);
     if (scene_read) scene_read();
@@ -466,16 +466,15 @@ bool DistributedSystem<D>::moved_too_far(double t, const double* y) const {
     }
     far |= static_cast<std::int64_t>(r2 > limit2);
   }
-  double r2max = far != 0 ? std::numeric_limits<double>::infinity() : 0.0;
   for (std::size_t o = nfo_; o < owned_.size(); ++o) {
     double r2 = 0.0;
     for (int d = 0; d < D; ++d) {
       const double dx = domain_.min_image(d, domain_.wrap(d, owned_.wall_position(d, o, t)) - x_plan_[d][o]);
       r2 += dx * dx;
     }
-    r2max = std::max(r2max, r2);
+    far |= static_cast<std::int64_t>(r2 > limit2);
   }
-  return !comm_.all(!(r2max > limit2));
+  return !comm_.all(far == 0);
 }
 
 template <int D>

@@ -17,7 +17,7 @@ namespace {
 // Past this many particles the scene is not counted while loading (built_size: no memory, but the
 // time of going through every particle): the shared memory check gets the bound
 // (scene_particle_bound, the lattice of the whole domain box) and refuses what the machine cannot hold.
-constexpr double kBuildWhileLoading = 1.0e8;
+constexpr double kCountWhileLoading = 1.0e8;
 
 // The scene's counts from a build that goes through every particle (and so refuses what the run's
 // build would) but keeps none: a share too small to hold one (scene/scene_builder.hpp), so that the
@@ -45,7 +45,7 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
   check_scene_bodies(spec, c);  // also for a scene too large to build while loading
   SceneSize size;
   const double bound = scene_particle_bound(spec, c);
-  if (bound > kBuildWhileLoading) {
+  if (bound > kCountWhileLoading) {
     size.spacing = scene_spacing(spec, c);
     size.fluid = bound;
   } else {
