@@ -2,7 +2,7 @@
 """Taylor-Green vortex over Re = 10, 100, 300, 1000, 3000 with the transport velocity and with particle
 shifting, each with and without the Laplacian correction of the shipped file, and the shipped file's
 default (discretization.position_correction: auto, which picks one of the two by the cell Reynolds
-number Re_h = U h / nu).
+number Re_h = U h / nu), as it is and without its bulk viscosity and normalised summation density.
 
 Runs verification/taylor_green.yaml (50 x 50, or N x N with --across N) through sph-mol with --set
 overrides only, collects the decay-rate error (vortex-mode fit) and L1 of every run into
@@ -28,14 +28,19 @@ from concurrent.futures import ThreadPoolExecutor
 TRANSPORT = ["discretization.position_correction=transport_velocity"]
 SHIFTING = ["discretization.position_correction=particle_shifting", "discretization.particle_shifting={coefficient: 4}"]
 UNCORRECTED = ["discretization.laplacian_correction=none"]
+# The file without its acoustic damping: no bulk viscosity, plain summation density (the file before
+# 2026-12-06).
+PLAIN = ["discretization.bulk_viscosity=0", "discretization.density=summation"]
 # The shipped file corrects the Morris Laplacian (laplacian_correction: moment_symmetric); the
-# *_uncorrected schemes turn the correction off. "auto" is the shipped file as it is.
+# *_uncorrected schemes turn the correction off. "auto" is the shipped file as it is, "auto_plain" the
+# same without the bulk viscosity and the normalised summation density.
 SCHEMES = {
     "transport_velocity": TRANSPORT,
     "transport_velocity_uncorrected": TRANSPORT + UNCORRECTED,
     "particle_shifting": SHIFTING,
     "particle_shifting_uncorrected": SHIFTING + UNCORRECTED,
     "auto": [],
+    "auto_plain": PLAIN,
 }
 RES = {re_: ["fluid.kinematic_viscosity=%r" % (1.0 / re_)] for re_ in (10, 100, 300, 1000, 3000)}  # nu = U L / Re
 RES[10].append("time.t_end=5")
@@ -104,14 +109,16 @@ plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $5 : 1/0) with 
      '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $5 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
      '' using 1:(strcol(2) eq 'particle_shifting' ? $5 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
      '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $5 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction', \\
-     '' using 1:(strcol(2) eq 'auto' ? $5 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto'
+     '' using 1:(strcol(2) eq 'auto' ? $5 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto', \\
+     '' using 1:(strcol(2) eq 'auto_plain' ? $5 : 1/0) with points pt 1 ps 2.5 lw 2 lc rgb 'gray40' title 'default without bulk viscosity and normalised summation'
 set title 'L1 velocity error / (U e^{bt})'
 set ylabel 'L1'
 plot 're_sweep.csv' using 1:(strcol(2) eq 'transport_velocity' ? $7 : 1/0) with linespoints pt 7 title 'transport velocity', \\
      '' using 1:(strcol(2) eq 'transport_velocity_uncorrected' ? $7 : 1/0) with linespoints pt 6 title 'transport velocity, no Laplacian correction', \\
      '' using 1:(strcol(2) eq 'particle_shifting' ? $7 : 1/0) with linespoints pt 5 title 'particle shifting, A = 4', \\
      '' using 1:(strcol(2) eq 'particle_shifting_uncorrected' ? $7 : 1/0) with linespoints pt 4 title 'particle shifting, no Laplacian correction', \\
-     '' using 1:(strcol(2) eq 'auto' ? $7 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto'
+     '' using 1:(strcol(2) eq 'auto' ? $7 : 1/0) with points pt 2 ps 2.5 lw 2 lc rgb 'black' title 'default: position\\_correction auto', \\
+     '' using 1:(strcol(2) eq 'auto_plain' ? $7 : 1/0) with points pt 1 ps 2.5 lw 2 lc rgb 'gray40' title 'default without bulk viscosity and normalised summation'
 unset multiplot
 """ % (a.across, a.across))
     with open(os.path.join(out, "re_sweep.gp"), "w") as f:

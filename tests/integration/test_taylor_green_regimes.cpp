@@ -1,7 +1,7 @@
 // Taylor-Green beyond the shipped Re 100: Re 1000 by default (position_correction: auto takes particle
 // shifting there), Re 10 to t = 5 s, and the
 // same accuracy at U = 0.1 as at U = 1 once the sound speed follows U (c = 10 U by default). CI grids
-// (20-40 particles across, a few seconds each in Release); the 50 x 50 numbers are in
+// (20-50 particles across, a few seconds each in Release); the 50 x 50 numbers are in
 // docs/verification.md.
 #include <catch2/catch.hpp>
 
@@ -24,27 +24,67 @@ nlohmann::json run(const std::vector<std::string>& overrides) {
 }
 }  // namespace
 
-TEST_CASE("taylor_green Re 1000 by default: position_correction auto keeps the decay rate within 5 % (40 x 40, t = 2 s)",
+TEST_CASE("taylor_green Re 1000 by default: position_correction auto keeps the decay rate within 5 % (50 x 50, t = 2 s)",
           "[integration][taylor_green][position_correction]") {
-  // The user changes only the viscosity. Re_h = U h / nu = 1 * 0.05 / 0.001 = 50 is above the threshold,
-  // so auto takes particle shifting (A = 4). Measured at 40 x 40: 2.3 % (L1 0.046); the transport
-  // velocity, the default before auto, 19 % (L1 0.055): its shift damps the vortex by ~0.01 1/s, which
-  // is 11 % of b at Re 1000 (50 x 50).
-  const std::vector<std::string> re1000{"discretization.particles_across=40", "fluid.kinematic_viscosity=0.001"};
+  // The user changes only the viscosity. Re_h = U h / nu = 1 * 0.04 / 0.001 = 40 is above the threshold,
+  // so auto takes particle shifting (A = 4). Measured at 50 x 50 (the file's grid): 3.4 % (L1 0.0097);
+  // the transport velocity, the default before auto, 9.4 % (L1 0.025): its shift damps the vortex. At
+  // 40 x 40 the file gives 6.3 % (4.6 % without the bulk viscosity and the normalised summation, which
+  // cost damping at this Re on the coarser grid; docs/verification.md).
+  const std::vector<std::string> re1000{"fluid.kinematic_viscosity=0.001"};
   const auto s = run(re1000);
   const auto& f = s["final_errors"];
   INFO(f.dump() << "\n" << s["position_correction"].dump());
   CHECK(s["status"] == "completed");
   CHECK(s["position_correction"]["chosen"] == "particle_shifting");
-  CHECK(s["position_correction"]["cell_reynolds_number"].get<double>() == Approx(50.0));
+  CHECK(s["position_correction"]["cell_reynolds_number"].get<double>() == Approx(40.0));
   CHECK(f["decay_rate_rel_error"].get<double>() < 0.05);
-  CHECK(f["L1_velocity"].get<double>() < 0.07);
+  CHECK(f["L1_velocity"].get<double>() < 0.015);
   // The old default fails the same target here: the rule is what meets it.
   auto old = re1000;
   old.push_back("discretization.position_correction=transport_velocity");
   const auto t = run(old);
   INFO(t["final_errors"].dump());
-  CHECK(t["final_errors"]["decay_rate_rel_error"].get<double>() > 0.1);
+  CHECK(t["final_errors"]["decay_rate_rel_error"].get<double>() > 0.07);
+}
+
+TEST_CASE("taylor_green Re 100: the bulk viscosity and the normalised summation take the sound out of L1 (30 x 30, t = 1 s)",
+          "[integration][taylor_green][bulk_viscosity]") {
+  // What L1 measured was particle-scale sound (docs/verification.md, "Taylor-Green: a bulk viscosity for
+  // the acoustic noise"). Measured at 30 x 30: the file L1 0.0113, decay-rate error 0.47 %; without the
+  // bulk viscosity and with plain summation (the file before) 0.0308 / 1.9 %; the bulk viscosity alone
+  // 0.0226 / 2.7 %.
+  const std::vector<std::string> base{"discretization.particles_across=30", "time.t_end=1", "output.times=[0.2, 0.4, 0.6, 0.8, 1]"};
+  auto with = [&](std::vector<std::string> extra) {
+    auto o = base;
+    o.insert(o.end(), extra.begin(), extra.end());
+    return run(o);
+  };
+  const auto file = with({});
+  const auto before = with({"discretization.bulk_viscosity=0", "discretization.density=summation"});
+  const auto& f = file["final_errors"];
+  const auto& b = before["final_errors"];
+  INFO(f.dump() << "\n" << b.dump());
+  CHECK(f["L1_velocity"].get<double>() < 0.016);
+  CHECK(f["decay_rate_rel_error"].get<double>() < 0.01);
+  CHECK(b["L1_velocity"].get<double>() > 0.025);
+  for (const auto& d : file["conservation"]["momentum_drift_relative"]) CHECK(std::abs(d.get<double>()) < 1e-12);
+}
+
+TEST_CASE("taylor_green: a large bulk viscosity is stable at the CFL step, which counts zeta / 4 (20 x 20)",
+          "[integration][taylor_green][bulk_viscosity]") {
+  // bulk_viscosity 10 (zeta = 10 c h) puts the bulk limit at cfl.viscous h^2 / (zeta / 4), a fifth of
+  // the acoustic step; at the acoustic step itself (time.dt) the run blows up.
+  const std::vector<std::string> base{"discretization.particles_across=20", "time.t_end=0.3", "output.times=[0.1, 0.2, 0.3]",
+                                      "discretization.bulk_viscosity=10"};
+  const auto cfl = run(base);
+  INFO(cfl["final_errors"].dump());
+  CHECK(cfl["status"] == "completed");
+  CHECK(cfl["final_errors"]["mode_amplitude_rel_error"].get<double>() < 0.1);
+  auto fixed = base;
+  fixed.push_back("time.dt=2.5e-3");  // 0.25 h / c with h = 0.1, c = 10
+  const auto blown = run(fixed);
+  CHECK(blown["status"] == "blown_up");
 }
 
 TEST_CASE("taylor_green Re 10: stable to t = 5 s, decay rate right while the vortex is above the noise (30 x 30)",
@@ -91,9 +131,11 @@ TEST_CASE("taylor_green: U = 0.1 is as accurate as U = 1 with the default sound 
 TEST_CASE("taylor_green Re 100: the pair-symmetric moment correction fixes the late decay rate and keeps momentum (30 x 30)",
           "[integration][taylor_green][laplacian_correction]") {
   // The rate is fitted over t = 0.4-1 s, after the start-up (the lattice breaking up under the vortex
-  // takes 1-2 % of the amplitude in the first 0.4 s, with or without the correction). Measured at 30 x 30:
-  // none 2.7 % too slow (Morris' sum with eta^2 = 0.01 h^2 is 1.5 % low on the lattice, Wendland C2 at
-  // h = 2 dx), moment_symmetric 0.76 %, moment 0.78 % with a momentum drift of 8e-5.
+  // takes 1-2 % of the amplitude in the first 0.4 s, with or without the correction). Measured at 30 x 30
+  // with the file (normalised summation, bulk viscosity): none 3.5 % too slow (Morris' sum with eta^2 =
+  // 0.01 h^2 is 1.5 % low on the lattice, Wendland C2 at h = 2 dx), moment_symmetric 1.6 %. (With plain
+  // summation and no bulk viscosity, the file before: 2.7 % and 0.76 %, moment 0.78 % with a momentum
+  // drift of 8e-5.)
   const std::vector<std::string> base{"discretization.particles_across=30", "time.t_end=1", "output.times=[0.4, 0.6, 0.8, 1]"};
   auto with = [&](const std::string& correction) {
     auto o = base;
@@ -105,8 +147,8 @@ TEST_CASE("taylor_green Re 100: the pair-symmetric moment correction fixes the l
   const auto& fn = none["final_errors"];
   const auto& fs = sym["final_errors"];
   INFO(fn.dump() << "\n" << fs.dump());
-  CHECK(fn["decay_rate_rel_error"].get<double>() > 0.02);
-  CHECK(fs["decay_rate_rel_error"].get<double>() < 0.015);
+  CHECK(fn["decay_rate_rel_error"].get<double>() > 0.03);
+  CHECK(fs["decay_rate_rel_error"].get<double>() < 0.02);
   // Too slow without the correction: the viscosity it restores is missing.
   CHECK(fn["decay_rate"].get<double>() > fn["decay_rate_exact"].get<double>());
   for (const auto& d : sym["conservation"]["momentum_drift_relative"]) CHECK(std::abs(d.get<double>()) < 1e-12);

@@ -119,3 +119,24 @@ TEST_CASE("config: discretization.particle_mass: summation by default, gradient 
     CHECK_THAT(e.what(), Contains("discretization.particle_mass: is not applied by case 'shock_tube'"));
   }
 }
+
+TEST_CASE("config: discretization.bulk_viscosity: off by default, round-trips, in range, not for an ideal gas", "[config]") {
+  const auto d = sphmol::load_config_string(cavity);
+  CHECK(d.discretization.bulk_viscosity == 0.0);
+  CHECK(sphmol::to_yaml(d).find("bulk_viscosity") == std::string::npos);
+  const auto c = sphmol::load_config_string(cavity, {"discretization.bulk_viscosity=2"});
+  CHECK(c.discretization.bulk_viscosity == 2.0);
+  const auto back = sphmol::load_config_string(sphmol::to_yaml(c));
+  CHECK(back.discretization.bulk_viscosity == 2.0);
+  CHECK(sphmol::to_yaml(back) == sphmol::to_yaml(c));
+  CHECK_THAT(set(cavity, {"discretization.bulk_viscosity=-1"}),
+             Contains("discretization.bulk_viscosity: -1 is out of range") && Contains("zeta / (c0 h)"));
+  CHECK_THAT(set(cavity, {"discretization.bulk_viscosity=.nan"}), Contains("discretization.bulk_viscosity"));
+  const std::string shock = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube.yaml";
+  try {
+    (void)sphmol::load_config(shock, {"discretization.bulk_viscosity=1"});
+    FAIL("shock_tube accepted bulk_viscosity with an ideal gas");
+  } catch (const sphmol::ConfigError& e) {
+    CHECK_THAT(e.what(), Contains("discretization.bulk_viscosity") && Contains("ideal gas"));
+  }
+}

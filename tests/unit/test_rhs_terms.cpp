@@ -3,12 +3,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
 #include "sphmol/boundary/morris_wall_velocity.hpp"
 #include "sphmol/kernels/cubic_spline.hpp"
 #include "sphmol/physics/body_force.hpp"
+#include "sphmol/physics/bulk_viscosity.hpp"
 #include "sphmol/physics/eos_linear.hpp"
 #include "sphmol/physics/morris_moment.hpp"
 #include "sphmol/physics/morris_viscosity.hpp"
@@ -18,6 +20,7 @@
 #include "sphmol/physics/summation_density.hpp"
 #include "sphmol/physics/transport_velocity.hpp"
 #include "sphmol/physics/xsph.hpp"
+#include "sphmol/rhs/sph_system.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 
 #include "workspace_pairs.hpp"
@@ -307,4 +310,99 @@ TEST_CASE("transport velocity: nothing on a lattice, pushes displaced particles 
     transport_velocity(f.w, pb, tau, true);
     check_momentum_conserved(f);
   }
+}
+
+namespace {
+// The bulk viscosity's two passes on the fixture: divergences, then the viscous pressure's forces.
+std::shared_ptr<VelocityDivergenceField> apply_bulk_viscosity(Fixture& f, double zeta) {
+  auto div = std::make_shared<VelocityDivergenceField>();
+  VelocityDivergence<2>(div).apply(f.w);
+  BulkViscosity<2>(zeta, div).apply(f.w);
+  return div;
+}
+}  // namespace
+
+TEST_CASE("bulk viscosity: nothing on a divergence-free shear wave, zeta k^2 damping of a sound wave", "[rhs]") {
+  const double zeta = 0.3, k = 2.0 * M_PI;
+  SECTION("a shear wave u = sin(k y) has no divergence and gets no force") {
+    Fixture f(20, true);
+    for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[0][i] = std::sin(k * f.w.x[1][i]);
+    f.pairs();
+    const auto div = apply_bulk_viscosity(f, zeta);
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+      CHECK(std::abs((*div)[i]) < 1e-10);
+      CHECK(std::abs(f.dvdt[0][i]) < 1e-9);
+      CHECK(std::abs(f.dvdt[1][i]) < 1e-9);
+    }
+  }
+  SECTION("a sound wave u = sin(k x): div = k cos(k x), dv/dt = zeta d(div)/dx = -zeta k^2 sin(k x)") {
+    Fixture f(40, true);
+    for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[0][i] = std::sin(k * f.w.x[0][i]);
+    f.pairs();
+    const auto div = apply_bulk_viscosity(f, zeta);
+    double worst_div = 0.0, worst_a = 0.0;
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+      const double x = f.w.x[0][i];
+      worst_div = std::max(worst_div, std::abs((*div)[i] - k * std::cos(k * x)));
+      worst_a = std::max(worst_a, std::abs(f.dvdt[0][i] + zeta * k * k * std::sin(k * x)));
+      CHECK(std::abs(f.dvdt[1][i]) < 1e-9);
+    }
+    // The kernel's smoothing of a wave 40 spacings long (k h = 0.2): a few per cent.
+    CHECK(worst_div < 0.03 * k);
+    CHECK(worst_a < 0.05 * zeta * k * k);
+  }
+}
+
+TEST_CASE("bulk viscosity conserves momentum and dissipates exactly -zeta sum m div^2 at uniform density", "[rhs]") {
+  Fixture f(14, true, 0, 0.2);
+  random_flow(f);
+  const double zeta = 0.05;
+  SECTION("momentum on a disordered set with its summed density") {
+    apply_bulk_viscosity(f, zeta);
+    check_momentum_conserved(f);
+  }
+  SECTION("kinetic energy at uniform density") {
+    for (auto& r : f.w.rho) r = f.rho0;
+    const auto div = apply_bulk_viscosity(f, zeta);
+    double power = 0.0, expected = 0.0;
+    for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+      power += f.P.mass[i] * (f.w.v[0][i] * f.dvdt[0][i] + f.w.v[1][i] * f.dvdt[1][i]);
+      expected -= zeta * f.P.mass[i] * (*div)[i] * (*div)[i];
+    }
+    REQUIRE(expected < 0.0);
+    CHECK(power == Approx(expected).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("bulk viscosity at a wall: the wall takes the fluid particle's divergence", "[rhs]") {
+  // A uniform compression v = -y continued into the walls below y = 0 (periodic in x, free top): the
+  // divergence is the same everywhere the support is full, walls included, so the viscous pressure is
+  // uniform and the rows beside the wall, whose supports the wall particles fill, get no force. (A wall
+  // with no viscous pressure of its own would push them as the free top's truncated rows are pushed.)
+  Fixture f(20, true, 4);
+  for (std::size_t i = 0; i < f.w.n; ++i) f.w.v[1][i] = -f.w.x[1][i];
+  f.pairs();
+  const auto div = apply_bulk_viscosity(f, 1.0);
+  const std::size_t c = f.centre();
+  CHECK((*div)[c] == Approx(-1.0).epsilon(0.02));
+  double top = 0.0, beside_wall = 0.0;
+  for (std::size_t i = 0; i < f.P.n_fluid; ++i) {
+    const double y = f.w.x[1][i];
+    if (y > 1.0 - f.dx) top = std::max(top, std::abs(f.dvdt[1][i]));
+    if (y < 2.0 * f.h) beside_wall = std::max(beside_wall, std::hypot(f.dvdt[0][i], f.dvdt[1][i]));
+  }
+  REQUIRE(top > 0.0);
+  CHECK(beside_wall < 1e-9 * top);
+}
+
+TEST_CASE("the viscous step limit counts a quarter of the bulk viscosity, with an implicit viscosity too", "[rhs]") {
+  CflLimits cfl;
+  cfl.kinematic_viscosity = 0.01;
+  cfl.bulk_viscosity = 0.8;
+  const double h = 0.04, inf = std::numeric_limits<double>::infinity();
+  CHECK(cfl_step(cfl, inf, 0.0, h, true) == Approx(0.125 * h * h / (0.01 + 0.2)));
+  // IMEX: the viscosity is implicit, the bulk viscosity is not.
+  CHECK(cfl_step(cfl, inf, 0.0, h, false) == Approx(0.125 * h * h / 0.2));
+  cfl.bulk_viscosity = 0.0;
+  CHECK(cfl_step(cfl, inf, 0.0, h, false) == inf);
 }

@@ -141,6 +141,9 @@ struct DiscretizationConfig {
   double wall_density_floor_width = 1e-4;
   bool wall_density_floor_width_given = false;  // for the check that some wall is dynamic (scenes: per body)
   double density_diffusion = 0.0;  // delta-SPH delta (Molteni & Colagrossi 2009), >= 0; 0 = off; needs continuity
+  // Bulk viscosity zeta in units of c0 h (physics/bulk_viscosity.hpp), >= 0; 0 = off; needs a constant
+  // sound speed (not ideal_gas).
+  double bulk_viscosity = 0.0;
   RepulsiveConfig repulsive;
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
   // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).

@@ -330,7 +330,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure",
                                 "wall_density_floor_width", "repulsive",
                                 "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting", "position_correction",
-                                "position_noise", "density_diffusion", "continuity", "particle_mass"});
+                                "position_noise", "density_diffusion", "bulk_viscosity", "continuity", "particle_mass"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -524,6 +524,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.density_diffusion > 0 && d.density != "continuity")
       disc.fail("density_diffusion", "diffuses the continuity density; needs discretization.density: continuity (got '" +
                                          d.density + "')");
+    if (const auto v = disc.real("bulk_viscosity")) d.bulk_viscosity = *v;
+    disc.check("bulk_viscosity", d.bulk_viscosity >= 0 && d.bulk_viscosity <= 100, d.bulk_viscosity, "in [0, 100] (zeta / (c0 h); 0 = off)");
+    if (d.bulk_viscosity > 0 && c.fluid.eos.type == "ideal_gas")
+      disc.fail("bulk_viscosity", "is scaled by the constant sound speed c0 of a liquid's equation of state; an ideal gas "
+                                  "has none (use discretization.artificial_viscosity)");
     if (const auto v = disc.string("continuity")) d.continuity = disc.choice("continuity", *v, {"mass", "volume"});
     if (d.continuity != "mass" && d.density != "continuity")
       disc.fail("continuity", "'" + d.continuity + "' weights the continuity density; needs discretization.density: "

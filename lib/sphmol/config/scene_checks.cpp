@@ -123,7 +123,9 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     // The IMEX integrators treat the viscous term implicitly: their CFL step has no viscous limit.
     const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
     const double nu = std::max(f.kinematic_viscosity, s.kinematic_viscosity);
-    if (nu > 0 && !imex) dt_max = std::min(dt_max, t.cfl.viscous * h * h / nu);
+    // The bulk viscosity is explicit with every integrator (rhs/sph_system.hpp, cfl_step).
+    const double diffusivity = (imex ? 0.0 : nu) + 0.25 * d.bulk_viscosity * f.eos.sound_speed * h;
+    if (diffusivity > 0) dt_max = std::min(dt_max, t.cfl.viscous * h * h / diffusivity);
     if (t.t_end / dt_max > max_steps)
       r.time.fail("max_steps", std::to_string(t.max_steps) + " steps cannot reach time.t_end = " + shown(t.t_end) +
                                    " s: the CFL step is at most " + shown(dt_max) + " s (h = " + shown(h) + " m), so at least " +

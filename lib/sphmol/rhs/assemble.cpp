@@ -16,6 +16,7 @@
 #include "sphmol/boundary/repulsive_force.hpp"
 #include "sphmol/boundary/wall_pressure_extrapolated.hpp"
 #include "sphmol/core/join.hpp"
+#include "sphmol/physics/bulk_viscosity.hpp"
 #include "sphmol/physics/background_pressure.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/physics/artificial_conductivity.hpp"
@@ -232,6 +233,13 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
+  // Bulk viscosity: the divergences in a pass of their own, then the viscous pressure that reads them.
+  const double zeta = disc.bulk_viscosity * fluid.eos.sound_speed * h;
+  if (zeta > 0.0) {
+    auto div = std::make_shared<VelocityDivergenceField>();
+    add("discretization.bulk_viscosity", std::make_unique<VelocityDivergence<D>>(div));
+    add("discretization.bulk_viscosity", std::make_unique<BulkViscosity<D>>(zeta, div));
+  }
   if (av.enabled && !wc_row) {
     const SignalVelocityPi sv{av.alpha, av.beta, av.band_width(), av.band_offset()};
     // The term for a Pi form and the energy flag, with the integral approach's gradients or the kernel's.
@@ -291,7 +299,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
       nu_max = std::max(nu_max, particles.viscosity[i] / (particles.rest_density.empty() ? fluid.density : particles.rest_density[i]));
   }
   CflLimits cfl{config.time.cfl.acoustic, config.time.cfl.force, config.time.cfl.viscous,
-                fluid.eos.type == "ideal_gas" ? 0.0 : fluid.eos.sound_speed, nu_max};
+                fluid.eos.type == "ideal_gas" ? 0.0 : fluid.eos.sound_speed, nu_max, zeta};
   auto sys = std::make_unique<SphSystem<D>>(std::move(particles), domain, h, std::move(kernel), std::move(terms),
                                             std::move(list), cfl);
   StateFields fields;

@@ -1,0 +1,46 @@
+#pragma once
+// The SPH velocity divergence per fluid particle (Monaghan 1992, sec. 2, applied to v):
+//   div_i = sum_j (m_j / rho_j) (v_j - v_i) . grad_i W_ij,
+// exact for a linear velocity field on a lattice whose particle volumes satisfy the gradient moment
+// sum_j V_j (x_j - x_i) grad_i W_ij^T = I (discretization.particle_mass: gradient), and within the
+// moment's deviation otherwise. Wall neighbours enter with the velocity the viscous terms see (the wall
+// model's no-slip velocity where it sets one, scaled by its factor; rhs/workspace.hpp). The bulk viscous
+// pressure (physics/bulk_viscosity.hpp) reads div_j of every neighbour while summing row i, so the
+// divergences are a pass of their own (a term that feeds neighbours ends a fused pass,
+// rhs/pair_pass_plan.hpp).
+#include <memory>
+#include <vector>
+
+#include "sphmol/rhs/pair_term.hpp"
+
+namespace sphmol {
+
+// div v per fluid particle (workspace index): written by VelocityDivergence, read by BulkViscosity.
+using VelocityDivergenceField = std::vector<double>;
+
+template <int D>
+class VelocityDivergence final : public PairTermFor<D, VelocityDivergence<D>> {
+ public:
+  explicit VelocityDivergence(std::shared_ptr<VelocityDivergenceField> div) : div_(std::move(div)) {}
+  std::string_view name() const override { return "velocity_divergence"; }
+  bool feeds_neighbours() const override { return true; }
+  void prepare(Workspace<D>& w) const override { div_->resize(w.n_fluid); }
+  void row_impl(Workspace<D>& w, std::size_t i, const PairRow<D>& r) const {
+    const auto& m = w.particles->mass;
+    const double* vj[D];
+    for (int d = 0; d < D; ++d) vj[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
+    double s = 0.0;  // sum_j V_j F_ij (v_j - v_i) . (x_i - x_j); grad_i W_ij = F_ij (x_i - x_j)
+    for (std::uint32_t k = 0; k < r.n; ++k) {
+      const std::uint32_t j = r.j[k];
+      double dv = 0.0;
+      for (int d = 0; d < D; ++d) dv += (vj[d][j] - w.v[d][i]) * r.dx[d][k];
+      s += m[j] / w.rho[j] * r.F[k] * r.vfac[k] * dv;
+    }
+    (*div_)[i] = s;
+  }
+
+ private:
+  std::shared_ptr<VelocityDivergenceField> div_;
+};
+
+}  // namespace sphmol
