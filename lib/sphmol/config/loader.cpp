@@ -526,6 +526,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                          d.density + "')");
     if (const auto v = disc.real("bulk_viscosity")) d.bulk_viscosity = *v;
     disc.check("bulk_viscosity", d.bulk_viscosity >= 0 && d.bulk_viscosity <= 100, d.bulk_viscosity, "in [0, 100] (zeta / (c0 h); 0 = off)");
+    if (d.bulk_viscosity > 0 && d.boundary == "ghost")
+      disc.fail("bulk_viscosity", "not available with boundary 'ghost': the images carry the mirrored no-slip velocity, whose "
+                                  "divergence is not the fluid's (use boundary: wall_particles)");
     if (d.bulk_viscosity > 0 && c.fluid.eos.type == "ideal_gas")
       disc.fail("bulk_viscosity", "is scaled by the constant sound speed c0 of a liquid's equation of state; an ideal gas "
                                   "has none (use discretization.artificial_viscosity)");
