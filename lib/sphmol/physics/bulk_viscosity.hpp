@@ -8,9 +8,13 @@
 // compressive (acoustic) part of the velocity only and leaves a divergence-free flow alone, so it damps
 // the particle-scale sound waves that a weakly compressible model keeps in a vortex (docs/verification.md,
 // "Taylor–Green: a bulk viscosity for the acoustic noise") without adding to the shear viscosity. Fluid
-// pairs exchange equal and opposite forces (momentum to round-off). A wall neighbour, which has no
-// divergence of its own, takes the fluid particle's (the mirror image's), as the extrapolated wall
-// pressure takes the fluid's.
+// pairs exchange equal and opposite forces (momentum to round-off). A wall neighbour has no viscous
+// pressure of its own (p_b,j = 0): the walls' velocities enter the divergence as given values, and the
+// force is then the adjoint of the divergence, so the term dissipates exactly
+//   sum_i m_i v_i . dv_i/dt = -zeta sum_i m_i div_i^2   (uniform rho, walls included).
+// The mirror rule p_b,j = p_b,i of the extrapolated wall pressure counts the wall pairs twice in that
+// balance, -zeta sum_i m_i div_i (div_i + div_i^walls), which is not negative: the cavity at 40^2 blew
+// up at t = 0.95 s with it (bulk_viscosity 1) and runs to steady state without it.
 //
 // Being the gradient of a divergence, each a sum over the support, the operator reaches only as high a
 // wavenumber as a two-kernel stencil resolves: its largest eigenvalue on a lattice is 0.19-0.20 of the
@@ -37,7 +41,7 @@ class BulkViscosity final : public PairTermFor<D, BulkViscosity<D>> {
     double a[D] = {};
     for (std::uint32_t k = 0; k < r.n; ++k) {
       const std::uint32_t j = r.j[k];
-      const double qj = k < nf ? div[j] / w.rho[j] : qi;
+      const double qj = k < nf ? div[j] / w.rho[j] : 0.0;
       const double s = m[j] * (qi + qj) * r.F[k];
       for (int d = 0; d < D; ++d) a[d] += s * r.dx[d][k];
     }
