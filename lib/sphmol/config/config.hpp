@@ -144,6 +144,7 @@ struct DiscretizationConfig {
   // Bulk viscosity zeta in units of c0 h (physics/bulk_viscosity.hpp), >= 0; 0 = off; needs a constant
   // sound speed (not ideal_gas).
   double bulk_viscosity = 0.0;
+  double bulk_zeta(double c0, double h) const { return bulk_viscosity * c0 * h; }  // zeta [m^2/s]
   RepulsiveConfig repulsive;
   // Velocity the viscous terms see at wall particles: "prescribed" (the wall's own velocity) or
   // "morris" (Morris, Fox & Zhu 1997: the fluid velocity extrapolated through the wall, per pair).
@@ -175,6 +176,10 @@ struct CflConfig {
   // The top of each coefficient's range, where the explicit integrators stay stable (config/README.md,
   // "CFL coefficients"): the loader refuses larger coefficients.
   static constexpr double kMaxAcoustic = 1.0, kMaxForce = 1.0, kMaxViscous = 0.125;
+  // The diffusivity of the viscous limit dt <= viscous * h^2 / diffusivity: the kinematic viscosity nu
+  // (0 where the integrator treats it implicitly) and a quarter of the always explicit bulk viscosity
+  // zeta, whose top eigenvalue is under a fifth of the Morris Laplacian's (physics/bulk_viscosity.hpp).
+  static double diffusivity(double nu, double zeta) { return nu + 0.25 * zeta; }
 };
 
 // The Krylov solver of the implicit viscous step (leapfrog_imex, arkode_imex).

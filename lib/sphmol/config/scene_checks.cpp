@@ -124,7 +124,7 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
     const double nu = std::max(f.kinematic_viscosity, s.kinematic_viscosity);
     // The bulk viscosity is explicit with every integrator (rhs/sph_system.hpp, cfl_step).
-    const double diffusivity = (imex ? 0.0 : nu) + 0.25 * d.bulk_viscosity * f.eos.sound_speed * h;
+    const double diffusivity = CflConfig::diffusivity(imex ? 0.0 : nu, d.bulk_zeta(f.eos.sound_speed, h));
     if (diffusivity > 0) dt_max = std::min(dt_max, t.cfl.viscous * h * h / diffusivity);
     if (t.t_end / dt_max > max_steps)
       r.time.fail("max_steps", std::to_string(t.max_steps) + " steps cannot reach time.t_end = " + shown(t.t_end) +

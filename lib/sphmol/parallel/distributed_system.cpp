@@ -113,30 +113,28 @@ DistributedSystem<D>::DistributedSystem(const Communicator& comm, const Config& 
   std::vector<double> count(hi - lo, 1.0);
   const RcbResult<D> cut = rcb_->partition(xs, count.data(), slice.data(), slice.size());
   for (auto& c : xw) std::vector<double>().swap(c);
-  std::vector<double> y;
-  if (!whole.is_share() && comm.size() > 1) {
-    // Every rank holds the whole scene (a case that builds it whole): each takes its own particles
-    // from it by the cut's destinations, which every rank learns (4 bytes per particle), instead of
-    // receiving their data from the slices' ranks. The same particles in migrate()'s order
-    // (ascending global id: fluid first), so the same start as the migration's.
+  // Every rank holds the whole scene (a case that builds it whole): each takes its own particles from
+  // it by the cut's destinations, which every rank learns (4 bytes per particle), instead of receiving
+  // their data from the slices' ranks; the same particles in migrate()'s order (ascending global id:
+  // fluid first), so the same start as the migration's. A share (or one rank) takes its slice and
+  // migrates it.
+  const bool take_own = !whole.is_share() && comm.size() > 1;
+  std::vector<std::uint32_t> rows;
+  if (take_own) {
     const std::vector<int> destination = comm.all_gather_v(cut.destination);  // in global-id order
-    std::vector<std::uint32_t> mine;
     for (std::size_t g = 0; g < destination.size(); ++g)
-      if (destination[g] == comm.rank()) mine.push_back(static_cast<std::uint32_t>(g - first));
-    take_particles(whole, mine, first);
-    y = local_part(y0, Y, first);
-    if (scene_read) scene_read();
+      if (destination[g] == comm.rank()) rows.push_back(static_cast<std::uint32_t>(g - first));
   } else {
-    // A share (or one rank): the slice's part of the start state moves with the particles from
-    // here on, and neither the scene nor y0 is read again; the caller may drop them now
-    // (scene_read), before the migration and the searches of the partition by pair count.
-    std::vector<std::uint32_t> rows(hi - lo);
+    rows.resize(hi - lo);
     std::iota(rows.begin(), rows.end(), static_cast<std::uint32_t>(lo - first));
-    take_particles(whole, rows, first);
-    y = local_part(y0, Y, first);
-    if (scene_read) scene_read();
-    migrate_state(cut.destination, y, {});
   }
+  take_particles(whole, rows, first);
+  // The owned part of the start state moves with the particles from here on, and neither the scene
+  // nor y0 is read again: the caller may drop them now (scene_read), before the migration and the
+  // searches of the partition by pair count.
+  std::vector<double> y = local_part(y0, Y, first);
+  if (scene_read) scene_read();
+  if (!take_own) migrate_state(cut.destination, y, {});
   balance_by_pairs(t0, y);
   initial_state_ = std::move(y);
 }

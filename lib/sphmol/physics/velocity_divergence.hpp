@@ -7,8 +7,8 @@
 // continuity equation, not with the no-slip velocity a wall model gives the viscous terms: that velocity
 // reverses the tangential motion across the wall, and the divergence of a field reversed that way is not
 // the fluid's (-du/dx + dv/dy beside a wall along x), which at a moving lid's corners drove the cavity
-// unstable. (Ghost images carry that reversed velocity too, so the assembly refuses the bulk viscosity
-// with ghost walls.) The bulk viscous pressure (physics/bulk_viscosity.hpp) reads div_j of every
+// unstable. (Ghost images carry that reversed velocity too, so the loader refuses the bulk viscosity
+// with ghost walls; a scene's mirror planes need boundary: ghost.) The bulk viscous pressure (physics/bulk_viscosity.hpp) reads div_j of every
 // neighbour while summing row i, so the divergences are a pass of their own (a term that feeds
 // neighbours ends a fused pass, rhs/pair_pass_plan.hpp).
 #include <memory>

@@ -234,13 +234,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }
   // Bulk viscosity: the divergences in a pass of their own, then the viscous pressure that reads them.
-  const double zeta = disc.bulk_viscosity * fluid.eos.sound_speed * h;
+  // (Not with ghost walls: the loader refuses them, physics/velocity_divergence.hpp says why.)
+  const double zeta = disc.bulk_zeta(fluid.eos.sound_speed, h);
   if (zeta > 0.0) {
-    // Ghost images carry the no-slip mirror velocity 2 v_wall - v, whose divergence is not the fluid's
-    // (physics/velocity_divergence.hpp): the cavity with ghost walls blew up with bulk_viscosity 0.3-2.
-    if (ghosts)
-      throw std::invalid_argument("discretization.bulk_viscosity: not available with ghost (mirror) walls, whose images carry "
-                                  "the mirrored no-slip velocity; use wall particles (boundary: wall_particles)");
     auto div = std::make_shared<VelocityDivergenceField>();
     add("discretization.bulk_viscosity", std::make_unique<VelocityDivergence<D>>(div));
     add("discretization.bulk_viscosity", std::make_unique<BulkViscosity<D>>(zeta, div));

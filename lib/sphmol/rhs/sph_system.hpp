@@ -31,9 +31,7 @@ struct CflLimits {
   double acoustic = 0.25, force = 0.25, viscous = 0.125;
   double sound_speed = 0.0;
   double kinematic_viscosity = 0.0;
-  // discretization.bulk_viscosity's zeta [m^2/s]: explicit with every integrator, it counts zeta / 4 in
-  // the viscous limit (its top eigenvalue is under a fifth of the Morris Laplacian's,
-  // physics/bulk_viscosity.hpp).
+  // discretization.bulk_viscosity's zeta [m^2/s]: explicit with every integrator (CflConfig::diffusivity).
   double bulk_viscosity = 0.0;
   // The same limits with every coefficient at the top of its stable range.
   CflLimits widest() const {
@@ -53,7 +51,7 @@ inline double cfl_step(const CflLimits& cfl, double acoustic, double amax2, doub
   if (std::isfinite(acoustic)) dt = std::min(dt, cfl.acoustic * acoustic);
   if (amax2 > 0.0) dt = std::min(dt, cfl.force * std::sqrt(hmin / std::sqrt(amax2)));
   // The viscous limit: the kinematic viscosity unless it is implicit, and the (always explicit) bulk viscosity.
-  const double diffusivity = (viscous ? cfl.kinematic_viscosity : 0.0) + 0.25 * cfl.bulk_viscosity;
+  const double diffusivity = CflConfig::diffusivity(viscous ? cfl.kinematic_viscosity : 0.0, cfl.bulk_viscosity);
   if (diffusivity > 0.0) dt = std::min(dt, cfl.viscous * hmin * hmin / diffusivity);
   return dt;
 }
