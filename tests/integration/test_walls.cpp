@@ -36,6 +36,7 @@ TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse
                                                      "discretization.kernel=cubic_spline",
                                                      "discretization.smoothing_ratio=1.3",
                                                      "discretization.density=summation", "discretization.particle_mass=summation",
+                                                     "discretization.density_diffusion=0",
                                                      "fluid.eos.clamp_negative=true",
                                                      "discretization.particles_across=20", "time.dt=5e-4", "fluid.eos.sound_speed=29.7",
                                                      "time.t_end=4", "output.times=[2, 3, 4]"});

@@ -81,6 +81,7 @@ TEST_CASE("distributed run: a water column with ghost walls under gravity equals
                                {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "fluid.eos.sound_speed=29.7",
                                 "discretization.kernel=cubic_spline", "discretization.smoothing_ratio=1.3",
                                 "discretization.density=summation", "discretization.particle_mass=summation",
+                                "discretization.density_diffusion=0",
                                 "fluid.eos.clamp_negative=true",
                                 "discretization.particles_across=20", "time.dt=5.0e-4", "time.t_end=0.05",
                                 "output.times=[0.025,0.05]", "output.plots=false"});

@@ -141,6 +141,9 @@ struct DiscretizationConfig {
   double wall_density_floor_width = 1e-4;
   bool wall_density_floor_width_given = false;  // for the check that some wall is dynamic (scenes: per body)
   double density_diffusion = 0.0;  // delta-SPH delta (Molteni & Colagrossi 2009), >= 0; 0 = off; needs continuity
+  // What it diffuses: "molteni_colagrossi" the density, "hydrostatic_corrected" its departure from hydrostatics
+  // under the body force (Fourtakas et al. 2019; physics/density_diffusion.hpp).
+  std::string density_diffusion_form = "molteni_colagrossi";
   // Bulk viscosity zeta in units of c0 h (physics/bulk_viscosity.hpp), >= 0; 0 = off; needs a constant
   // sound speed (not ideal_gas).
   double bulk_viscosity = 0.0;

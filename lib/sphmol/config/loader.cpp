@@ -330,7 +330,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                 "neighbor_search", "skin", "reorder", "pair_passes", "combine_terms", "wall_slip", "wall_pressure",
                                 "wall_density_floor_width", "repulsive",
                                 "artificial_viscosity", "artificial_conductivity", "energy", "smoothing_length", "transport_velocity", "particle_shifting", "position_correction",
-                                "position_noise", "density_diffusion", "bulk_viscosity", "continuity", "particle_mass"});
+                                "position_noise", "density_diffusion", "density_diffusion_form", "bulk_viscosity", "continuity", "particle_mass"});
   {
     auto& d = c.discretization;
     const auto n = disc.integer("particles_across");
@@ -524,6 +524,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.density_diffusion > 0 && d.density != "continuity")
       disc.fail("density_diffusion", "diffuses the continuity density; needs discretization.density: continuity (got '" +
                                          d.density + "')");
+    if (const auto v = disc.string("density_diffusion_form"))
+      d.density_diffusion_form = disc.choice("density_diffusion_form", *v, {"molteni_colagrossi", "hydrostatic_corrected"});
+    // A form without the diffusion is said, not refused: turning the diffusion off in a file that names
+    // the form is `--set discretization.density_diffusion=0` alone.
+    if (d.density_diffusion_form != "molteni_colagrossi" && !(d.density_diffusion > 0))
+      c.notices.push_back(disc.where("density_diffusion_form") + ": '" + d.density_diffusion_form +
+                          "' has no effect: discretization.density_diffusion is 0 (off)");
     if (const auto v = disc.real("bulk_viscosity")) d.bulk_viscosity = *v;
     disc.check("bulk_viscosity", d.bulk_viscosity >= 0 && d.bulk_viscosity <= 100, d.bulk_viscosity, "in [0, 100] (zeta / (c0 h); 0 = off)");
     if (d.bulk_viscosity > 0 && d.boundary == "ghost")

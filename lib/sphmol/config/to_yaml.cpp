@@ -108,6 +108,7 @@ std::string to_yaml(const Config& c) {
   y << "  energy: " << (d.energy ? "true" : "false") << "\n"
     << "  smoothing_length: " << d.smoothing_length << "\n";
   if (d.density_diffusion > 0) y << "  density_diffusion: " << num(d.density_diffusion) << "\n";
+  if (d.density_diffusion_form != "molteni_colagrossi") y << "  density_diffusion_form: " << d.density_diffusion_form << "\n";
   if (d.bulk_viscosity > 0) y << "  bulk_viscosity: " << num(d.bulk_viscosity) << "\n";
   if (d.continuity != "mass") y << "  continuity: " << d.continuity << "\n";
   if (d.particle_mass != "summation") y << "  particle_mass: " << d.particle_mass << "\n";

@@ -144,8 +144,9 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
   // formulation), equal to the four separate terms to round-off.
   const bool signal_velocity = av.form == "monaghan_1997";
+  const bool hydrostatic_diffusion = disc.density_diffusion > 0.0 && disc.density_diffusion_form == "hydrostatic_corrected";
   const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && !ia && disc.viscosity == "none" &&
-                      av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass";
+                      av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass" && !hydrostatic_diffusion;
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width(), av.band_offset()};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
@@ -173,7 +174,10 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (dynamic_walls)
     add("discretization.wall_pressure",
         std::make_unique<DynamicWallDensity<D>>(particles.treatment_mask(WallTreatment::dynamic, global_walls)));
-  if (disc.density_diffusion > 0.0 && !wc_row)
+  if (hydrostatic_diffusion)
+    add("discretization.density_diffusion_form", std::make_unique<HydrostaticDensityDiffusion<D>>(
+                                                     disc.density_diffusion, h, fluid.eos.sound_speed, g, fluid.body_force_ramp));
+  else if (disc.density_diffusion > 0.0 && !wc_row)
     add("discretization.density_diffusion", std::make_unique<DensityDiffusion<D>>(disc.density_diffusion, h, fluid.eos.sound_speed));
   auto pressure = [m116, ia, &ia_field]() -> std::unique_ptr<Term<D>> {
     if (ia) return std::make_unique<PressureGradientIA<D>>(ia_field);
