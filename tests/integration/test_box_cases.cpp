@@ -54,7 +54,7 @@ TEST_CASE("hydrostatic: pressure and drift stay bounded (coarse, 4 s)", "[integr
   INFO(f.dump());
   CHECK(f["settled_outputs"].get<int>() == 3);
   // Measured with the shipped settings at 20 across (c0 = 20 sqrt(g H), the CFL step, the hydrostatic
-  // density diffusion): p_rms 0.0063-0.0066, p_max 0.028, max_drift 0.245 (without the diffusion 0.0100,
+  // density diffusion): p_rms 0.0063-0.0066, p_max 0.028, max_drift 0.245 (without the diffusion 0.0093-0.0099,
   // 0.038, 0.25; at c0 = 10 sqrt(g H) 0.0073, 0.025, 0.31: the pressure noise of a density error grows
   // with c0^2). Checked by hand at c0 = 10 sqrt(g H): walls at rest pressure
   // (p_rms 0.51), the cubic spline at h = 1.3 dx with summation density (0.037) and the wall
