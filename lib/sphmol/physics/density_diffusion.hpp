@@ -57,11 +57,16 @@ class HydrostaticDensityDiffusion final : public PairTermFor<D, HydrostaticDensi
       : coef_(delta * h * sound_speed), g_(g), ramp_(ramp) {}
   std::string_view name() const override { return "density_diffusion_hydrostatic"; }
   // rho / c^2 and the volume m / rho (0 for walls: fluid pairs only) of every particle once per
-  // evaluation, not divisions per pair.
+  // evaluation, not divisions per pair; shared by the team's threads (ends with the loop's barrier).
+  bool prepares_in_team() const override { return true; }
   void prepare(Workspace<D>& w) const override {
-    kappa_.resize(w.n);
-    vol_.resize(w.n);
+#pragma omp single
+    {
+      kappa_.resize(w.n);
+      vol_.resize(w.n);
+    }
     const auto& m = w.particles->mass;
+#pragma omp for schedule(static)
     for (std::size_t i = 0; i < w.n; ++i) {
       kappa_[i] = w.c[i] > 0.0 ? w.rho[i] / (w.c[i] * w.c[i]) : 0.0;
       vol_[i] = i < w.n_fluid ? m[i] / w.rho[i] : 0.0;
