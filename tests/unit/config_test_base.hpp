@@ -1,6 +1,8 @@
 #pragma once
 // Shared fixture for the test_config_*.cpp files: a small valid config with known line numbers,
 // and helpers to vary one line and capture the ConfigError text.
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -44,6 +46,21 @@ inline std::string error_of(const std::string& yaml, const std::vector<std::stri
     return e.what();
   }
   return "<no error>";
+}
+
+// The text of the shipped file verification/<name> (name with its .yaml).
+inline std::string shipped(const std::string& name) {
+  std::ifstream in(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Whether one of the loader's notices contains `part`.
+inline bool has_notice(const sphmol::Config& c, const std::string& part) {
+  for (const auto& n : c.notices)
+    if (n.find(part) != std::string::npos) return true;
+  return false;
 }
 
 }  // namespace config_test

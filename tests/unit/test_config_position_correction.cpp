@@ -16,18 +16,13 @@
 #include "sphmol/config/position_correction.hpp"
 
 using namespace sphmol;
+using config_test::has_notice;
+using config_test::shipped;
 using Catch::Matchers::Contains;
 
 namespace {
 
 const std::string tg_path = std::string(SPHMOL_SOURCE_DIR) + "/verification/taylor_green.yaml";
-
-std::string shipped(const std::string& name) {
-  std::ifstream in(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string error_of(const std::string& path, const std::vector<std::string>& overrides) {
   try {
@@ -36,12 +31,6 @@ std::string error_of(const std::string& path, const std::vector<std::string>& ov
     return e.what();
   }
   return "<no error>";
-}
-
-bool has_notice(const Config& c, const std::string& part) {
-  for (const auto& n : c.notices)
-    if (n.find(part) != std::string::npos) return true;
-  return false;
 }
 
 // The kinematic viscosity that puts the shipped Taylor-Green file (U = 1, 50 across, h = 2 dx = 0.04)

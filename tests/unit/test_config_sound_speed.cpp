@@ -11,17 +11,12 @@
 #include "config_test_base.hpp"
 
 using namespace sphmol;
+using config_test::has_notice;
+using config_test::shipped;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-
-std::string shipped(const std::string& name) {
-  std::ifstream in(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // `text` without its one line that contains `key`.
 std::string without_line(std::string text, const std::string& key) {
@@ -29,12 +24,6 @@ std::string without_line(std::string text, const std::string& key) {
   REQUIRE(at != std::string::npos);
   const auto begin = text.rfind('\n', at) + 1, end = text.find('\n', at);
   return text.erase(begin, end - begin + 1);
-}
-
-bool has_notice(const Config& c, const std::string& part) {
-  for (const auto& n : c.notices)
-    if (n.find(part) != std::string::npos) return true;
-  return false;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sphmol/config/config.hpp"
@@ -23,6 +24,9 @@ namespace sphmol {
 struct CaseRead {
   std::shared_ptr<const CaseSettings> settings;
   SceneSize size;
+  // With CaseModule::spacing_from_scene and neither discretization.particles_across nor spacing
+  // given: the loader takes size.spacing as discretization.spacing and reports this rule as a notice.
+  std::string spacing_rule = {};
 };
 
 struct CaseModule {
@@ -38,6 +42,12 @@ struct CaseModule {
   // Case::velocity_scale reads the config alone (not the built scene), so the loader can derive
   // defaults from it before the scene exists: fluid.eos.sound_speed = 10 U, the shifting velocity.
   bool velocity_scale_from_config = false;
+  // The case derives the particle spacing from its geometry when neither particles_across nor
+  // spacing is given (its reader returns it in CaseRead::size.spacing with the rule it used).
+  bool spacing_from_scene = false;
+  // fluid.eos.sound_speed when it is not given, from the config alone (the case's settings read), with
+  // the rule in words for the notice; used before the velocity-scale default c = 10 U. May be empty.
+  std::function<std::pair<double, std::string>(const Config& c)> default_sound_speed;
 
   // Case-specific defaults of shared keys, applied before the shared sections are read. May be empty.
   std::function<void(Config&)> defaults;

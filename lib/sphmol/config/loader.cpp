@@ -107,7 +107,8 @@ double config_velocity_scale(const Config& c, const CaseModule& module) {
 
 // Defaults derived from the scene's velocity scale U (Case::velocity_scale), for the cases that know
 // it from the config alone: the artificial sound speed c = 10 U (Mach 0.1, density variations ~ Ma^2
-// = 1 %; Monaghan 1994) and the particle-shifting velocity. Without U, both must be given.
+// = 1 %; Monaghan 1994) and the particle-shifting velocity. Without U, both must be given. A case
+// with its own sound-speed rule (CaseModule::default_sound_speed, e.g. the tank's depth) uses that.
 void resolve_velocity_defaults(Config& c, const CaseModule& module, MapReader& fluid, MapReader& disc) {
   const bool need_c = c.fluid.eos.type != "ideal_gas" && !(c.fluid.eos.sound_speed > 0.0);
   auto& ps = c.discretization.particle_shifting;
@@ -115,7 +116,14 @@ void resolve_velocity_defaults(Config& c, const CaseModule& module, MapReader& f
   if (!need_c && !need_u) return;
   const double U = config_velocity_scale(c, module);
   const bool known = U > 0.0;
-  if (need_c) {
+  if (need_c && module.default_sound_speed) {
+    MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
+    const auto [cs, rule] = module.default_sound_speed(c);
+    if (!(std::isfinite(cs) && cs > 0.0))
+      eos.fail_missing("sound_speed", "artificial speed of sound c in m/s, > 0 (" + rule + " gives " + number_text(cs) + ")");
+    c.fluid.eos.sound_speed = cs;
+    c.notices.push_back(eos.where("sound_speed") + ": not given: c = " + rule + " = " + number_text(cs) + " m/s");
+  } else if (need_c) {
     MapReader eos = fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
     if (!known)
       eos.fail_missing("sound_speed", "artificial speed of sound c in m/s, > 0 (case '" + c.case_name +
@@ -337,17 +345,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     const auto dx = disc.real("spacing");
     if (n && dx)
       disc.fail("spacing", "both particles_across and spacing are given (allowed: exactly one of them)");
-    if (!n && !dx)
+    if (!n && !dx && !module.spacing_from_scene)
       disc.fail_missing("particles_across", "or discretization.spacing: give exactly one of the two");
     if (n) {
       disc.check("particles_across", *n > 0, static_cast<double>(*n), "> 0");
       // Guards the int conversion; no real run comes near.
       disc.check("particles_across", *n <= 1'000'000'000, static_cast<double>(*n), "<= 1e9");
       d.particles_across = static_cast<int>(*n);
-    } else {
+    } else if (dx) {
       disc.check("spacing", *dx > 0, *dx, "> 0 m");
       d.spacing = *dx;
-    }
+    }  // else the case derives the spacing from its geometry (after its reader, below)
     if (const auto k = disc.string("kernel")) d.kernel = *k;
     switch (c.dimension) {
       case 1: check_kernel<1>(disc, d.kernel); break;
@@ -732,6 +740,12 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
+  if (c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0)) {
+    if (!(own.size.spacing > 0.0))
+      disc.fail_missing("particles_across", "or discretization.spacing: case '" + c.case_name + "' derived no spacing");
+    c.discretization.spacing = own.size.spacing;
+    c.notices.push_back(disc.where("spacing") + ": not given: " + number_text(own.size.spacing) + " m (" + own.spacing_rule + ")");
+  }
   resolve_position_correction(c, module, disc, own.size.spacing);
   if (c.discretization.position_correction.setting == "auto")
     c.notices.push_back(disc.where("position_correction") + ": auto: " + c.discretization.position_correction.chosen +

@@ -1,6 +1,9 @@
 // The hydrostatic tank case module: its geometry keys, checks and scene size.
 #include <cmath>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "sphmol/cases/case_keys.hpp"
 #include "sphmol/cases/case_module.hpp"
@@ -33,6 +36,40 @@ SceneSize tank_3d_size(CaseReaders& r, MapReader& geo, const Config& c, const st
   return size;
 }
 
+// The resolution when neither particles_across nor spacing is given: the column's error sits in its
+// top row (half a kernel), whose share of the fitted gradient is about -2.5 / N^2 for N rows in the
+// depth; at N = 36 (-0.19 %) the column's compression at the default c0 (+0.125 %, below) leaves the
+// gradient within 0.1 % of rho0 g and p_rms about 0.002 of rho0 g H, in any tank shape
+// (docs/verification.md). N is the smallest count from 36 on (up to 72) for which the width (and
+// breadth) are whole numbers of H / N; 0 if there is none.
+constexpr int kDefaultRows = 36;
+
+int default_rows(const std::vector<double>& box) {
+  const double depth = box.back();
+  for (int n = kDefaultRows; n <= 2 * kDefaultRows; ++n) {
+    const double dx = depth / n;
+    bool whole = true;
+    for (std::size_t k = 0; k + 1 < box.size(); ++k) {
+      const double m = std::round(box[k] / dx);
+      // Tighter than the scene's own check (1e-6), which recomputes the spacing from the width.
+      whole = whole && m >= 1 && std::abs(m * dx - box[k]) <= 1e-9 * box[k];
+    }
+    if (whole) return n;
+  }
+  return 0;
+}
+
+// The sound speed when it is not given: c0 = 20 sqrt(g H). The weakly compressible column is denser
+// than rho0 by g H / (2 c0^2) on average and its pressure gradient steeper than rho0 g by that much:
+// 0.125 % at 20 sqrt(g H), 0.5 % at the usual 10 sqrt(g H) (Monaghan 1994's Mach-0.1 rule with the
+// long-wave speed); a gradient within 0.2 % needs c0 >= 16 sqrt(g H).
+std::pair<double, std::string> tank_sound_speed(const Config& c) {
+  const double g = -c.fluid.body_force.back();
+  const double depth = c.settings<HydrostaticSettings>().box.back();
+  return {20.0 * std::sqrt(g * depth),
+          "20 sqrt(g H) with g = " + number_text(g) + " m/s^2 and the depth H = " + number_text(depth) + " m"};
+}
+
 CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
   auto s = std::make_shared<HydrostaticSettings>();
   MapReader geo = r.top.section("geometry", {"box"});
@@ -41,11 +78,29 @@ CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
                                                     : "[width, depth] of the water column in m");
   case_keys::require_gravity(r, c);
   const double width = s->box[0], depth = s->box.back();
+  // Without a resolution key: N rows in the depth (default_rows); the size checks below then read it.
+  Config derived;
+  std::string rule;
+  const bool derive = c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0);
+  if (derive) {
+    const int rows = default_rows(s->box);
+    if (rows == 0)
+      r.discretization.fail_missing(
+          "particles_across", "or discretization.spacing: no number of rows in the depth " + number_text(depth) + " m from " +
+                                  std::to_string(kDefaultRows) + " to " + std::to_string(2 * kDefaultRows) +
+                                  " makes the other sides of geometry.box whole numbers of the spacing");
+    derived = c;
+    derived.discretization.spacing = depth / rows;
+    rule = std::to_string(rows) + " rows in the depth of the column, the tank's default resolution";
+  }
+  const Config& cs = derive ? derived : c;
   // The side walls reach 1.2 x depth, a whole number of spacings (HydrostaticCase::build).
-  const double dx0 = case_keys::spacing(c, width);
+  const double dx0 = case_keys::spacing(cs, width);
   const double tank = std::round(1.2 * depth / dx0) * dx0;
-  if (c.dimension == 3) return {s, tank_3d_size(r, geo, c, s->box, tank)};
-  return {s, case_keys::box_scene_size(r, geo, c, width, depth, tank, true, false)};
+  return {s,
+          c.dimension == 3 ? tank_3d_size(r, geo, cs, s->box, tank)
+                           : case_keys::box_scene_size(r, geo, cs, width, depth, tank, true, false),
+          rule};
 }
 
 }  // namespace
@@ -59,6 +114,8 @@ CaseModule hydrostatic_module() {
   m.position_noise = true;
   m.lattice_mass = true;
   m.free_surface = true;
+  m.spacing_from_scene = true;
+  m.default_sound_speed = tank_sound_speed;
   m.read = read_hydrostatic;
   m.make2 = [] { return std::make_unique<HydrostaticCase<2>>(); };
   m.make3 = [] { return std::make_unique<HydrostaticCase<3>>(); };
