@@ -36,6 +36,8 @@ class ExactRiemannSolver {
   double rho_star_left() const { return rho_star_l_; }
   double rho_star_right() const { return rho_star_r_; }
   double gamma() const { return gamma_; }
+  const EulerState& left() const { return left_; }
+  const EulerState& right() const { return right_; }
 
   // Solution at similarity coordinate xi = (x - x0)/t (Toro §4.5).
   RiemannSample sample(double xi) const;

@@ -35,7 +35,7 @@ double crossing(const ShockTubeBin& a, const ShockTubeBin& b, double fa, double 
 }  // namespace
 
 ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRiemannSolver& exact) {
-  ShockTubeWaves w{nan, nan, nan, nan};
+  ShockTubeWaves w{nan, nan, nan, nan, nan};
   const double us = exact.u_star();
   const std::size_t n = bins.size();
   auto leftmost_rise = [&](double level) {
@@ -47,7 +47,13 @@ ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRi
   w.rarefaction_tail = leftmost_rise(0.95 * us);
   for (std::size_t k = n - 1; k >= 1; --k)
     if (bins[k - 1].u >= 0.5 * us && bins[k].u < 0.5 * us) {
-      w.shock = crossing(bins[k - 1], bins[k], bins[k - 1].u, bins[k].u, 0.5 * us);
+      w.shock_velocity = crossing(bins[k - 1], bins[k], bins[k - 1].u, bins[k].u, 0.5 * us);
+      break;
+    }
+  const double jump = 0.5 * (exact.rho_star_right() + exact.right().rho);
+  for (std::size_t k = n - 1; k >= 1; --k)
+    if (bins[k - 1].rho >= jump && bins[k].rho < jump) {
+      w.shock = crossing(bins[k - 1], bins[k], bins[k - 1].rho, bins[k].rho, jump);
       break;
     }
   if (std::isnan(w.shock) || std::isnan(w.rarefaction_tail)) return w;
@@ -226,6 +232,8 @@ nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const
           {"L1_mid_e", r.value(l1_mid + 3) * inv_mid},
           {"waves",
            {{"shock", wave(w.shock, ex.right_head, wx.shock, local_spacing(1, exact_->rho_star_right()))},
+            {"shock_velocity",
+             wave(w.shock_velocity, ex.right_head, wx.shock_velocity, local_spacing(1, exact_->rho_star_right()))},
             {"contact", wave(w.contact, ex.contact, wx.contact, local_spacing(0, exact_->rho_star_left()))},
             {"rarefaction_head", wave(w.rarefaction_head, ex.left_head, wx.rarefaction_head, local_spacing(0, rho_l))},
             {"rarefaction_tail",
@@ -251,7 +259,9 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
              "with walls the rows next to them are included)"},
       {"L1_mid", "the same mean over the mid-line particles only, |y - W/2| < dx (1D: all particles)"},
       {"waves", "threshold crossings on the x-binned profile: rarefaction head/tail where u passes 5%/95% of u*, "
-                "shock where u falls through u*/2, contact where rho passes (rho*_L + rho*_R)/2. exact: the wave's exact "
+                "shock where rho passes (rho*_R + rho_R)/2 (the middle of the density jump), shock_velocity where u falls "
+                "through u*/2 (across a smeared shock u leads rho, so this reads ahead of the jump's middle by a "
+                "fraction of the shock's width), contact where rho passes (rho*_L + rho*_R)/2. exact: the wave's exact "
                 "position (fan head and tail: its edges); exact_crossing: the same threshold crossing on the exact profile; "
                 "offset_spacings = (sph - exact_crossing) / discretization.spacing (the denser side's spacing); "
                 "offset_local_spacings = (sph - exact_crossing) / local_spacing, the x spacing m / (rho dy) (1D: m / rho) "

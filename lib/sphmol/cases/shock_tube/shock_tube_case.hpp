@@ -21,14 +21,21 @@ struct ShockTubeBin {
 // between bin centres):
 //   rarefaction_head: leftmost x where u rises through 5 % of u*;
 //   rarefaction_tail: leftmost x where u rises through 95 % of u*;
-//   shock:            rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R ahead);
+//   shock:            rightmost x where rho rises (leftwards) through (rho*_R + rho_R)/2, the middle of
+//                     the density jump (like the contact);
+//   shock_velocity:   rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R = 0
+//                     ahead in the shipped tubes), reported beside it. A shock smeared over a width w
+//                     reads ahead by a fraction of w here: across a steady shock of speed S the mass flux
+//                     gives u = S (1 - rho_R / rho) (Rankine-Hugoniot), so u passes u*/2 where rho has
+//                     risen only (rho - rho_R) / (rho*_R - rho_R) = 0.32 of the jump in Sod's tube, not
+//                     half of it. The density crossing has no such bias;
 //   contact:          between tail and shock, the rightmost x where rho rises (leftwards) through
 //                     (rho*_L + rho*_R)/2.
 // The summary reports each with its offset from the exact profile's crossing, in spacings of the
 // denser side and in local particle spacings (the x spacing of the gas at the wave, see local_spacing).
 // NaN when a crossing is not found.
 struct ShockTubeWaves {
-  double shock, contact, rarefaction_head, rarefaction_tail;
+  double shock, contact, rarefaction_head, rarefaction_tail, shock_velocity;
 };
 ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRiemannSolver& exact);
 
