@@ -92,7 +92,7 @@ TEST_CASE("output folder: plots read only this run's files", "[integration][outp
   CHECK(script.find("profile_t0.7") == std::string::npos);
 }
 
-TEST_CASE("output folder: the resolved config records the real folder; a restart continues there",
+TEST_CASE("output folder: the resolved config records the real folder, a restart continues there",
           "[integration][output-folder][restart]") {
   const fs::path dir = scratch("restart-home");
   const fs::path out = dir / "run";

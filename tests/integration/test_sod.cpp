@@ -117,7 +117,7 @@ TEST_CASE("Sod 2D: L1 errors within 1.5x of the 1D tube's at the same spacing, e
 // offsets in local spacings (shock, contact, fan head, tail; 2026-12-07): smoothed 0.30, 0.09, 0.07,
 // 0.63 (L1 rho 0.0044), sharp 0.47, 0.36, 0.29, 0.51 (0.0060). With the kernel gradient the smoothed
 // start put the shock's velocity crossing 1.44 ahead and the sharp one 1.92 (two light rows across).
-TEST_CASE("Sod 2D at twice the spacing: every wave within one local spacing; a sharp start runs with the "
+TEST_CASE("Sod 2D at twice the spacing: every wave within one local spacing, a sharp start runs with the "
           "volume-weighted continuity, not with the mass-weighted one",
           "[shock_tube][sod]") {
   const auto coarse = run("sod.yaml", "2d-coarse", {"discretization.spacing=5e-3"});

@@ -179,7 +179,7 @@ TEST_CASE("ghost generator: free slip mirrors only the normal component (Niedoba
   }
 }
 
-TEST_CASE("ghost generator: images take the source's energy and h; the band follows the largest h", "[ghost]") {
+TEST_CASE("ghost generator: images take the source's energy and h, the band follows the largest h", "[ghost]") {
   auto gen = make_generator(false);
   Scene s;
   const std::size_t base = s.w.n;

@@ -87,7 +87,7 @@ TEST_CASE("case modules: each record builds the case in exactly its declared dim
   CHECK(find_case_module("no_such_case") == nullptr);
 }
 
-TEST_CASE("case modules: a case's sections are its own; another case's keys are config errors", "[cases][config]") {
+TEST_CASE("case modules: a case's sections are its own, another case's keys are config errors", "[cases][config]") {
   const std::string base = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
   // The Taylor-Green case has no water column and no wall speed (they used to be accepted and ignored).
   try {

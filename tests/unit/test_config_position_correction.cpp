@@ -167,7 +167,7 @@ TEST_CASE("position_correction: contradictions are errors at the key", "[config]
              Contains("discretization.position_correction") && Contains("auto, transport_velocity, particle_shifting, none"));
 }
 
-TEST_CASE("position_correction: auto needs a velocity scale; the chosen scheme still needs its flow",
+TEST_CASE("position_correction: auto needs a velocity scale, the chosen scheme still needs its flow",
           "[config][position_correction]") {
   // The cavity's velocity scale is not known from its config alone (it gives its sound speed).
   const std::string cavity = shipped("cavity.yaml");

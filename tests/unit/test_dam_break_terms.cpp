@@ -238,7 +238,7 @@ TEST_CASE("Tait EOS sets the local sound speed c0 (rho/rho0)^((gamma-1)/2)", "[p
   }
 }
 
-TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow; other exponents use pow", "[physics][dam_break]") {
+TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow, other exponents use pow", "[physics][dam_break]") {
   for (unsigned n : {1u, 2u, 3u, 7u, 8u, 15u, 64u})
     for (double x : {0.5, 0.97, 1.0, 1.0123, 1.3, 2.0}) {
       INFO("x = " << x << ", n = " << n);
@@ -261,7 +261,7 @@ TEST_CASE("Tait EOS: a whole exponent by squaring agrees with pow; other exponen
   }
 }
 
-TEST_CASE("dam_break: wall densities are in the state and evolve; the scene has the expected particle counts", "[dam_break]") {
+TEST_CASE("dam_break: wall densities are in the state and evolve, the scene has the expected particle counts", "[dam_break]") {
   const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
                                {"discretization.spacing=0.05"});
   auto sys = make_case<2>(c)->build(c);

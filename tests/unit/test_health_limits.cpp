@@ -116,7 +116,7 @@ TEST_CASE("health check: kinetic energy gain, speed and density bounds end the r
   CHECK(rho.rfind("density ratio rho/rho0 = ", 0) == 0);
 }
 
-TEST_CASE("health limits: free surfaces bound compression only; ideal gases have no speed or density bound", "[health]") {
+TEST_CASE("health limits: free surfaces bound compression only, ideal gases have no speed or density bound", "[health]") {
   {
     const Config c = shipped("hydrostatic", {"discretization.particles_across=10"});
     auto cs = make_case<2>(c);

@@ -131,7 +131,7 @@ TEST_CASE("IMEX split: the Jacobi diagonal is L applied to unit vectors", "[imex
   }
 }
 
-TEST_CASE("IMEX split: with moment_symmetric the operator keeps m_i L_ij = m_j L_ji; with moment it does not", "[imex]") {
+TEST_CASE("IMEX split: with moment_symmetric the operator keeps m_i L_ij = m_j L_ji, with moment it does not", "[imex]") {
   // m_i L_ij is the momentum particle i receives per unit velocity of j: symmetric for equal and
   // opposite pair forces, and the symmetry conjugate gradients rely on (equal masses: L itself).
   const std::string correction = GENERATE(std::string("moment_symmetric"), std::string("moment"));

@@ -417,7 +417,7 @@ class PlaneOnly final : public Term<D> {
 };
 }  // namespace
 
-TEST_CASE("terms declare their dimensions; a term outside them is rejected with its key", "[rhs][3d]") {
+TEST_CASE("terms declare their dimensions, a term outside them is rejected with its key", "[rhs][3d]") {
   CHECK(Dimensions::all().text() == "1, 2 or 3");
   CHECK(Dimensions::only(2).text() == "2");
   CHECK((Dimensions::only(2) | Dimensions::only(3)).text() == "2 or 3");

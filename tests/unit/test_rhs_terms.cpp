@@ -189,7 +189,7 @@ void random_flow(Fixture& f, unsigned seed = 3, std::size_t moving = std::numeri
 }
 }  // namespace
 
-TEST_CASE("Morris viscosity with the pair-symmetric moment conserves momentum on a disordered set; the row moment does not", "[rhs]") {
+TEST_CASE("Morris viscosity with the pair-symmetric moment conserves momentum on a disordered set, the row moment does not", "[rhs]") {
   Fixture f(14, true, 0, 0.2);
   random_flow(f);
   auto moment = std::make_shared<MorrisMomentField>();

@@ -117,7 +117,7 @@ TEST_CASE("the step hook can end an ARKODE run with BlowUp", "[time]") {
   }
 }
 
-TEST_CASE("config: the new integrators are accepted; cvode_adams rejects a fixed step", "[config]") {
+TEST_CASE("config: the new integrators are accepted, cvode_adams rejects a fixed step", "[config]") {
   using config_test::base;
   using config_test::error_of;
   CHECK(load_config_string(base, {"time.integrator=leapfrog_kdk"}).time.integrator == "leapfrog_kdk");

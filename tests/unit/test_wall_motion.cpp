@@ -303,7 +303,7 @@ TEST_CASE("wall motion: invalid motions and attachments are errors", "[wall_moti
   CHECK_THROWS_WITH(z.validated(), Catch::Contains("axis"));
 }
 
-TEST_CASE("wall motion: the solver places walls by the rule at each evaluation; turned normals reach the wall model",
+TEST_CASE("wall motion: the solver places walls by the rule at each evaluation, turned normals reach the wall model",
           "[wall_motion][rhs]") {
   const double dx = 1e-4, R = 6e-4, omega = 0.05;
   for (const bool reorder : {false, true}) {
