@@ -1,6 +1,7 @@
 // The hydrostatic tank case module: its geometry keys, checks and scene size.
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,10 +80,9 @@ CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
   case_keys::require_gravity(r, c);
   const double width = s->box[0], depth = s->box.back();
   // Without a resolution key: N rows in the depth (default_rows); the size checks below then read it.
-  Config derived;
+  std::optional<Config> derived;
   std::string rule;
-  const bool derive = c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0);
-  if (derive) {
+  if (c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0)) {
     const int rows = default_rows(s->box);
     if (rows == 0)
       r.discretization.fail_missing(
@@ -90,10 +90,10 @@ CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
                                   std::to_string(kDefaultRows) + " to " + std::to_string(2 * kDefaultRows) +
                                   " makes the other sides of geometry.box whole numbers of the spacing");
     derived = c;
-    derived.discretization.spacing = depth / rows;
+    derived->discretization.spacing = depth / rows;
     rule = std::to_string(rows) + " rows in the depth of the column, the tank's default resolution";
   }
-  const Config& cs = derive ? derived : c;
+  const Config& cs = derived ? *derived : c;
   // The side walls reach 1.2 x depth, a whole number of spacings (HydrostaticCase::build).
   const double dx0 = case_keys::spacing(cs, width);
   const double tank = std::round(1.2 * depth / dx0) * dx0;

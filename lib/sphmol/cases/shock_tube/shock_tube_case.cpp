@@ -45,27 +45,22 @@ ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRi
   };
   w.rarefaction_head = leftmost_rise(0.05 * us);
   w.rarefaction_tail = leftmost_rise(0.95 * us);
-  for (std::size_t k = n - 1; k >= 1; --k)
-    if (bins[k - 1].u >= 0.5 * us && bins[k].u < 0.5 * us) {
-      w.shock_velocity = crossing(bins[k - 1], bins[k], bins[k - 1].u, bins[k].u, 0.5 * us);
-      break;
+  // The rightmost x within [lo, hi] where the field f falls (rightwards) through `level`.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  auto rightmost_fall = [&](double ShockTubeBin::*f, double level, double lo, double hi) {
+    for (std::size_t k = n; k-- > 1;) {
+      if (bins[k].x > hi) continue;
+      if (bins[k - 1].x < lo) break;
+      if (bins[k - 1].*f >= level && bins[k].*f < level)
+        return crossing(bins[k - 1], bins[k], bins[k - 1].*f, bins[k].*f, level);
     }
-  const double jump = 0.5 * (exact.rho_star_right() + exact.right().rho);
-  for (std::size_t k = n - 1; k >= 1; --k)
-    if (bins[k - 1].rho >= jump && bins[k].rho < jump) {
-      w.shock = crossing(bins[k - 1], bins[k], bins[k - 1].rho, bins[k].rho, jump);
-      break;
-    }
+    return nan;
+  };
+  w.shock_velocity = rightmost_fall(&ShockTubeBin::u, 0.5 * us, -inf, inf);
+  w.shock = rightmost_fall(&ShockTubeBin::rho, 0.5 * (exact.rho_star_right() + exact.right().rho), -inf, inf);
   if (std::isnan(w.shock) || std::isnan(w.rarefaction_tail)) return w;
-  const double level = 0.5 * (exact.rho_star_left() + exact.rho_star_right());
-  for (std::size_t k = n - 1; k >= 1; --k) {
-    if (bins[k].x > w.shock) continue;
-    if (bins[k - 1].x < w.rarefaction_tail) break;
-    if (bins[k - 1].rho >= level && bins[k].rho < level) {
-      w.contact = crossing(bins[k - 1], bins[k], bins[k - 1].rho, bins[k].rho, level);
-      break;
-    }
-  }
+  w.contact = rightmost_fall(&ShockTubeBin::rho, 0.5 * (exact.rho_star_left() + exact.rho_star_right()), w.rarefaction_tail,
+                             w.shock);
   return w;
 }
 
