@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/core/least_squares.hpp"
 #include "sphmol/studies/converge.hpp"
 
 using namespace sphmol;
@@ -146,15 +147,7 @@ TEST_CASE("1-D shock tube as shipped: Verner 8(5)6 at order 6 above 1e-8 with th
     }
   }
   REQUIRE(log_dt.size() >= 5);
-  const double n = static_cast<double>(log_dt.size());
-  double mx = 0.0, my = 0.0;
-  for (std::size_t k = 0; k < log_dt.size(); ++k) mx += log_dt[k] / n, my += log_err[k] / n;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = 0; k < log_dt.size(); ++k) {
-    sxy += (log_dt[k] - mx) * (log_err[k] - my);
-    sxx += (log_dt[k] - mx) * (log_dt[k] - mx);
-  }
-  const double order = sxy / sxx;
+  const double order = least_squares_slope(log_dt, log_err);
   INFO("least-squares order above 1e-8 over " << log_dt.size() << " steps: " << order);
   CHECK(order >= 5.7);
   CHECK(order <= 7.0);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/core/least_squares.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/run/output_folder.hpp"
 #include "sphmol/run/error_unit.hpp"
@@ -36,14 +37,9 @@ std::vector<double> pairwise_orders(const std::vector<double>& e) {
 
 double least_squares_order(const std::vector<double>& e) {
   // log e = a + p log(step), step_k = step_0 / 2^k  ->  slope against x_k = -k log 2.
-  const std::size_t n = e.size();
-  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double x = -static_cast<double>(k) * std::log(2.0), y = std::log(e[k]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  std::vector<double> x(e.size()), y(e.size());
+  for (std::size_t k = 0; k < e.size(); ++k) x[k] = -static_cast<double>(k) * std::log(2.0), y[k] = std::log(e[k]);
+  return least_squares_slope(x, y);
 }
 
 nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {

@@ -5,7 +5,9 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
+#include "sphmol/core/least_squares.hpp"
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/rhs/assemble.hpp"
@@ -110,16 +112,9 @@ nlohmann::json BeltramiCase::final_errors(const nlohmann::json& errors) const {
   for (const double a : mode_) positive = positive && a > 0.0;
   if (positive) {
     // Least-squares slope of ln a(t) over the output times.
-    double st = 0, sy = 0, stt = 0, sty = 0;
-    const double n = static_cast<double>(t_.size());
-    for (std::size_t k = 0; k < t_.size(); ++k) {
-      const double ly = std::log(mode_[k]);
-      st += t_[k];
-      sy += ly;
-      stt += t_[k] * t_[k];
-      sty += t_[k] * ly;
-    }
-    const double rate = -(n * sty - st * sy) / (n * stt - st * st);
+    std::vector<double> ln_a(mode_.size());
+    for (std::size_t k = 0; k < mode_.size(); ++k) ln_a[k] = std::log(mode_[k]);
+    const double rate = -least_squares_slope(t_, ln_a);
     f["decay_rate"] = rate;
     f["decay_rate_rel_error"] = std::abs(rate - exact) / exact;
   } else {

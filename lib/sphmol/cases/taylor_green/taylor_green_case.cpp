@@ -5,7 +5,9 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
+#include "sphmol/core/least_squares.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/io/atomic_file.hpp"
@@ -108,16 +110,9 @@ nlohmann::json TaylorGreenCase::final_errors(const nlohmann::json& errors) const
   f["decay_fit_until"] = window.empty() ? nlohmann::json(nullptr) : nlohmann::json(t_[window.back()]);
   // Least-squares slope of ln(values) over the window.
   const auto log_slope = [&](const std::vector<double>& values) {
-    double st = 0, sy = 0, stt = 0, sty = 0;
-    const double n = static_cast<double>(window.size());
-    for (const std::size_t k : window) {
-      const double ly = std::log(values[k]);
-      st += t_[k];
-      sy += ly;
-      stt += t_[k] * t_[k];
-      sty += t_[k] * ly;
-    }
-    return (n * sty - st * sy) / (n * stt - st * st);
+    std::vector<double> t, ly;
+    for (const std::size_t k : window) t.push_back(t_[k]), ly.push_back(std::log(values[k]));
+    return least_squares_slope(t, ly);
   };
   bool positive = true;
   for (const std::size_t k : window) positive = positive && mode_[k] > 0.0 && vmax_[k] > 0.0;
