@@ -111,6 +111,10 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
        "case.yaml:14: discretization.spacing: both particles_across and spacing are given (allowed: exactly one of them)"},
       {"particles_across: 20", "particles_across: 20\n  smoothing_ratio: 0",
        "case.yaml:14: discretization.smoothing_ratio: 0 is out of range (allowed: > 0 (h / dx))"},
+      // The default cubic spline reaches 2 h: h = 0.5 dx touches the nearest particle with W = 0.
+      {"particles_across: 20", "particles_across: 20\n  smoothing_ratio: 0.5",
+       "case.yaml:14: discretization.smoothing_ratio: 0.5 gives cubic_spline a support of 1 spacings, which does not reach the "
+       "nearest particle one spacing away; it needs h / dx > 0.5"},
       {"particles_across: 20", "particles_across: 20\n  xsph: 1.5",
        "case.yaml:14: discretization.xsph: 1.5 is out of range (allowed: [0, 1]; 0 = off)"},
       {"particles_across: 20", "particles_across: 20\n  xsph: -0.1",

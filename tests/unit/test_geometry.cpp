@@ -56,6 +56,41 @@ TEST_CASE("geometry: sphere, cylinder and their outward normals", "[geometry]") 
   CHECK(nc[1] == Approx(1.0));
 }
 
+TEST_CASE("geometry: a cylinder's box is tight along and across its axis", "[geometry]") {
+  // Standing on z = 0: its box must not reach below the floor (a fluid body standing there was
+  // refused as outside the domain).
+  const auto b = CylinderShape({0.2, 0.1, 0.0}, {0.2, 0.1, 0.15}, 0.08).bounds();
+  CHECK(b.lo[2] == 0.0);
+  CHECK(b.hi[2] == 0.15);
+  CHECK(b.lo[0] == Approx(0.12));
+  CHECK(b.hi[1] == Approx(0.18));
+  // Tilted: each cap reaches r sqrt(1 - a_d^2) along axis d; every surface point lies in the box, and
+  // the box touches the surface (to the sampling).
+  const Vec<3> a{0.0, 0.0, 0.0}, e{1.0, 2.0, 2.0};
+  const double r = 0.5;
+  const CylinderShape c(a, e, r);
+  const auto t = c.bounds();
+  const Vec<3> ax{1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0};
+  const Vec<3> u{2.0 / 3.0, -2.0 / 3.0, 1.0 / 3.0}, w{2.0 / 3.0, 1.0 / 3.0, -2.0 / 3.0};  // unit, orthogonal to ax
+  Vec<3> lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+  for (const Vec<3>& end : {a, e})
+    for (int k = 0; k < 3600; ++k) {
+      const double phi = 2.0 * M_PI * k / 3600.0;
+      for (int d = 0; d < 3; ++d) {
+        const double x = end[d] + r * (std::cos(phi) * u[d] + std::sin(phi) * w[d]);
+        lo[d] = std::min(lo[d], x);
+        hi[d] = std::max(hi[d], x);
+      }
+    }
+  for (int d = 0; d < 3; ++d) {
+    CHECK(t.lo[d] <= lo[d] + 1e-12);
+    CHECK(t.hi[d] >= hi[d] - 1e-12);
+    CHECK(t.lo[d] == Approx(lo[d]).margin(1e-6));
+    CHECK(t.hi[d] == Approx(hi[d]).margin(1e-6));
+    CHECK(t.hi[d] - t.lo[d] == Approx(e[d] + 2.0 * r * std::sqrt(1.0 - ax[d] * ax[d])));
+  }
+}
+
 TEST_CASE("geometry: union, intersection and difference keep the exact inside test", "[geometry]") {
   const ShapePtr<2> a = std::make_shared<BoxShape<2>>(Vec<2>{0, 0}, Vec<2>{2, 2});
   const ShapePtr<2> hole = std::make_shared<SphereShape<2>>(Vec<2>{1, 1}, 0.5);
@@ -119,6 +154,24 @@ TEST_CASE("geometry: polygon (CGAL) inside test and distance, in either orientat
   Lattice<2> lat;
   lat.spacing = 0.1;
   CHECK(fill<2>(PolygonShape(l_shape), lat).size() == 300u);  // area 3 / 0.01, no point on an edge
+  // Lattice points on an edge in decimal: the exact side test decides, in either orientation. The
+  // rounded distance of such a point can be 0 in one orientation only, which read as outside there.
+  const std::vector<Vec<2>> tri{{0.1, 0.05}, {0.2, 0.15}, {0.3, 0.05}};
+  const std::vector<Vec<2>> tri_cw{{0.3, 0.05}, {0.2, 0.15}, {0.1, 0.05}};
+  const PolygonShape ccw(tri), cw(tri_cw);
+  Lattice<2> fine;
+  fine.spacing = 0.01;
+  Bounds<2> region;
+  region.lo = {0.0, 0.0};
+  region.hi = {0.4, 0.2};
+  std::size_t inside = 0;
+  fine.for_each_in(region, [&](const Vec<2>& q) {
+    INFO(q[0] << " " << q[1]);
+    CHECK(ccw.contains(q) == cw.contains(q));
+    CHECK(std::signbit(ccw.signed_distance(q)) == std::signbit(cw.signed_distance(q)));
+    inside += ccw.contains(q);
+  });
+  CHECK(inside > 0u);
   CHECK_THROWS_AS(PolygonShape({{0, 0}, {1, 1}, {1, 0}, {0, 1}}), std::invalid_argument);  // a bow tie
   CHECK_THROWS_AS(PolygonShape({{0, 0}, {1, 1}}), std::invalid_argument);
 }
@@ -147,6 +200,30 @@ TEST_CASE("geometry: triangle mesh (CGAL) read from OFF agrees with the box", "[
   lat.spacing = 0.1;
   CHECK(fill<3>(mesh, lat).size() == 1000u);
   CHECK_THROWS_WITH(TriangleMeshShape(write_cube_off("open.off", true)), Catch::Contains("not closed"));
+  // Two closed cubes that overlap in one file: the ray-crossing inside test would leave the overlap
+  // outside; a surface that intersects itself is refused.
+  {
+    std::ostringstream two;
+    two << "OFF\n16 12 0\n";
+    for (const double o : {0.0, 0.5})
+      two << o << " " << o << " " << o << "\n" << o + 1 << " " << o << " " << o << "\n" << o + 1 << " " << o + 1 << " " << o << "\n"
+          << o << " " << o + 1 << " " << o << "\n" << o << " " << o << " " << o + 1 << "\n" << o + 1 << " " << o << " " << o + 1 << "\n"
+          << o + 1 << " " << o + 1 << " " << o + 1 << "\n" << o << " " << o + 1 << " " << o + 1 << "\n";
+    for (const int k : {0, 8})
+      two << "4 " << k << " " << k + 3 << " " << k + 2 << " " << k + 1 << "\n4 " << k + 4 << " " << k + 5 << " " << k + 6 << " " << k + 7
+          << "\n4 " << k << " " << k + 1 << " " << k + 5 << " " << k + 4 << "\n4 " << k + 2 << " " << k + 3 << " " << k + 7 << " " << k + 6
+          << "\n4 " << k + 1 << " " << k + 2 << " " << k + 6 << " " << k + 5 << "\n4 " << k << " " << k + 4 << " " << k + 7 << " " << k + 3
+          << "\n";
+    CHECK_THROWS_WITH(TriangleMeshShape(two.str(), "off", "two.off"), Catch::Contains("intersects itself"));
+    // Apart, the same two cubes are one closed surface with two parts, and both are inside.
+    std::string apart = two.str();
+    for (std::size_t at = 0; (at = apart.find("0.5", at)) != std::string::npos;) apart.replace(at, 3, "2.5"), at += 3;
+    for (std::size_t at = 0; (at = apart.find("1.5", at)) != std::string::npos;) apart.replace(at, 3, "3.5"), at += 3;
+    const TriangleMeshShape parts(apart, "off", "apart.off");
+    CHECK(parts.contains({0.5, 0.5, 0.5}));
+    CHECK(parts.contains({3.0, 3.0, 3.0}));
+    CHECK_FALSE(parts.contains({2.0, 2.0, 2.0}));
+  }
   CHECK_THROWS_WITH(TriangleMeshShape("/nonexistent/x.stl"), Catch::Contains("no such file"));
   std::filesystem::remove(off);
 }

@@ -229,6 +229,66 @@ TEST_CASE("scene builder: a closed OFF mesh cube makes the same wall body as the
   std::filesystem::remove(path);
 }
 
+TEST_CASE("scene builder: a mesh read in single precision makes the same particles as the exact one", "[scene][cgal]") {
+  // Binary STL and most PLY files hold float coordinates: a face meant at 0.06 is at 0.0599999986,
+  // which put the lattice points half a spacing from it inside the removal band (a lost fluid layer).
+  const auto write = [](const std::string& name, bool single) {
+    const auto path = std::filesystem::temp_directory_path() / ("sphmol-scene-float-" + std::to_string(::getpid()) + name);
+    std::ofstream f(path);
+    f.precision(17);
+    const double lo[3] = {0.14, 0.06, 0.04}, hi[3] = {0.26, 0.14, 0.12};
+    f << "OFF\n8 6 0\n";
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) {
+        const double x = (k >> d & 1) ? hi[d] : lo[d];
+        f << (single ? static_cast<double>(static_cast<float>(x)) : x) << (d == 2 ? "\n" : " ");
+      }
+    f << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 1 3 7 5\n4 0 4 6 2\n";
+    return path;
+  };
+  const auto exact = write("exact.off", false), single = write("single.off", true);
+  Config c = config(3, 0.02);
+  const std::string head = "scene:\n  domain: {lo: [0, 0, 0], hi: [0.4, 0.2, 0.3]}\n  fluid:\n    - shape: {type: box, lo: [0, 0, 0], "
+                           "hi: [0.4, 0.2, 0.2]}\n  walls:\n    - shape: ";
+  const auto a = build_scene<3>(read(head + "{type: mesh, file: " + exact.string() + "}\n", 3), c);
+  const auto b = build_scene<3>(read(head + "{type: mesh, file: " + single.string() + "}\n", 3), c);
+  const auto box = build_scene<3>(read(head + "{type: box, lo: [0.14, 0.06, 0.04], hi: [0.26, 0.14, 0.12]}\n", 3), c);
+  CHECK(a.particles.n_fluid == box.particles.n_fluid);
+  CHECK(b.particles.n_fluid == box.particles.n_fluid);
+  CHECK(b.particles.size() == box.particles.size());
+  // A fluid body that fills the domain exactly in single precision is inside it.
+  const std::string fill = "scene:\n  domain: {lo: [0, 0, 0], hi: [0.14, 0.06, 0.04]}\n  fluid:\n    - shape: {type: mesh, file: ";
+  std::filesystem::path whole = write("whole.off", true);
+  {
+    std::ofstream f(whole);
+    f.precision(17);
+    f << "OFF\n8 6 0\n";
+    const double hi[3] = {0.14, 0.06, 0.04};
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) f << ((k >> d & 1) ? static_cast<double>(static_cast<float>(hi[d])) : 0.0) << (d == 2 ? "\n" : " ");
+    f << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 1 3 7 5\n4 0 4 6 2\n";
+  }
+  CHECK(build_scene<3>(read(fill + whole.string() + "}\n", 3), c).particles.n_fluid == 7u * 3u * 2u);
+  for (const auto& p : {exact, single, whole}) std::filesystem::remove(p);
+}
+
+TEST_CASE("scene builder: a fluid body is outside the domain only where its lattice points are", "[scene]") {
+  Config c = config(3, 0.02);
+  // A cylinder standing on the floor (its box was padded by the radius along the axis too).
+  const auto s = build_scene<3>(read("scene:\n  domain: {lo: [0, 0, 0], hi: [0.4, 0.2, 0.3]}\n  fluid:\n    - shape: {type: cylinder, "
+                                     "start: [0.2, 0.1, 0], end: [0.2, 0.1, 0.16], radius: 0.08}\n",
+                                     3),
+                                c);
+  CHECK(s.particles.n_fluid > 0u);
+  // A difference whose first part reaches out, with the part outside taken away: inside the domain.
+  Config c2 = config(2, 0.1);
+  const std::string d = "scene:\n  domain: {lo: [0, 0], hi: [1, 1]}\n  fluid:\n    - shape: ";
+  CHECK(error_of(d + "{type: difference, shapes: [{type: box, lo: [0, 0], hi: [1.5, 0.5]}, {type: box, lo: [1, -1], hi: [2, 2]}]}\n",
+                 c2) == "<no error>");
+  CHECK(error_of(d + "{type: difference, shapes: [{type: box, lo: [0, 0], hi: [1.5, 0.5]}, {type: box, lo: [1.2, -1], hi: [2, 2]}]}\n",
+                 c2) == "scene.yaml:4: scene.fluid[0].shape: the fluid body extends outside the domain along x (0 to 1.5 m; domain 0 to 1 m)");
+}
+
 TEST_CASE("scene builder: hydrostatic initial pressure is rho0 g depth below a surface dx/2 above the top row", "[scene]") {
   const double dx = 0.05, g = 9.81;
   for (const std::string eos : {"linear_relative", "tait"}) {

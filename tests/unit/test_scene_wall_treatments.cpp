@@ -382,6 +382,16 @@ TEST_CASE("scene treatments and densities: what makes no sense is an error at it
     Config g = c;
     g.discretization.boundary = "ghost";
     CHECK(error_of(wall + "      treatment: ghost\n      velocity: [0.1, 0]\n      slip: free_slip\n", g) == "<no error>");
+    // A plane body is a mirror under boundary: ghost without treatment: ghost, with the same checks.
+    CHECK(error_of(wall + "      velocity: [0.1, 0]\n", g) == "<no error>");
+    CHECK(error_of(wall + "      layers: 3\n", g) ==
+          "scene.yaml:7: scene.walls[0].layers: a plane body under discretization.boundary: ghost (a mirror) has no wall "
+          "particles: remove layers");
+    CHECK_THAT(error_of(wall + "      velocity: [0, 0.1]\n", g),
+               Contains("scene.walls[0].velocity: a plane body under discretization.boundary: ghost (a mirror) stays in place, "
+                        "so its velocity must lie along the plane (normal component -0.1 m/s)"));
+    CHECK_THAT(error_of(wall + "      motion: {type: oscillation, amplitude: [0, 0.01], frequency: 1}\n", g),
+               Contains("scene.walls[0].motion: a plane body under discretization.boundary: ghost (a mirror) stays in place"));
     CHECK(error_of(wall + "      treatment: rest\n", g) ==
           "scene.yaml:7: scene.walls[0].treatment: 'rest' makes wall particles, and discretization.boundary: ghost makes every "
           "wall a mirror (wall particles would get no images); use treatment: ghost or boundary: wall_particles");

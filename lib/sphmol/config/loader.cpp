@@ -364,6 +364,18 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
     disc.check("smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
+    {
+      // A support that does not reach the nearest lattice neighbour (one spacing away) leaves every
+      // particle alone in its sums: no pressure force, the densities of isolated particles.
+      const double support = c.dimension == 1 ? kernel_info<1>(d.kernel).support
+                             : c.dimension == 2 ? kernel_info<2>(d.kernel).support
+                                                : kernel_info<3>(d.kernel).support;
+      if (!(support * d.smoothing_ratio > 1.0))
+        disc.fail("smoothing_ratio", number_text(d.smoothing_ratio) + " gives " + d.kernel + " a support of " +
+                                         number_text(support * d.smoothing_ratio) +
+                                         " spacings, which does not reach the nearest particle one spacing away; it needs h / dx > " +
+                                         number_text(1.0 / support));
+    }
     if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation", "normalised_summation", "continuity"});
     if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116", "integral_approach"});
     if (const auto v = disc.string("viscosity"))

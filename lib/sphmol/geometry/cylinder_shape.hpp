@@ -2,6 +2,7 @@
 // A finite circular cylinder in 3D: the points within `radius` of the segment from `a` to `b`,
 // between the two end planes (flat caps).
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "sphmol/geometry/shape.hpp"
@@ -30,9 +31,11 @@ class CylinderShape final : public Shape<3> {
   Bounds<3> bounds() const override {
     const Vec<3> b = a_ + length_ * axis_;
     Bounds<3> box;
+    // Tight: a cap (a disc of radius r about the axis) reaches r sqrt(1 - a_d^2) along axis d.
     for (int d = 0; d < 3; ++d) {
-      box.lo[d] = std::min(a_[d], b[d]) - r_;
-      box.hi[d] = std::max(a_[d], b[d]) + r_;
+      const double reach = r_ * std::sqrt(std::max(0.0, 1.0 - axis_[d] * axis_[d]));
+      box.lo[d] = std::min(a_[d], b[d]) - reach;
+      box.hi[d] = std::max(a_[d], b[d]) + reach;
     }
     return box;
   }

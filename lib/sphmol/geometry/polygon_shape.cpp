@@ -39,9 +39,9 @@ double PolygonShape::signed_distance(const Vec<2>& p) const {
     d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(*e, q)));
   const double d = std::sqrt(d2);
   switch (impl_->polygon.bounded_side(q)) {
-    case CGAL::ON_BOUNDED_SIDE: return -d;
+    case CGAL::ON_BOUNDED_SIDE: return signed_by_side(d, true);
     case CGAL::ON_BOUNDARY: return 0.0;
-    default: return d;
+    default: return signed_by_side(d, false);
   }
 }
 

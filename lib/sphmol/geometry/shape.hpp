@@ -4,11 +4,21 @@
 // so a new shape is one class. The sign must be exact; the magnitude is the distance to the surface
 // for the primitive shapes and a bound for their combinations (shape_algebra.hpp), which is what
 // "within n spacings of the surface" needs near a single surface.
+#include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "sphmol/geometry/vec.hpp"
 
 namespace sphmol::geometry {
+
+// The signed distance of a shape whose side of the surface comes from an exact predicate (CGAL's
+// polygon and mesh inside tests) and whose distance d is rounded: within round-off of the surface d
+// can be 0, and -0.0 would read as outside. The smallest positive double keeps the exact sign.
+inline double signed_by_side(double d, bool inside) {
+  const double m = std::max(d, std::numeric_limits<double>::denorm_min());
+  return inside ? -m : m;
+}
 
 template <int D>
 class Shape {

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -295,6 +296,11 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
   if (!ok || m.number_of_faces() == 0)
     throw std::invalid_argument("mesh " + name + ": cannot be read as a polygon mesh (STL, OFF, PLY or OBJ)");
   if (!CGAL::is_closed(m)) throw std::invalid_argument("mesh " + name + ": the surface is not closed, so it has no inside");
+  // The inside test counts ray crossings, which is the inside only of a surface that does not cross
+  // itself: two overlapping closed parts would leave their overlap outside.
+  if (CGAL::Polygon_mesh_processing::does_self_intersect(m))
+    throw std::invalid_argument("mesh " + name + ": the surface intersects itself (join overlapping parts into one surface, or "
+                                "give them as separate bodies)");
   impl_->tree = std::make_unique<Tree>(faces(m).first, faces(m).second, m);
   impl_->tree->accelerate_distance_queries();
   impl_->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K, CGAL::Default, Tree>>(*impl_->tree);
@@ -311,9 +317,9 @@ double TriangleMeshShape::signed_distance(const Vec<3>& p) const {
   const K::Point_3 q(p[0], p[1], p[2]);
   const double d = std::sqrt(CGAL::to_double(impl_->tree->squared_distance(q)));
   switch ((*impl_->side)(q)) {
-    case CGAL::ON_BOUNDED_SIDE: return -d;
+    case CGAL::ON_BOUNDED_SIDE: return signed_by_side(d, true);
     case CGAL::ON_BOUNDARY: return 0.0;
-    default: return d;
+    default: return signed_by_side(d, false);
   }
 }
 

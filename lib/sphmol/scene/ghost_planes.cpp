@@ -55,6 +55,22 @@ bool feasible(const std::vector<HalfSpace<D>>& hs, double tol) {
 
 }  // namespace
 
+void check_ghost_body(const WallBodySpec& b) {
+  // Under boundary: ghost a plane body is a mirror without saying so: the message says why.
+  const std::string what = b.treatment == "ghost" ? "a ghost mirror" : "a plane body under discretization.boundary: ghost (a mirror)";
+  if (b.layers > 0) fail(b.where_layers, what + " has no wall particles: remove layers");
+  if (b.motion) fail(b.where_motion, what + " stays in place; a moving surface is velocity: [...] along the plane");
+  double n2 = 0.0, vn = 0.0, v2 = 0.0;
+  for (std::size_t d = 0; d < b.shape.normal.size(); ++d) {
+    n2 += b.shape.normal[d] * b.shape.normal[d];
+    if (d < b.velocity.size()) vn += b.shape.normal[d] * b.velocity[d];
+  }
+  for (double c : b.velocity) v2 += c * c;
+  if (std::abs(vn) > 1e-12 * std::sqrt(n2 * v2))
+    fail(b.where_velocity, what + " stays in place, so its velocity must lie along the plane (normal component " +
+                               num(vn / std::sqrt(n2)) + " m/s)");
+}
+
 bool is_ghost_body(const WallBodySpec& body, const Config& config) {
   return body.treatment == "ghost" ||
          (body.treatment.empty() && body.shape.type == "plane" && config.discretization.boundary == "ghost");
@@ -74,6 +90,7 @@ void check_ghost_bodies(const SceneSpec& spec, const Config& config, const std::
       fail(boundary_where, "ghost mirrors only planes (the domain's faces and plane wall bodies); the scene's wall body " +
                                w.name + " (" + w.where + ") is a " + w.shape.type + " and needs wall_particles");
     }
+    if (ghost) check_ghost_body(w);
     if (!ghost && w.treatment == "ghost")
       fail(w.where_treatment, "a ghost mirror needs discretization.boundary: ghost, which makes every wall a mirror (mirrors "
                               "reflect fluid only, so wall particles beside them would get no images)");

@@ -26,6 +26,12 @@ namespace sphmol {
 // discretization.boundary key for the first case (empty: the error is at the body).
 void check_ghost_bodies(const SceneSpec& spec, const Config& config, const std::string& boundary_where);
 
+// What a mirror plane cannot have, each a ConfigError at its key: layers, a motion, a velocity with a
+// component normal to the plane (it stays in place). For a body with treatment: ghost (the scene
+// reader) and for a plane body that is a mirror through discretization.boundary: ghost alone
+// (check_ghost_bodies).
+void check_ghost_body(const WallBodySpec& body);
+
 // Whether wall body k is a mirror plane in this configuration.
 bool is_ghost_body(const WallBodySpec& body, const Config& config);
 

@@ -230,7 +230,12 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShar
   // order, then the domain walls, then the wall bodies in order). The first pass counts each fluid
   // body's points and finds its highest; the walls are listed next (their lists are the surface's
   // size); the second pass places everything.
-  const double tol = 1e-9 * dx;
+  // Points exactly half a spacing from a wall body (a face on a half-lattice line) are kept as fluid
+  // and exactly on a periodic face are placed once, to a tolerance above the rounding of the inputs:
+  // single-precision meshes (binary STL, PLY) give their coordinates to 2^-24 of their magnitude.
+  double magnitude = 0.0;
+  for (int d = 0; d < D; ++d) magnitude = std::max({magnitude, std::abs(box.lo[d]), std::abs(box.hi[d])});
+  const double tol = 1e-9 * dx + 4.0 * std::numeric_limits<float>::epsilon() * magnitude;
   struct FluidBody {
     ShapePtr<D> shape;
     Bounds<D> b;
@@ -245,12 +250,33 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShar
     FluidBody B;
     B.shape = make_shape<D>(f.shape);
     B.b = B.shape->bounds();
+    // Finite extents must lie in the domain; unbounded ones (half-spaces) are cut to it. A shape's
+    // box need not be tight (a difference keeps its first part's): where it reaches out, the body is
+    // refused only if a lattice point outside the domain lies inside it.
+    Bounds<D> reach = B.b;
+    int out_axis = -1;
     for (int d = 0; d < D; ++d) {
-      // Finite extents must lie in the domain; unbounded ones (half-spaces) are cut to it.
-      const double L = box.hi[d] - box.lo[d];
-      if ((std::isfinite(B.b.lo[d]) && B.b.lo[d] < box.lo[d] - 1e-9 * L) || (std::isfinite(B.b.hi[d]) && B.b.hi[d] > box.hi[d] + 1e-9 * L))
+      if (!std::isfinite(reach.lo[d]) || !std::isfinite(reach.hi[d])) {
+        reach.lo[d] = std::max(reach.lo[d], box.lo[d]);
+        reach.hi[d] = std::min(reach.hi[d], box.hi[d]);
+      } else if (out_axis < 0 && (reach.lo[d] < box.lo[d] - tol || reach.hi[d] > box.hi[d] + tol)) {
+        out_axis = d;
+      }
+    }
+    if (out_axis >= 0) {
+      bool outside = false;
+      cubic.for_each_in(reach, [&](const Vec<D>& p) {
+        if (outside) return;
+        bool in_box = true;
+        for (int d = 0; d < D; ++d) in_box = in_box && p[d] > box.lo[d] && p[d] < box.hi[d];
+        if (!in_box && B.shape->signed_distance(p) < 0.0) outside = true;
+      });
+      const int d = out_axis;
+      if (outside)
         fail(f.where, std::string("the fluid body extends outside the domain along ") + kAxisName[d] + " (" +
                           num(B.b.lo[d]) + " to " + num(B.b.hi[d]) + " m; domain " + num(box.lo[d]) + " to " + num(box.hi[d]) + " m)");
+    }
+    for (int d = 0; d < D; ++d) {
       B.b.lo[d] = std::max(B.b.lo[d], box.lo[d]);
       B.b.hi[d] = std::min(B.b.hi[d], box.hi[d]);
     }

@@ -8,6 +8,7 @@
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/core/join.hpp"
 
+#include "sphmol/scene/ghost_planes.hpp"
 #include "sphmol/scene/scene_shapes.hpp"
 
 namespace sphmol {
@@ -218,18 +219,7 @@ void read_treatment(MapReader& w, WallBodySpec& b) {
       w.fail("treatment", "ghost mirrors need a plane body (shape type plane); a '" + b.shape.type +
                               "' takes rest, extrapolated, dynamic or repulsive");
     if (w.has("repulsive")) w.fail("repulsive", "the parameters of the repulsive force need treatment: repulsive");
-    if (b.layers > 0) w.fail("layers", "a ghost mirror has no wall particles: remove layers");
-    if (b.motion) w.fail("motion", "a ghost mirror stays in place; a moving surface is velocity: [...] along the plane");
-    double n2 = 0.0, vn = 0.0;
-    for (std::size_t d = 0; d < b.shape.normal.size(); ++d) {
-      n2 += b.shape.normal[d] * b.shape.normal[d];
-      if (d < b.velocity.size()) vn += b.shape.normal[d] * b.velocity[d];
-    }
-    double v2 = 0.0;
-    for (double c : b.velocity) v2 += c * c;
-    if (std::abs(vn) > 1e-12 * std::sqrt(n2 * v2))
-      w.fail("velocity", "a ghost mirror stays in place, so its velocity must lie along the plane (normal component " +
-                             number_text(vn / std::sqrt(n2)) + " m/s)");
+    check_ghost_body(b);
     return;
   }
   const bool repulsive = b.treatment == "repulsive";
@@ -325,6 +315,9 @@ SceneSpec read_scene(MapReader& scene, int dimension, const std::string& config_
     const long long layers = w.integer("layers").value_or(0);
     if (layers < 0 || layers > 20) w.fail("layers", "must be 0 (enough to fill the kernel support) or 1 to 20");
     b.layers = static_cast<int>(layers);
+    b.where_layers = w.where("layers");
+    b.where_velocity = w.where("velocity");
+    b.where_motion = w.where("motion");
     if (w.has("motion")) {
       if (w.has("velocity")) w.fail("velocity", "give the body either velocity or motion, not both (motion: {type: translation, velocity: [...]})");
       if (w.has("belt")) w.fail("belt", "a body with motion keeps its place with motion.stationary: true, not belt");

@@ -90,6 +90,7 @@ struct WallBodySpec {
   std::string treatment;
   RepulsionSpec repulsion;  // treatment: repulsive
   std::string where, where_treatment, where_repulsion;
+  std::string where_layers, where_velocity, where_motion;  // for the checks of a ghost body (scene/ghost_planes.hpp)
 };
 
 struct SceneSpec {
