@@ -57,6 +57,8 @@ TEST_CASE("probes config: errors name the key and its line", "[probes][config]")
   CHECK(error_of(with_probes("  - {name: a, type: point, at: [0, 0], points: 3}\n")).rfind("case.yaml:19: probes[0].points: unknown key", 0) == 0);
   CHECK(error_of(with_probes("  - {name: ../a, type: point, at: [0, 0]}\n")) ==
         "case.yaml:19: probes[0].name: '../a' may hold only letters, digits, '_' and '-' (it names the file probe_<name>.csv)");
+  CHECK(error_of(with_probes("  - {name: " + std::string(101, 'n') + ", type: point, at: [0, 0]}\n")) ==
+        "case.yaml:19: probes[0].name: is 101 characters long, more than 100 (it names the file probe_<name>.csv)");
   CHECK(error_of(with_probes("  - {name: a, type: point, at: [0, 0]}\n  - {name: a, type: point, at: [0, 1.0e-4]}\n")) ==
         "case.yaml:20: probes[1].name: 'a' is used by an earlier probe (names must be unique)");
   CHECK(error_of(with_probes("  - {name: a, type: plane, origin: [0, 0], edge_1: [1, 0], edge_2: [0, 1], points: [2, 2]}\n")) ==

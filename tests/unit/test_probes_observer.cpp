@@ -173,9 +173,11 @@ TEST_CASE("probe observer: `every` probes ask the run loop for their own times",
     sampled.push_back(t);
   }
   obs.at_end(*f.sys, f.y.data(), 1.0, out);
-  REQUIRE(sampled.size() == 4);
+  // 0, 0.3, 0.6, 0.9 and the end state at t_end = 1, which is not a multiple of every.
+  REQUIRE(sampled.size() == 5);
   CHECK(sampled[3] == Approx(0.9));
-  CHECK(lines_of(dir.path / "probe_p_mid.csv").size() == 5);
+  CHECK(sampled[4] == 1.0);
+  CHECK(lines_of(dir.path / "probe_p_mid.csv").size() == 6);
 }
 
 TEST_CASE("probe observer: a probe outside the scene is a config error at its line", "[probes][observer]") {
@@ -189,6 +191,17 @@ TEST_CASE("probe observer: a probe outside the scene is a config error at its li
     const std::string m = e.what();
     CHECK(m.rfind("case.yaml:7: probes[0].at: the point (0.5, 3) is outside the scene", 0) == 0);
   }
+  // A gauge whose range lies above the scene.
+  f.c.probes[0].type = "height_gauge";
+  f.c.probes[0].at = {0.5};
+  f.c.probes[0].range = {5.0, 6.0};
+  try {
+    ProbeObserver<2> obs(f.c, *f.sys);
+    FAIL("no error");
+  } catch (const ConfigError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("case.yaml:7: probes[0].at: the gauge's range [5, 6] lies outside the scene"));
+  }
+  f.c.probes[0].range.clear();
   f.c.probes[0].at = {0.5, 0.3};
   f.c.probes[0].type = "force";
   f.c.probes[0].body = "lid";

@@ -550,7 +550,18 @@ time:
         "--set discretization.transport_velocity.enabled=true: discretization.transport_velocity: needs a confined liquid; this "
         "scene has a free surface (an open face, or fluid that does not fill the domain)");
   CHECK_THAT(error({}, base.substr(0, base.find("scene:")) + "discretization:\n  spacing: 0.1\ntime:\n  t_end: 0.1\n"),
-             Catch::Contains("scene: required value missing"));
+             Catch::Contains("scene: required value missing"));  // A start pressure sets only the continuity density; with a summed density a notice says it has no effect.
+  {
+    std::string with_pressure = base;
+    with_pressure.replace(with_pressure.find("hi: [1, 0.5]}\n"), 14, "hi: [1, 0.5]}\n      pressure: 100\n");
+    const auto said = [](const Config& k) {
+      return std::count_if(k.notices.begin(), k.notices.end(),
+                           [](const std::string& n) { return n.find("scene.fluid[0].pressure: has no effect") != std::string::npos; });
+    };
+    CHECK(said(load_config_string(with_pressure, {}, "case.yaml")) == 1);
+    CHECK(said(load_config_string(with_pressure, {"discretization.density=continuity"}, "case.yaml")) == 0);
+    CHECK(said(c) == 0);
+  }
 }
 
 TEST_CASE("scene builder: a rotating cylinder's wall particles carry omega x r at their surface point", "[scene][motion]") {

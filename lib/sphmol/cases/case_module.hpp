@@ -27,6 +27,8 @@ struct CaseRead {
   // With CaseModule::spacing_from_scene and neither discretization.particles_across nor spacing
   // given: the loader takes size.spacing as discretization.spacing and reports this rule as a notice.
   std::string spacing_rule = {};
+  // Said to the user with the loader's other notices (a setting that has no effect, ...).
+  std::vector<std::string> notices = {};
 };
 
 struct CaseModule {

@@ -752,6 +752,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseReaders readers{top, fluid, disc, time, out};
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
+  c.notices.insert(c.notices.end(), own.notices.begin(), own.notices.end());
   if (c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0)) {
     if (!(own.size.spacing > 0.0))
       disc.fail_missing("particles_across", "or discretization.spacing: case '" + c.case_name + "' derived no spacing");

@@ -107,6 +107,11 @@ std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const
     p.name = any.required(any.string("name"), "name", "the probe's name, [A-Za-z0-9_-]+ (its file is probe_<name>.csv)");
     if (!plain_name(p.name))
       any.fail("name", "'" + p.name + "' may hold only letters, digits, '_' and '-' (it names the file probe_<name>.csv)");
+    // File names have at most 255 bytes; the atomic write's temporary adds to probe_<name>.csv.
+    constexpr std::size_t kMaxName = 100;
+    if (p.name.size() > kMaxName)
+      any.fail("name", "is " + std::to_string(p.name.size()) + " characters long, more than " + std::to_string(kMaxName) +
+                           " (it names the file probe_<name>.csv)");
     for (const auto& q : out)
       if (q.name == p.name) any.fail("name", "'" + p.name + "' is used by an earlier probe (names must be unique)");
     p.type = any.choice("type", any.required(any.string("type"), "type", join(types)), types);

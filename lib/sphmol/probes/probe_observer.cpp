@@ -162,6 +162,9 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const OwnedPiece<D>& start
       if (!inside(at, D - 1))
         throw ConfigError(c.where + ": the gauge line at " + cell(at[0]) + (D == 3 ? ", " + cell(at[1]) : std::string()) +
                           " is outside the scene, whose particles (widened by the kernel support) span " + box_text());
+      if (!c.range.empty() && (c.range[1] < lo[D - 1] || c.range[0] > hi[D - 1]))
+        throw ConfigError(c.where + ": the gauge's range [" + cell(c.range[0]) + ", " + cell(c.range[1]) +
+                          "] lies outside the scene, whose particles (widened by the kernel support) span " + box_text());
       s.bottom = c.range.empty() ? lo[D - 1] : c.range[0];
       s.top = c.range.empty() ? hi[D - 1] : c.range[1];
       head << "," << (D == 2 ? "y" : "z") << "_surface [m]";
@@ -202,6 +205,9 @@ double ProbeObserver<D>::sample_time(const Series& s, long k) const {
   // (or on t_end) does.
   for (const double to : output_times_)
     if (std::abs(tk - to) <= 1e-9 * every) return to;
+  // The last sample is the end state: when t_end is not a multiple of every, the first multiple past
+  // it is replaced by t_end.
+  if (k > 0 && tk > t_end_ && static_cast<double>(k - 1) * every < t_end_ - 1e-9 * every) return t_end_;
   return tk;
 }
 

@@ -55,7 +55,16 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
   for (int a = 0; a < c.dimension; ++a)
     if (spec.domain.boundary[a] == AxisBoundary::periodic)
       size.periodic.push_back({spec.domain.where_hi, spec.domain.hi[a] - spec.domain.lo[a]});
-  return {settings, size};
+  CaseRead out{settings, size};
+  // Only the continuity density is set from the start pressure; the summed densities come from the
+  // particles' positions, whatever pressure the body was given.
+  if (d.density != "continuity")
+    for (const auto& f : spec.fluid)
+      if (f.hydrostatic || f.pressure != 0.0)
+        out.notices.push_back(f.where_pressure + ": has no effect with discretization.density: " + d.density +
+                              " (the densities, and so the pressures, come from the particles' positions); "
+                              "density: continuity starts from it");
+  return out;
 }
 
 }  // namespace
