@@ -30,6 +30,9 @@ int run() {
     return sphmol::app::bad_option("compare", "--rtols", "no integrator in --integrators has a tolerance (arkode_erk, arkode_imex, cvode_adams do)");
   if (!opt.step_factors.empty() && !any_fixed)
     return sphmol::app::bad_option("compare", "--step-factors", "no integrator in --integrators takes a fixed or CFL step (leapfrog, leapfrog_kdk, leapfrog_imex do)");
+  if (!sphmol::app::coarse_to_fine_ok("compare", "--rtols", opt.rtols) ||
+      !sphmol::app::coarse_to_fine_ok("compare", "--step-factors", opt.step_factors))
+    return 2;
   try {
     sphmol::CompareOptions o;
     o.integrators = *integrators;

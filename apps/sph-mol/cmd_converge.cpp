@@ -47,6 +47,9 @@ int run() {
   } catch (const sphmol::OutputFolderError& e) {
     std::cerr << "sph-mol converge: " << e.what() << '\n';
     return 2;  // the folder is in use: bad input, nothing written
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "sph-mol converge: " << e.what() << '\n';
+    return 2;  // a study the options cannot make (a step longer than the run, ...): bad input
   } catch (const std::exception& e) {
     std::cerr << "sph-mol converge: " << e.what() << '\n';
     return 1;

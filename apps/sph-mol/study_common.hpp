@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/studies/integrator_spec.hpp"
 
 namespace sphmol::app {
@@ -39,6 +40,19 @@ inline std::optional<std::vector<IntegratorSpec>> parse_integrators_option(const
     bad_option(who, "--integrators", e.what());
     return std::nullopt;
   }
+}
+
+// A sweep given coarse to fine: each value below the one before (the fastest-at-error summary reads
+// the runs in that order, and a repeated value would run twice). True when it is, else reports it.
+inline bool coarse_to_fine_ok(const char* who, const std::string& option, const std::vector<double>& values) {
+  for (std::size_t k = 1; k < values.size(); ++k)
+    if (!(values[k] < values[k - 1])) {
+      std::string list;
+      for (const double v : values) list += (list.empty() ? "" : ",") + number_text(v);
+      bad_option(who, option, "must go from coarse to fine, each value smaller than the one before (got " + list + ")");
+      return false;
+    }
+  return true;
 }
 
 // An output folder must be named (an empty name would write into the current directory's root files).

@@ -39,3 +39,31 @@ TEST_CASE("command line: run-command options before a subcommand are refused, na
   INFO(r.err);
   CHECK(r.code == 0);
 }
+
+TEST_CASE("command line: a compare sweep not from coarse to fine is refused", "[cli][integration]") {
+  // The fastest-at-error summary reads each integrator's runs coarse to fine: out of order it named a
+  // fine run the fastest where a coarse one was cheaper, and a repeated value ran twice.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-sweep");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+  const std::string err = (dir / "err").string();
+  struct Case {
+    std::vector<std::string> sweep;
+    std::string option;
+  };
+  for (const Case& c : std::vector<Case>{{{"--integrators", "leapfrog", "--step-factors", "0.125,1"}, "--step-factors"},
+                                         {{"--integrators", "leapfrog", "--step-factors", "1,1"}, "--step-factors"},
+                                         {{"--integrators", "cvode_adams", "--rtols", "1e-6,1e-3"}, "--rtols"},
+                                         {{"--integrators", "leapfrog,leapfrog"}, "--integrators"},
+                                         {{"--integrators", "leapfrog,"}, "--integrators"}}) {
+    std::vector<std::string> args{"compare", "--config", cfg, "--output", (dir / "x").string()};
+    args.insert(args.end(), c.sweep.begin(), c.sweep.end());
+    const auto r = test_support::run_process(SPHMOL_BINARY, args, err);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::StartsWith("sph-mol compare: " + c.option + ": "));
+  }
+  CHECK_FALSE(fs::exists(dir / "x"));
+  fs::remove_all(dir);
+}

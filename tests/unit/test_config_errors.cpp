@@ -143,6 +143,10 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
       {"kinematic_viscosity: 1.0e-6", "kinematic_viscosity: 1.0e-6\n  body_force: [1, 0, 0]",
        "case.yaml:6: fluid.body_force: has 3 components, expected 2 (one per dimension)"},
       {"dimension: 2", "dimension: 4", "case.yaml:2: dimension: 4 is out of range (allowed: 1, 2 or 3)"},
+      // The files of an output time are named by six significant digits.
+      {"times: [0.1, 0.2]", "times: [0.1, 0.10000001]",
+       "case.yaml:17: output.times: the output times 0.1 and 0.10000001 name the same files (t0.1): output times must differ in "
+       "their first six significant digits"},
       {"times: [0.1, 0.2]", "times: [0.1, -0.2]", "case.yaml:17: output.times[1]: -0.2 is out of range (allowed: > 0 s)"},
       {"times: [0.1, 0.2]", "times: [0, 0.2]", "case.yaml:17: output.times[0]: 0 is out of range (allowed: > 0 s)"},
       {"times: [0.1, 0.2]", "times:\n    - 0.2\n    - 0.1",

@@ -27,6 +27,13 @@ TEST_CASE("integrator lists parse, and ERK orders come from the tables", "[studi
   CHECK_THROWS(parse_integrator_list("rk4", ""));
   CHECK_THROWS(parse_integrator_list("arkode_erk:NOPE", ""));
   CHECK_THROWS(parse_integrator_list("leapfrog:X", ""));
+  // A doubled, leading or trailing comma, and an integrator twice (the same table), are errors.
+  for (const char* bad : {"leapfrog,,cvode_adams", ",leapfrog", "leapfrog,"})
+    CHECK_THROWS_WITH(parse_integrator_list(bad, ""), Catch::Contains("an empty entry"));
+  CHECK_THROWS_WITH(parse_integrator_list("leapfrog,leapfrog", ""), Catch::Contains("listed twice"));
+  CHECK_THROWS_WITH(parse_integrator_list("arkode_erk,arkode_erk:ARKODE_HEUN_EULER_2_1_2", "ARKODE_HEUN_EULER_2_1_2"),
+                    Catch::Contains("listed twice"));
+  CHECK(parse_integrator_list("arkode_erk,arkode_erk:ARKODE_VERNER_8_5_6", "ARKODE_HEUN_EULER_2_1_2").size() == 2u);
 }
 
 TEST_CASE("observed orders: pairwise and least squares", "[studies]") {

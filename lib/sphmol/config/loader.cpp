@@ -19,6 +19,7 @@
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/core/join.hpp"
 #include "sphmol/kernels/registry.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/probes/probe_config.hpp"
 
 namespace sphmol {
@@ -727,6 +728,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     // --- end output.every ---
     if (o.times.empty() || o.times.back() < c.time.t_end) o.times.push_back(c.time.t_end);
+    // The files of an output time are named by its six significant digits (profile_t0.5.csv): two
+    // times with one name would overwrite each other's files.
+    std::string before = o.times.empty() ? std::string() : output_time_text(o.times[0]);
+    for (std::size_t i = 1; i < o.times.size(); ++i) {
+      std::string now = output_time_text(o.times[i]);
+      if (now == before)
+        out.fail(out.has("every") ? "every" : "times", "the output times " + number_text(o.times[i - 1]) + " and " +
+                                                           number_text(o.times[i]) + " name the same files (t" + now +
+                                                           "): output times must differ in their first six significant digits");
+      before = std::move(now);
+    }
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
     if (const auto v = out.boolean("vtk")) o.vtk = *v;
     if (const auto v = out.boolean("vtk_walls")) o.vtk_walls = *v;

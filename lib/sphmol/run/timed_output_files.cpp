@@ -2,9 +2,17 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iomanip>
+#include <sstream>
 #include <string_view>
 
 namespace sphmol {
+
+std::string output_time_text(double t) {
+  std::ostringstream s;
+  s << std::setprecision(6) << t;
+  return s.str();
+}
 
 std::vector<std::pair<double, std::string>> timed_output_files(const OutputSink& out, std::string_view prefix) {
   // Only what this run wrote: a reused folder may hold another run's files with the same prefix.

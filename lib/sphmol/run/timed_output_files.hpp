@@ -10,6 +10,10 @@
 
 namespace sphmol {
 
+// The time in those names: six significant digits (0.5, 0.0015, 1.23457e-05). The loader refuses
+// output times that give one text, so no file of an output time overwrites another's.
+std::string output_time_text(double t);
+
 std::vector<std::pair<double, std::string>> timed_output_files(const OutputSink& out, std::string_view prefix);
 
 }  // namespace sphmol

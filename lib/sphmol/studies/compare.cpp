@@ -159,7 +159,7 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
     rc.time.table = kReferenceTable;
     rc.time.dt = *reference_dt;
     const StudyRun ref = run_study_case(rc);
-    if (ref.blown_up) throw std::runtime_error("compare: the reference run blew up: " + ref.summary["blow_up"].dump());
+    if (ref.blown_up) throw std::runtime_error("the reference run blew up: " + ref.summary["blow_up"].dump());
     ref_state = ref.final_state;
     ref_value = ref.error;
     reference = {{"table", kReferenceTable}, {"dt", *reference_dt}, {"wall_seconds", ref.summary["wall_seconds"]},

@@ -78,9 +78,9 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     else if (base.time.dt) dt0 = *base.time.dt;
     else dt0 = initial_stable_step(cfg);  // the case's CFL step at t = 0 (time.cfl)
     if (!(dt0 > 0.0 && std::isfinite(dt0)))
-      throw std::invalid_argument("converge --refine time: no usable coarsest step (" + fmt(dt0) + " s); give --dt0");
+      throw std::invalid_argument("--refine time: no usable coarsest step (" + fmt(dt0) + " s); give --dt0");
     if (dt0 > cfg.time.t_end)
-      throw std::invalid_argument("converge --refine time: the coarsest step " + fmt(dt0) + " s is longer than time.t_end = " +
+      throw std::invalid_argument("--refine time: the coarsest step " + fmt(dt0) + " s is longer than time.t_end = " +
                                   fmt(cfg.time.t_end) + " s; give a smaller --dt0");
     if (opt.log && !opt.dt0 && !base.time.dt) *opt.log << "converge: coarsest step dt0 = " << fmt(dt0) << " s (the CFL step at t = 0)\n";
     const double dt_fine = dt0 / std::pow(2.0, opt.levels - 1);
@@ -90,7 +90,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     rc.time.table = kReferenceTable;
     rc.time.dt = dt_fine / kReferenceRefinement;
     const StudyRun ref = run_study_case(rc);
-    if (ref.blown_up) throw std::runtime_error("converge: the reference run blew up: " + ref.summary["blow_up"].dump());
+    if (ref.blown_up) throw std::runtime_error("the reference run blew up: " + ref.summary["blow_up"].dump());
     ref_state = ref.final_state;
     if (opt.log)
       *opt.log << "converge: reference " << kReferenceTable << " dt = " << fmt(*rc.time.dt) << " (" << fmt(ref.summary["wall_seconds"].get<double>())
@@ -98,9 +98,9 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   } else {
     const int n0 = base.discretization.particles_across;
     const double dx0 = base.discretization.spacing;
-    if (n0 <= 0 && !(dx0 > 0.0)) throw std::invalid_argument("converge --refine space needs discretization.particles_across or discretization.spacing");
+    if (n0 <= 0 && !(dx0 > 0.0)) throw std::invalid_argument("--refine space needs discretization.particles_across or discretization.spacing");
     if (n0 > 0 && (static_cast<long long>(n0) << (opt.levels - 1)) > 1'000'000'000LL)
-      throw std::invalid_argument("converge --refine space: particles_across " + std::to_string(n0) + " x 2^" +
+      throw std::invalid_argument("--refine space: particles_across " + std::to_string(n0) + " x 2^" +
                                   std::to_string(opt.levels - 1) + " is too many");
     for (int k = 0; k < opt.levels; ++k)
       levels.push_back(n0 > 0 ? nlohmann::json{{"level", k}, {"particles_across", n0 << k}}
@@ -115,7 +115,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
              << "reference run at half the finest spacing\n";
   for (const auto& spec : specs) {
     if (time && spec.adaptive() && spec.integrator == "cvode_adams")
-      throw std::invalid_argument("converge --refine time: cvode_adams has no fixed step");
+      throw std::invalid_argument("--refine time: cvode_adams has no fixed step");
     std::vector<double> errors, dts, walls;
     const int runs = quantity ? opt.levels + 1 : opt.levels;
     for (int k = 0; k < runs; ++k) {
@@ -177,7 +177,9 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     s["expected_order"] = expected > 0 ? nlohmann::json(expected) : nlohmann::json(nullptr);
     series.push_back(s);
     chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
-    if (opt.log) *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope) << " (expected " << expected << ")\n";
+    if (opt.log)
+      *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope)
+               << (expected > 0 ? " (expected " + std::to_string(expected) + ")" : std::string()) << "\n";
   }
   if (!time) chart.ylabel = quantity ? "relative difference of " + series_error_key + " from the finest run" : "final " + series_error_key;
   write_file_atomically(opt.output_dir + "/convergence.csv",

@@ -36,10 +36,11 @@ void IntegratorSpec::apply(TimeConfig& time) const {
 
 std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const std::string& default_table) {
   std::vector<IntegratorSpec> out;
+  if (!list.empty() && list.back() == ',') throw std::invalid_argument("an empty entry in '" + list + "' (a doubled or trailing comma)");
   std::stringstream ss(list);
   std::string item;
   while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
+    if (item.empty()) throw std::invalid_argument("an empty entry in '" + list + "' (a doubled or trailing comma)");
     IntegratorSpec s;
     s.label = item;
     const auto colon = item.find(':');
@@ -60,6 +61,9 @@ std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const
                                   "' (known: leapfrog, leapfrog_kdk, leapfrog_imex, arkode_erk, arkode_erk:TABLE, cvode_adams, "
                                   "arkode_imex, arkode_imex:TABLE)");
     }
+    for (const auto& o : out)
+      if (o.integrator == s.integrator && o.table == s.table)
+        throw std::invalid_argument("integrator '" + item + "' is listed twice (as '" + o.label + "')");
     out.push_back(s);
   }
   if (out.empty()) throw std::invalid_argument("empty integrator list");

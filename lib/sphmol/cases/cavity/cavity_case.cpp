@@ -13,6 +13,7 @@
 #include "sphmol/reference/data_directory.hpp"
 #include "sphmol/rhs/assemble.hpp"
 #include "sphmol/scenes/box_scene.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 
 namespace sphmol {
 
@@ -158,7 +159,7 @@ nlohmann::json CavityCase::measure_pieces(const SphSystem<2>& whole, const Owned
   }
   if (out.enabled) {
     std::ostringstream tag;
-    tag << "_t" << std::setprecision(6) << t << ".csv";
+    tag << "_t" << output_time_text(t) << ".csv";
     last_u_csv_ = "centreline_u" + tag.str();
     last_v_csv_ = "centreline_v" + tag.str();
     out.write(last_u_csv_, csv_u.str());

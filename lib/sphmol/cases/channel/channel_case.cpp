@@ -102,7 +102,7 @@ nlohmann::json ChannelCase::measure_pieces(const SphSystem<2>& whole, const Owne
       std::ostringstream s, name;
       s << "y [m],u_sph [m/s],u_exact [m/s]\n" << std::setprecision(12);
       for (const auto& p : rows) s << p.y << ',' << p.u_sph << ',' << p.u_exact << '\n';
-      name << "profile_t" << std::setprecision(6) << t << ".csv";
+      name << "profile_t" << output_time_text(t) << ".csv";
       out.write(name.str(), s.str());
     }
   }

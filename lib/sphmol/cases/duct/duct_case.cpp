@@ -123,7 +123,7 @@ nlohmann::json DuctCase::measure_pieces(const SphSystem<3>& whole, const OwnedPi
     std::ostringstream s, name;
     s << "y [m],u_sph [m/s],u_exact [m/s]\n" << std::setprecision(12);
     for (const auto& row : rows) s << row[0] << ',' << row[1] << ',' << row[2] << '\n';
-    name << "profile_t" << std::setprecision(6) << t << ".csv";
+    name << "profile_t" << output_time_text(t) << ".csv";
     out.write(name.str(), s.str());
   }
   const double rms = n > 0 ? std::sqrt(sum2 / n) : 0.0;

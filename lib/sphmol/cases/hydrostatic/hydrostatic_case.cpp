@@ -99,7 +99,7 @@ nlohmann::json HydrostaticCase<D>::measure_pieces(const SphSystem<D>& whole, con
       std::ostringstream csv, name;
       csv << (D == 3 ? "z [m]" : "y [m]") << ",p_sph [Pa],p_exact [Pa]\n" << std::setprecision(10);
       for (const auto& row : rows) csv << row.y << ',' << row.p << ',' << row.p_exact << '\n';
-      name << "pressure_t" << std::setprecision(6) << t << ".csv";
+      name << "pressure_t" << output_time_text(t) << ".csv";
       out.write(name.str(), csv.str());
     }
   }

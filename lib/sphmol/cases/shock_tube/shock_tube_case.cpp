@@ -181,7 +181,7 @@ nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const
       s << b.x << ',' << b.rho << ',' << b.u << ',' << b.p << ',' << b.e << ',' << q.rho << ',' << q.u << ',' << q.p
         << ',' << q.e << '\n';
     }
-    name << "profile_t" << std::setprecision(6) << t << ".csv";
+    name << "profile_t" << output_time_text(t) << ".csv";
     out.write(name.str(), s.str());
   }
   // Every rank's mid-line rows on rank 0, sorted by x (then by the other columns).
@@ -194,7 +194,7 @@ nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const
     s << kProfileHeader << std::setprecision(10);
     for (const auto& row : mid)
       for (int k = 0; k < 9; ++k) s << row[static_cast<std::size_t>(k)] << (k < 8 ? ',' : '\n');
-    name << "midline_t" << std::setprecision(6) << t << ".csv";
+    name << "midline_t" << output_time_text(t) << ".csv";
     out.write(name.str(), s.str());
   }
   const double inv_mid = n_mid > 0 ? 1.0 / n_mid : 0.0;
