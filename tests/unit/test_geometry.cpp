@@ -354,6 +354,11 @@ TEST_CASE("geometry: triangle meshes from binary STL, PLY and OBJ bytes", "[geom
   }
   CHECK_THROWS_WITH(TriangleMeshShape("solid x\n", "vtk", "x.vtk"), Catch::Contains("unknown format 'vtk'"));
   CHECK_THROWS_WITH(TriangleMeshShape("not a mesh at all", "off", "x.off"), Catch::Contains("cannot be read"));
+  // What is wrong, where it can be said: a face past the vertices, faces without area.
+  CHECK_THROWS_WITH(TriangleMeshShape("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "obj", "i.obj"),
+                    Catch::Contains("face 0 refers to a vertex the file does not have (it has 3)"));
+  CHECK_THROWS_WITH(TriangleMeshShape("OFF\n4 2 0\n1 1 1\n1 1 1\n1 1 1\n1 1 1\n3 0 1 2\n3 0 2 3\n", "off", "z.off"),
+                    Catch::Contains("no face has an area"));
 }
 
 TEST_CASE("geometry: a mesh file whose header asks for more than it holds, or too large a file, is refused", "[geometry][cgal][security]") {

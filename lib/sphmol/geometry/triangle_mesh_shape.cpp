@@ -245,8 +245,11 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
   } catch (const std::exception&) {
     ok = false;
   }
-  for (const auto& f : polygons)
-    for (const std::size_t v : f) ok = ok && v < points.size();
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    for (const std::size_t v : polygons[k])
+      if (v >= points.size())
+        throw std::invalid_argument("mesh " + name + ": face " + std::to_string(k) + " refers to a vertex the file does not have (it has " +
+                                    std::to_string(points.size()) + ")");
   // Coordinates whose squares overflow: the distance queries construct points from squared
   // distances, and CGAL's exact fallback aborts on the infinities that result (found by fuzzing).
   constexpr double kMaxCoordinate = 1e100;  // [m]
@@ -289,6 +292,8 @@ void TriangleMeshShape::build_unchecked(const std::string& bytes, const std::str
       for (std::size_t a = 1; a + 1 < f.size(); ++a) triangles.push_back({f[0], f[a], f[a + 1]});
     }
     polygons = std::move(triangles);
+    if (polygons.empty())
+      throw std::invalid_argument("mesh " + name + ": no face has an area (all its vertices coincide or lie on a line)");
     PMP::orient_polygon_soup(points, polygons);
     ok = PMP::is_polygon_soup_a_polygon_mesh(polygons);
     if (ok) PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
