@@ -92,6 +92,10 @@ TEST_CASE("output.every: evenly spaced output times instead of a list", "[probes
   CHECK(error_of(config_test::with("  times: [0.1, 0.2]\n", "  times: [0.1, 0.2]\n  every: 0.1\n")) ==
         "case.yaml:18: output.every: give either output.times or output.every, not both");
   CHECK(error_of(config_test::with("  times: [0.1, 0.2]\n", "  every: 0\n")).rfind("case.yaml:17: output.every: 0 is out of range", 0) == 0);
+  // A file's list switched off from the command line gives way to every.
+  const Config switched = load_config_string(config_test::with("  times: [0.1, 0.2]\n", "  times: [0.1, 0.2]\n"),
+                                             {"output.times=[]", "output.every=0.25"});
+  CHECK(switched.output.times == std::vector<double>{0.25, 0.5});
 }
 
 TEST_CASE("probes config: a plane in 3D, its grid and its checks", "[probes][config]") {

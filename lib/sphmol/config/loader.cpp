@@ -718,7 +718,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     // --- output.every (an evenly spaced alternative to output.times) ---
     if (const auto v = out.real("every")) {
-      if (out.has("times")) out.fail("every", "give either output.times or output.every, not both");
+      // An empty list (--set output.times=[] to switch a file's list off) gives no times.
+      if (out.has("times") && !out.reals("times")->empty()) out.fail("every", "give either output.times or output.every, not both");
       out.check("every", *v > 0 && *v <= c.time.t_end, *v, "> 0 s and at most time.t_end");
       const double n = std::floor(c.time.t_end / *v * (1 + 1e-12));
       if (n > 1e6) out.fail("every", number_text(*v) + " s gives " + number_text(n) + " output times (at most 1e6)");
