@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sphmol/io/double_codec.hpp"
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/checkpoint.hpp"
 
 #include "support/files.hpp"
@@ -141,6 +142,7 @@ TEST_CASE("read_checkpoint refuses values a restart cannot continue from, naming
       {"wall_seconds", -1.0, "wall_seconds: -1.000000 is not a finite time >= 0"},
       {"dimension", 7, "dimension: 7 is not 1, 2 or 3"},
       {"errors", 5, "errors: not an array"},
+      {"case_state", "rows", "case_state: not an object"},
   };
   {
     nlohmann::json j = good;
@@ -179,4 +181,40 @@ TEST_CASE("read_checkpoint refuses a checkpoint.json that is not a regular file"
   fs::create_directories(dir / "checkpoint-1");
   fs::create_symlink("/dev/zero", dir / "checkpoint-1" / "checkpoint.json");
   CHECK_THAT(error_of(dir / "checkpoint-1"), Catch::Matchers::Contains("not a regular file"));
+}
+
+TEST_CASE("checkpoint carries the case's state; one written without it reads back as none", "[checkpoint]") {
+  const fs::path dir = test_support::fresh_dir("case-state");
+  std::vector<std::string> written;
+  Checkpoint cp = sample(0.05);
+  const std::vector<double> series = {0.1, 1.0 / 3.0, std::numeric_limits<double>::quiet_NaN(), -0.0};
+  cp.case_state = {{"t", encode_doubles(series)}, {"rows", "a,b\n1,2\n"}};
+  const fs::path path = write_checkpoint(dir.string(), cp, "case: couette\n", written);
+  const Checkpoint back = read_checkpoint(path.string());
+  CHECK(back.case_state == cp.case_state);
+  const std::vector<double> t = state_doubles(back.case_state, "t");
+  REQUIRE(t.size() == series.size());
+  CHECK(encode_doubles(t) == encode_doubles(series));  // to the bit, NaN and -0 included
+  // As an earlier sph-mol wrote it: no state (the run warns, run/run_case.cpp).
+  nlohmann::json j = json_of(path);
+  j.erase("case_state");
+  write_json(path, j);
+  CHECK(read_checkpoint(path.string()).case_state.is_null());
+}
+
+TEST_CASE("case_state helpers name the key of a malformed entry and restore columns of one length only", "[checkpoint]") {
+  const nlohmann::json state = {{"t", encode_doubles({0.1, 0.2})}, {"a", encode_doubles({1.0, 2.0})},
+                                {"short", encode_doubles({1.0})}, {"odd", "abc"}, {"number", 3}};
+  std::vector<double> t, a;
+  restore_columns(state, {{"t", &t}, {"a", &a}});
+  CHECK(t == std::vector<double>{0.1, 0.2});
+  CHECK(a == std::vector<double>{1.0, 2.0});
+  std::vector<double> kept = {7.0};
+  CHECK_THROWS_WITH(restore_columns(state, {{"t", &t}, {"short", &kept}}), "short: 1 values, expected 2 (t)");
+  CHECK(kept == std::vector<double>{7.0});  // nothing restored
+  CHECK_THROWS_WITH(state_doubles(state, "missing"), "missing: missing or not a string of hex digits");
+  CHECK_THROWS_WITH(state_doubles(state, "number"), "number: missing or not a string of hex digits");
+  CHECK_THROWS_WITH(state_doubles(state, "odd"), Catch::Matchers::StartsWith("odd: "));
+  CHECK_THROWS_WITH(state_double(state, "t"), "t: 2 values, expected 1");
+  CHECK(state_double(state, "short") == 1.0);
 }

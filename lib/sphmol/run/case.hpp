@@ -99,6 +99,15 @@ class Case {
   // Plots made after the run (run/plots.hpp): gnuplot scripts, each writing one PNG in the output
   // directory. Empty by default; a case adds its own (ChannelCase: profiles vs the exact solution).
   virtual std::vector<PlotScript> plots(const OutputSink& out) const { return {}; }
+  // Carried through checkpoints, as OutputObserver's state is: what the case accumulates over the
+  // output times (a series it writes whole at every output, running maxima of its monitors), so that
+  // a restarted run writes the same files and summary as an uninterrupted one. Doubles as text of
+  // their bits (io/double_codec.hpp): exact, and NaN/inf survive. Empty (the default): nothing to
+  // carry. restore_state() is called on every rank after the first evaluation at the checkpoint's
+  // state (whose monitors have already run: merge, do not overwrite) and before any measurement;
+  // a malformed state throws (std::exception), which the run reports as a bad checkpoint.
+  virtual nlohmann::json save_state() const { return nlohmann::json::object(); }
+  virtual void restore_state(const nlohmann::json& state) {}
 };
 
 // Called at every output time after the case's measurement (VTK writers, checkpoints, ...).

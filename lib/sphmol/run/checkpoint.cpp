@@ -95,6 +95,7 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
   j["integrator_state"] = cp.integrator_state;
   j["errors"] = cp.errors;
   j["observers"] = cp.observers;
+  j["case_state"] = cp.case_state;
   j["rhs_evals"] = cp.rhs_evals;
   j["wall_seconds"] = cp.wall_seconds;
   j["rhs_seconds"] = cp.rhs_seconds;
@@ -172,6 +173,9 @@ Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
     if (!cp.errors.is_array()) throw bad("errors", "not an array");
     cp.observers = j.at("observers");
     if (!cp.observers.is_array()) throw bad("observers", "not an array");
+    // Optional: older checkpoints of this format have none (the run says what that means).
+    cp.case_state = j.contains("case_state") ? j["case_state"] : nlohmann::json();
+    if (!cp.case_state.is_null() && !cp.case_state.is_object()) throw bad("case_state", "not an object");
     cp.rhs_evals = j.at("rhs_evals").get<long>();
     if (cp.rhs_evals < 0) throw bad("rhs_evals", std::to_string(cp.rhs_evals) + " < 0");
     for (const auto& [key, value] : {std::pair{"wall_seconds", &cp.wall_seconds}, std::pair{"rhs_seconds", &cp.rhs_seconds},

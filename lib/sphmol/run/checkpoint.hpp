@@ -1,12 +1,13 @@
 #pragma once
 // Checkpoints: DIR/checkpoint-<t>/ holds checkpoint.json (time, state, integrator state, the
-// measurements so far, observer state; doubles as hex of their bits, so a restart starts from the
-// identical state; the resolved config it was written with; the checkpoints this run wrote) and
-// config.yaml (the same resolved config, which `sph-mol --restart` loads). The directory is written
-// under a temporary name, every file fsynced, then renamed into place: a killed run leaves either the
-// old set of checkpoints or the new one, never a partial one. Of the checkpoints this run wrote (a
-// restarted run continues its predecessor's list when it writes to the same directory), the two
-// latest are kept; a checkpoint the run did not write is never removed, whatever its time.
+// measurements so far, the case's and the observers' state; doubles as hex of their bits, so a
+// restart starts from the identical state; the resolved config it was written with; the checkpoints
+// this run wrote) and config.yaml (the same resolved config, which `sph-mol --restart` loads). The
+// directory is written under a temporary name, every file fsynced, then renamed into place: a killed
+// run leaves either the old set of checkpoints or the new one, never a partial one. Of the
+// checkpoints this run wrote (a restarted run continues its predecessor's list when it writes to the
+// same directory), the two latest are kept; a checkpoint the run did not write is never removed,
+// whatever its time.
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,8 @@ struct Checkpoint {
   nlohmann::json integrator_state;   // Integrator::save_state()
   nlohmann::json errors = nlohmann::json::array();  // measurements at output times <= t
   nlohmann::json observers = nlohmann::json::array();  // OutputObserver::save_state(), in order
+  // Case::save_state(); read back as null from a checkpoint written before cases had one.
+  nlohmann::json case_state = nlohmann::json::object();
   long rhs_evals = 0;
   double wall_seconds = 0.0;
   double rhs_seconds = 0.0, search_seconds = 0.0;  // the parts of wall_seconds in the RHS, in the search

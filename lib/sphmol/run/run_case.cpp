@@ -169,6 +169,24 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     } catch (const std::exception& e) {
       throw CheckpointError(opt.restart_from + ": integrator_state / observers: " + e.what());
     }
+    if (!restart->case_state.is_null()) {
+      try {
+        c.restore_state(restart->case_state);
+      } catch (const std::exception& e) {
+        throw CheckpointError(opt.restart_from + ": case_state: " + e.what());
+      }
+    } else if (!c.save_state().empty() && !restart->errors.empty()) {
+      // A checkpoint written before cases carried their series. Refusing it would throw away the run
+      // so far; the run continues and says what is missing. (The case as built saves nothing only
+      // when it carries nothing; without earlier measurements nothing is lost.)
+      std::ostringstream w;
+      w << opt.restart_from << " has no case_state (written by an earlier sph-mol): the case's series files "
+        << "(CSVs) and the summary values computed from them (decay rates, running maxima) "
+        << "miss the output times up to t = " << t << " s, which the summary's errors still list; rerun from "
+        << "t = 0 for complete series";
+      warnings.push_back(w.str());
+      if (opt.log && root) *opt.log << "warning: " << warnings.back() << '\n';
+    }
   }
   // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
   // now does the output directory appear, locked for this run (run/output_folder.hpp).
@@ -216,6 +234,7 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
     cp.integrator = integrator->name();
     cp.integrator_state = part ? integrator_state : integrator->save_state();
     cp.errors = errors;
+    cp.case_state = c.save_state();
     for (const auto& o : observers) cp.observers.push_back(o->save_state());
     cp.rhs_evals = rhs_before + ode.rhs_evaluations();
     cp.wall_seconds = wall_now();

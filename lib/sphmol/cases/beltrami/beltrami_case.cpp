@@ -11,6 +11,7 @@
 #include "sphmol/geometry/lattice.hpp"
 #include "sphmol/physics/eos_tait.hpp"
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
 #include "sphmol/run/piece_reduction.hpp"
@@ -121,6 +122,14 @@ nlohmann::json BeltramiCase::final_errors(const nlohmann::json& errors) const {
     f["decay_rate"] = nullptr;  // fewer than two output times, or a mode that lost its sign: no fit
   }
   return f;
+}
+
+nlohmann::json BeltramiCase::save_state() const {
+  return {{"t", encode_doubles(t_)}, {"mode_amplitude", encode_doubles(mode_)}};
+}
+
+void BeltramiCase::restore_state(const nlohmann::json& state) {
+  restore_columns(state, {{"t", &t_}, {"mode_amplitude", &mode_}});
 }
 
 void BeltramiCase::annotate(nlohmann::json& summary) const {

@@ -34,6 +34,9 @@ class BeltramiCase final : public Case<3> {
   std::string primary_error() const override { return "L1_velocity"; }
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // The series so far (run/case_state.hpp), so that a restart writes all of its rows and fits over them.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   double scale() const { return std::sqrt(ref_.A * ref_.A + ref_.B * ref_.B + ref_.C * ref_.C); }

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/io/atomic_file.hpp"
@@ -190,6 +191,16 @@ nlohmann::json CavityCase::final_errors(const nlohmann::json& errors) const {
     f["steady"] = steady;
   }
   return f;
+}
+
+nlohmann::json CavityCase::save_state() const {
+  return {{"ke_prev", encode_doubles({ke_prev_})}, {"t_prev", encode_doubles({t_prev_})}, {"line_prev", encode_doubles(line_prev_)}};
+}
+
+void CavityCase::restore_state(const nlohmann::json& state) {
+  ke_prev_ = state_double(state, "ke_prev");
+  t_prev_ = state_double(state, "t_prev");
+  line_prev_ = state_doubles(state, "line_prev");
 }
 
 void CavityCase::annotate(nlohmann::json& summary) const {

@@ -37,6 +37,10 @@ class CavityCase final : public Case<2> {
   void annotate(nlohmann::json& summary) const override;
   // centrelines.png: u(x = 0.5, y) and v(x, y = 0.5) at the last output against the Ghia points.
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // The previous output's kinetic energy, time and centre lines, which the rates after a restart
+  // compare with (run/case_state.hpp).
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   std::optional<GhiaTable> ghia_;

@@ -1,10 +1,15 @@
 #include "sphmol/cases/dam_break/dam_break_case.hpp"
 #include "sphmol/cases/dam_break/dam_break_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/time/fixed_point_norm.hpp"
@@ -115,6 +120,29 @@ nlohmann::json DamBreakCase::final_errors(const nlohmann::json& errors) const {
   f["t_impact"] = t_impact >= 0.0 ? nlohmann::json(t_impact) : nlohmann::json(nullptr);
   if (!errors.empty()) f["x_front"] = errors.back()["x_front"];
   return f;
+}
+
+nlohmann::json DamBreakCase::save_state() const {
+  // The rows as written (text already: exact); the penetrated particles by serial index.
+  return {{"front_csv", csv_},
+          {"wall_crossed", std::vector<std::uint64_t>(penetration_->crossed.begin(), penetration_->crossed.end())},
+          {"min_wall_gap", encode_doubles({penetration_->min_gap})}};
+}
+
+void DamBreakCase::restore_state(const nlohmann::json& state) {
+  if (!state.contains("front_csv") || !state["front_csv"].is_string() || state["front_csv"].get<std::string>().rfind(csv_, 0) != 0)
+    throw std::invalid_argument("front_csv: missing or not front.csv's rows");
+  if (!state.contains("wall_crossed") || !state["wall_crossed"].is_array())
+    throw std::invalid_argument("wall_crossed: missing or not a list of particle indices");
+  const double gap = state_double(state, "min_wall_gap");
+  const auto crossed = state["wall_crossed"].get<std::vector<std::uint64_t>>();
+  for (const std::uint64_t k : crossed)
+    if (k >= n_fluid0_) throw std::invalid_argument("wall_crossed: " + std::to_string(k) + " is not a fluid particle");
+  csv_ = state["front_csv"].get<std::string>();
+  // The monitor has already seen the restart's first evaluation: the union and the smaller gap.
+  penetration_->crossed.insert(crossed.begin(), crossed.end());
+  penetration_->count = static_cast<long>(penetration_->crossed.size());
+  penetration_->min_gap = std::min(penetration_->min_gap, gap);
 }
 
 void DamBreakCase::annotate(nlohmann::json& summary) const {

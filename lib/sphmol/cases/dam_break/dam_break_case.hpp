@@ -36,6 +36,9 @@ class DamBreakCase final : public Case<2> {
   std::string primary_error() const override { return "front_rms_martin_moyce"; }
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // front.csv's rows so far and the wall penetrations of the whole run (run/case_state.hpp).
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   double a_ = 0.0, H_ = 0.0, Lx_ = 0.0, t_end_ = 0.0, g_ = 0.0, dx_ = 0.0, mass0_ = 0.0;

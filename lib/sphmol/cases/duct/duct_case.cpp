@@ -12,6 +12,7 @@
 #include "sphmol/geometry/wall_layers.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "sphmol/rhs/assemble.hpp"
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/scenes/lattice_mass.hpp"
@@ -128,6 +129,14 @@ nlohmann::json DuctCase::measure_pieces(const SphSystem<3>& whole, const OwnedPi
   }
   const double rms = n > 0 ? std::sqrt(sum2 / n) : 0.0;
   return {{"t", t}, {"e_rms", rms / umax}, {"e_max", emax / umax}, {"e_cross", cross / umax}};
+}
+
+nlohmann::json DuctCase::save_state() const {
+  return {{"t", encode_doubles(t_)}, {"u_peak_sph", encode_doubles(peak_sph_)}, {"u_peak_exact", encode_doubles(peak_exact_)}};
+}
+
+void DuctCase::restore_state(const nlohmann::json& state) {
+  restore_columns(state, {{"t", &t_}, {"u_peak_sph", &peak_sph_}, {"u_peak_exact", &peak_exact_}});
 }
 
 void DuctCase::annotate(nlohmann::json& summary) const {

@@ -31,6 +31,9 @@ class DuctCase final : public Case<3> {
   nlohmann::json measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t, const OutputSink& out) override;
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // The peak series so far (run/case_state.hpp), so that a restart writes all of its rows.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   DuctSeries ref_{1.0, 1.0, 1.0, 0.0};

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "sphmol/run/gathered_rows.hpp"
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/analysis/drift_monitor.hpp"
@@ -182,6 +183,17 @@ std::vector<PlotScript> HydrostaticCase<D>::plots(const OutputSink& out) const {
     << "plot '" << file << "' using (H - $1):2 with points pt 7 ps 0.4 title 'SPH particles', \\\n"
     << "  rho0g * x with lines lw 2 title 'rho0 g depth'\n";
   return {{"pressure_depth.png", s.str()}};
+}
+
+template <int D>
+nlohmann::json HydrostaticCase<D>::save_state() const {
+  return {{"max_drift", encode_doubles({*drift_})}};
+}
+
+template <int D>
+void HydrostaticCase<D>::restore_state(const nlohmann::json& state) {
+  // The monitor has already seen the restart's first evaluation: the larger of the two.
+  *drift_ = std::max(*drift_, state_double(state, "max_drift"));
 }
 
 template class HydrostaticCase<2>;

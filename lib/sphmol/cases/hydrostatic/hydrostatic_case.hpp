@@ -33,6 +33,9 @@ class HydrostaticCase final : public Case<D> {
   std::string primary_error() const override { return "p_rms"; }
   void annotate(nlohmann::json& summary) const override;
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // max_drift is over the whole run: carried through checkpoints (run/case_state.hpp).
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   double rho0_ = 0.0, g_ = 0.0, depth_ = 0.0, spacing_ = 0.0, settle_ = 0.0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sphmol/core/least_squares.hpp"
+#include "sphmol/run/case_state.hpp"
 #include "sphmol/run/gnuplot_preamble.hpp"
 #include "sphmol/run/piece_reduction.hpp"
 #include "sphmol/io/atomic_file.hpp"
@@ -127,6 +128,14 @@ nlohmann::json TaylorGreenCase::final_errors(const nlohmann::json& errors) const
     f["decay_rate"] = nullptr;  // fewer than two output times in the window (or a mode that lost its sign): no fit
   }
   return f;
+}
+
+nlohmann::json TaylorGreenCase::save_state() const {
+  return {{"t", encode_doubles(t_)}, {"maxv", encode_doubles(vmax_)}, {"mode_amplitude", encode_doubles(mode_)}};
+}
+
+void TaylorGreenCase::restore_state(const nlohmann::json& state) {
+  restore_columns(state, {{"t", &t_}, {"maxv", &vmax_}, {"mode_amplitude", &mode_}});
 }
 
 void TaylorGreenCase::annotate(nlohmann::json& summary) const {

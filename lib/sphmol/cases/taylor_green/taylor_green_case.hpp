@@ -32,6 +32,9 @@ class TaylorGreenCase final : public Case<2> {
   void annotate(nlohmann::json& summary) const override;
   // decay.png: max|v| of the particles at the output times against U e^{bt} (log scale).
   std::vector<PlotScript> plots(const OutputSink& out) const override;
+  // The series so far (run/case_state.hpp), so that a restart writes all of its rows and fits over them.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   TaylorGreenVortex ref_;
