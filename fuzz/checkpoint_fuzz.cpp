@@ -45,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string again = sphmol::write_checkpoint((scratch() / "out").string(), cp, cp.config_yaml, written);
   const sphmol::Checkpoint back = sphmol::read_checkpoint(again);
   if (!same_bits(back.t, cp.t) || back.y.size() != cp.y.size() || back.case_name != cp.case_name ||
-      back.integrator_state != cp.integrator_state || back.errors != cp.errors || back.config_yaml != cp.config_yaml)
+      back.integrator_state != cp.integrator_state || back.errors != cp.errors || back.case_state != cp.case_state ||
+      back.config_yaml != cp.config_yaml)
     std::abort();
   for (std::size_t k = 0; k < cp.y.size(); ++k)
     if (!same_bits(back.y[k], cp.y[k])) std::abort();
