@@ -4,12 +4,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace run_helpers {
 
@@ -49,6 +51,25 @@ inline nlohmann::json json_file(const fs::path& p) { return nlohmann::json::pars
 inline std::string couette(const std::string& extra) {
   return "--config '" + std::string(SPHMOL_SOURCE_DIR) +
          "/verification/couette.yaml' --set discretization.particles_across=20 --set output.plots=false -q " + extra;
+}
+
+// Starts sph-mol with `args` (already split) without waiting, stderr to `err`; returns its pid (for
+// tests that signal a running process).
+inline pid_t spawn(const std::vector<std::string>& args, const fs::path& err) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    std::string bin = SPHMOL_BINARY;
+    argv.push_back(bin.data());
+    std::vector<std::string> copy = args;
+    for (auto& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::freopen(err.c_str(), "w", stderr);
+    std::freopen("/dev/null", "w", stdout);
+    ::execv(SPHMOL_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return pid;
 }
 
 }  // namespace run_helpers

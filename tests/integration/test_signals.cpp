@@ -14,26 +14,6 @@
 
 using namespace run_helpers;
 
-namespace {
-// Starts sph-mol with `args` (already split), returns its pid.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    std::string bin = SPHMOL_BINARY;
-    argv.push_back(bin.data());
-    std::vector<std::string> copy = args;
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::freopen(err.c_str(), "w", stderr);
-    std::freopen("/dev/null", "w", stdout);
-    ::execv(SPHMOL_BINARY, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-}  // namespace
-
 TEST_CASE("signals: interrupted run writes checkpoint + summary and restarts exactly", "[signals][integration]") {
   for (const auto& [sig, integrator] : std::vector<std::pair<int, std::string>>{
            {SIGTERM, "leapfrog"}, {SIGINT, "leapfrog"}, {SIGTERM, "leapfrog_kdk"}}) {
