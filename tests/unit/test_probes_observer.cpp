@@ -252,3 +252,29 @@ TEST_CASE("probe observer: a plane in 3D writes every grid point with its coordi
   // p is linear in z and the particles within the support (0.1 m) lie symmetrically about z = 0.1.
   for (int r = 1; r <= 6; ++r) CHECK(std::stod(cells(rows[r])[4]) == Approx(kRho0 * kG * (top - 0.1)).epsilon(1e-6));
 }
+
+TEST_CASE("probe observer: a height gauge beside a wall reads the surface", "[probes][observer]") {
+  // On the left wall's face (x = 0), half a spacing and one spacing from it, and mid-tank: the fluid
+  // fills only the part of the support the wall leaves open, so the plain kernel sum read empty on
+  // the face and low beside it.
+  Fixture f;
+  f.c.probes.clear();
+  std::vector<double> reads;
+  for (const double x : {0.0, 0.5 * kDx, kDx, 2.0 * kDx, 0.5 * kW}) {
+    auto g = probe("g" + std::to_string(f.c.probes.size()), "height_gauge");
+    g.at = {x};
+    f.c.probes.push_back(g);
+  }
+  TempDir dir;
+  OutputSink out{dir.path.string(), true};
+  ProbeObserver<2> obs(f.c, *f.sys);
+  obs.on_sample = [&](const std::string&, double, const std::vector<double>& v) { reads.push_back(v.at(0)); };
+  obs.at_output(*f.sys, f.y.data(), 0.0, out);
+  REQUIRE(reads.size() == 5u);
+  for (const double r : reads) {
+    INFO(r);
+    CHECK(r == Approx(kH).margin(0.5 * kDx));
+  }
+  // The wall's face and mid-tank read alike, to a fraction of a spacing.
+  CHECK(reads[0] == Approx(reads[4]).margin(0.25 * kDx));
+}

@@ -1,13 +1,16 @@
 #pragma once
 // Free-surface height along a vertical line: the highest point where the kernel sum of the fluid
-// (FluidSampler::kernel_sum, ~1 inside the fluid, 0 outside) is at least 1/2, the level a free
+// (FluidSampler::kernel_sum, ~1 inside the fluid, 0 outside; beside walls over the part of the
+// support they leave open, open_support_sum below) is at least 1/2, the level a free
 // surface sits at for a symmetric kernel, found by scanning the line upwards in steps of `step` and
 // interpolating the crossing linearly (the gauges of DualSPHysics work the same way; Crespo et al.
 // 2015). The vertical is the last axis: y in 2D, z in 3D.
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "sphmol/core/particles.hpp"
 #include "sphmol/probes/fluid_sampler.hpp"
 
 namespace sphmol {
@@ -33,6 +36,42 @@ inline double surface_height(const std::vector<double>& z, const std::vector<dou
   }
   if (prev >= level) found = z_prev;  // still in the fluid at the top of the line
   return found;
+}
+
+// The fluid's kernel sum over the part of the support that walls leave open: sum / (1 - walls), with
+// `walls` the kernel sum of the wall particles (their volumes m / rho). Beside a wall the fluid fills
+// only the open part of the support, so the plain sum falls short of 1 in the water (about 1/2 on
+// the wall's face) and the gauge read low or empty there; in open water it is the plain sum. Where
+// walls fill more than 3/4 of the support (a point inside a wall) there is no fluid to read: 0.
+inline double open_support_sum(double fluid, double walls) {
+  const double open = 1.0 - walls;
+  return open > 0.25 ? fluid / open : 0.0;
+}
+
+// The wall particles' kernel sums at the heights z of the line at `at` (vertical coordinate
+// ignored), with the walls where they are at t (moving bodies follow their motions).
+template <int D>
+std::vector<double> wall_sums_on_line(const Particles<D>& walls, double t, geometry::Vec<D> at, const std::vector<double>& z,
+                                      double (*W)(double, double), double h, double support, const Domain<D>& domain) {
+  std::vector<double> sum(z.size(), 0.0);
+  const std::size_t n = walls.size();
+  if (n == 0) return sum;
+  std::array<std::vector<double>, D> x;
+  std::vector<double> volume(n);
+  const auto frames = walls.motion_frames(t);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto s = walls.wall_state(j, frames, t);
+    for (int d = 0; d < D; ++d) x[d].push_back(s.x[d]);
+    volume[j] = walls.mass[j] / walls.rho[j];
+  }
+  std::array<const double*, D> xp{};
+  for (int d = 0; d < D; ++d) xp[d] = x[d].data();
+  const PointBins<D> bins(xp, n, support * h, domain);
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    at[D - 1] = z[k];
+    bins.for_each_near(at, [&](std::size_t j, double r, const auto&) { sum[k] += volume[j] * W(r, h); });
+  }
+  return sum;
 }
 
 // `at`: the line's position (its vertical coordinate is ignored); [bottom, top]: the scanned range.

@@ -165,12 +165,17 @@ ProbeObserver<D>::ProbeObserver(const Config& config, const OwnedPiece<D>& start
       if (!c.range.empty() && (c.range[1] < lo[D - 1] || c.range[0] > hi[D - 1]))
         throw ConfigError(c.where + ": the gauge's range [" + cell(c.range[0]) + ", " + cell(c.range[1]) +
                           "] lies outside the scene, whose particles (widened by the kernel support) span " + box_text());
+      // Every wall particle, to read the fluid's sum over the open part of the support (height_gauge.hpp).
+      const auto known = std::find_if(walls_.begin(), walls_.end(), [](const BodyWalls<D>& w) { return w.body == kEveryWall; });
+      s.walls = static_cast<std::size_t>(known - walls_.begin());
+      if (known == walls_.end()) walls_.push_back(gather_body_walls<D>(start, kEveryWall));
       s.bottom = c.range.empty() ? lo[D - 1] : c.range[0];
       s.top = c.range.empty() ? hi[D - 1] : c.range[1];
       head << "," << (D == 2 ? "y" : "z") << "_surface [m]";
       s.description = "probe " + c.name + ": free-surface height on the vertical line " + (D == 2 ? "x = " + cell(at[0]) : "(x, y) = (" + cell(at[0]) + ", " + cell(at[1]) + ")") +
                       ": the highest point between " + cell(s.bottom) + " and " + cell(s.top) +
-                      " m where the kernel sum of the fluid is 1/2 (scanned in steps of h/4), " + when +
+                      " m where the kernel sum of the fluid over the part of the support outside walls is 1/2 (scanned in "
+                      "steps of h/4), " + when +
                       "; empty: no fluid on the line";
     } else {  // force
       std::uint64_t mine = 0;
@@ -282,7 +287,15 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
             for (int d = 0; d < D; ++d) values.push_back(fluid.interpolate(x, vf[d]));
         }
     } else if (c.type == "height_gauge") {
-      values.push_back(free_surface_height<D>(fluid, gauge_line(s), s.bottom, s.top, 0.25 * h_));
+      const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
+      const std::vector<double> walls = wall_sums_on_line<D>(walls_[s.walls].walls, t, gauge_line(s), z, W_, h_, support_, sys.domain());
+      std::vector<double> sum(z.size());
+      geometry::Vec<D> at = gauge_line(s);
+      for (std::size_t q = 0; q < z.size(); ++q) {
+        at[D - 1] = z[q];
+        sum[q] = open_support_sum(fluid.kernel_sum(at), walls[q]);
+      }
+      values.push_back(surface_height(z, sum));
     } else {
       // Every particle as the RHS sees it: the fluid from the state, the walls at time t (position,
       // velocity and normal: a wall that follows a motion carries its velocity at t, not its
@@ -529,6 +542,8 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
       const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
       std::vector<double> sum(z.size(), 0.0);
       for (const std::size_t e : order) sum[T.keys[e].a] += T.values[e];
+      const std::vector<double> walls = wall_sums_on_line<D>(walls_[s.walls].walls, t, gauge_line(s), z, W_, h_, support_, whole.domain());
+      for (std::size_t q = 0; q < z.size(); ++q) sum[q] = open_support_sum(sum[q], walls[q]);
       values.push_back(surface_height(z, sum));
     } else {
       std::array<double, D> force{};

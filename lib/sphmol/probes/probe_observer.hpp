@@ -76,7 +76,7 @@ class ProbeObserver final : public OutputObserver<D> {
     std::string header, rows, description;
     long next_k = 0;                       // `every` probes: index of the next sample time k * every
     bool dirty = false;                    // rows not yet in the file
-    std::size_t walls = 0;                 // force: the body's entry in walls_
+    std::size_t walls = 0;                 // force: the body's entry in walls_; height gauge: every wall's
   };
   double sample_time(const Series& s, long k) const;
   // The `every` series with a sample time at t (within round-off), moved past it.
@@ -93,7 +93,8 @@ class ProbeObserver final : public OutputObserver<D> {
   void flush(const OutputSink& out);
 
   std::vector<Series> series_;
-  // The walls of each probed body, copied at construction: over ranks the force probes read these,
+  // The walls of each probed body (and every wall, for the height gauges), copied at construction:
+  // over ranks the probes read these,
   // and no per-particle array of the whole scene, which the ranks other than 0 drop after the set-up.
   std::vector<BodyWalls<D>> walls_;
   std::vector<double> output_times_;

@@ -124,13 +124,15 @@ BodyWalls<D> body_walls(const Particles<D>& P, int body) {
 // The same from the particles the ranks start a run with (run/start_piece.hpp), collective over its
 // ranks: each rank's walls of the body, joined on every rank in global-id order (a rank building its
 // share of the scene alone holds no other; one rank: body_walls of the whole scene).
+// `body` kEveryWall: every wall particle, the domain's and every body's (the height gauges' walls).
+inline constexpr int kEveryWall = -2;
 template <int D>
 BodyWalls<D> gather_body_walls(const OwnedPiece<D>& start, int body) {
   const Particles<D>& P = start.system->particles();
   std::vector<std::size_t> rows;
   std::vector<std::uint64_t> ids;
   for (std::size_t k = 0; k < start.wall_rows.size(); ++k)
-    if (P.body[start.wall_rows[k]] == body) {
+    if (body == kEveryWall || P.body[start.wall_rows[k]] == body) {
       rows.push_back(start.wall_rows[k]);
       ids.push_back(static_cast<std::uint64_t>(start.wall_ids[k]));
     }
