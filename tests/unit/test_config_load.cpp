@@ -226,6 +226,21 @@ TEST_CASE("config: to_yaml round-trips through load_config_string", "[config]") 
     CHECK(b.discretization.spacing == 3.3333333333333335e-05);
     CHECK(b.time.t_end == 0.30000000000000004);
   }
+  SECTION("control characters and line separators in the source and the directory") {
+    // A newline, CR, tab, escape, NEL (U+0085) and LINE SEPARATOR (U+2028) in a path: the comment
+    // naming the source stays one line, and the directory keeps every character.
+    const std::string odd = "cfg\ndir\r\t\x1b\xc2\x85\xe2\x80\xa8x";
+    const Config a = load_config_string(base, {"output.directory=\"nl\\nx\\u2028y\""}, odd + "/c.yaml");
+    REQUIRE(a.output.directory == "nl\nx\xe2\x80\xa8y");
+    const std::string y = to_yaml(a);
+    CHECK_THAT(y, StartsWith("# Resolved sph-mol configuration (from cfg\\ndir\\r\\t\\x1b\\u0085\\u2028x/c.yaml); all defaults"));
+    CHECK(y.find('\r') == std::string::npos);
+    const Config b = load_config_string(y, {}, "config.yaml");
+    require_same(a, b);
+    CHECK(b.output.directory == a.output.directory);
+    // The reloaded config names its own file, and writes back the same text but for that name.
+    CHECK(to_yaml(b).substr(to_yaml(b).find('\n')) == y.substr(y.find('\n')));
+  }
 }
 
 TEST_CASE("config: transport velocity and position noise of the shipped Taylor-Green file round-trip", "[config]") {

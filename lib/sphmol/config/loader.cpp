@@ -32,14 +32,6 @@ std::string trim(std::string s) {
   return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
 }
 
-YAML::Node parse_yaml(const std::string& text, const std::string& name) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw ConfigError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
-}
-
 // Applies "a.b.c=value" to the tree, creating missing sections; records the origin so that
 // errors about the value name the override. Unknown paths are caught by validation, which
 // then points at this override.

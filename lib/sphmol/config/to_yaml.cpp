@@ -27,7 +27,8 @@ std::string to_yaml(const Config& c) {
   const auto& d = c.discretization;
   const auto& t = c.time;
   const auto& o = c.output;
-  y << "# Resolved sph-mol configuration" << (c.source.empty() ? "" : " (from " + c.source + ")")
+  // The path escaped: a newline in it would end the comment and break the file.
+  y << "# Resolved sph-mol configuration" << (c.source.empty() ? "" : " (from " + yaml_comment_text(c.source) + ")")
     << "; all defaults filled in.\n";
   y << "case: " << c.case_name << "\n";
   y << "dimension: " << c.dimension << "\n";

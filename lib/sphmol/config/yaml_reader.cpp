@@ -83,6 +83,43 @@ std::string yaml_quoted(const std::string& s) {
   return e.c_str();
 }
 
+std::string yaml_comment_text(const std::string& s) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const auto next = i + 1 < s.size() ? static_cast<unsigned char>(s[i + 1]) : 0u;
+    const auto next2 = i + 2 < s.size() ? static_cast<unsigned char>(s[i + 2]) : 0u;
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    } else if (c == 0xc2 && next >= 0x80 && next <= 0x9f) {  // U+0080..U+009F (NEL is U+0085)
+      out += std::string("\\u00") + hex[next >> 4] + hex[next & 15];
+      ++i;
+    } else if (c == 0xe2 && next == 0x80 && (next2 == 0xa8 || next2 == 0xa9)) {  // U+2028, U+2029
+      out += next2 == 0xa8 ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& name) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ConfigError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+}
+
 std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) const {
   // The longest overridden prefix of `path` owns the value.
   const std::string* best = nullptr;

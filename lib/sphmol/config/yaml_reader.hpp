@@ -26,6 +26,13 @@ std::string number_text(double v);
 // resolved YAML file (config/to_yaml.cpp and the case modules' sections).
 std::string yaml_list(const std::vector<double>& v);
 std::string yaml_quoted(const std::string& s);
+// Free text for a YAML comment (a path in the resolved file's first line): control characters, and
+// the C1 controls and Unicode line separators a YAML reader may take for a line break, written as
+// escapes (\n, \t, \xHH, \uHHHH), so the comment stays one line and the file loads back.
+std::string yaml_comment_text(const std::string& s);
+
+// YAML::Load of `text`; a syntax error is a ConfigError "NAME:LINE: YAML syntax error: ...".
+YAML::Node parse_yaml(const std::string& text, const std::string& name);
 
 // Where the YAML tree came from: the file name, and which key paths were replaced by overrides.
 class YamlOrigin {

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <utility>
 
+#include "sphmol/config/yaml_reader.hpp"
+
 namespace sphmol {
 
 namespace {
@@ -25,9 +27,11 @@ void flatten(const YAML::Node& node, const std::string& prefix, Flat& out) {
   out.emplace_back(prefix, e.c_str());
 }
 
+// to_yaml always loads back; should it ever not, the restart is refused as bad input (a config
+// error naming the config and the line), not a failed run.
 Flat flat_config(const Config& c) {
   Flat out;
-  flatten(YAML::Load(to_yaml(c)), "", out);
+  flatten(parse_yaml(to_yaml(c), "the resolved config of " + (c.source.empty() ? std::string("--set values") : c.source)), "", out);
   return out;
 }
 
