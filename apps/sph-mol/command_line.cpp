@@ -3,9 +3,16 @@
 #include <filesystem>
 #include <string>
 
+#include "sphmol/io/links.hpp"
 #include "sphmol/run/openmp_wait_policy.hpp"
 
 namespace sphmol::app {
+
+std::optional<std::string> output_option_problem(const std::string& output) {
+  // An empty name would write into the current directory's root files.
+  if (output.empty()) return "empty folder name";
+  return final_link_message(output);
+}
 
 void add_run_options(CLI::App& app, RunCommand& cmd) {
   app.add_option("--restart", cmd.restart,
@@ -55,6 +62,12 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const
 
 std::optional<Config> resolve_run_config(const CLI::App& app, const RunCommand& cmd, std::ostream& err) {
   std::string path = cmd.config_path;
+  // Given, even empty: an empty --output is not "no --output" (the config's folder would be used).
+  if (app.get_option("--output")->count() > 0)
+    if (const auto problem = output_option_problem(cmd.output)) {
+      err << "sph-mol: --output: " << *problem << '\n';
+      return std::nullopt;
+    }
   if (cmd.force_physics_change && cmd.restart.empty()) {
     err << "sph-mol: --force-physics-change only applies to --restart\n";
     return std::nullopt;
@@ -63,6 +76,10 @@ std::optional<Config> resolve_run_config(const CLI::App& app, const RunCommand& 
     if (!cmd.config_path.empty()) {
       err << "sph-mol: --restart takes the config from the checkpoint; do not give --config too "
              "(change values with --set)\n";
+      return std::nullopt;
+    }
+    if (const auto link = final_link_message(cmd.restart)) {
+      err << "sph-mol: restart error: --restart " << *link << '\n';
       return std::nullopt;
     }
     path = (std::filesystem::path(cmd.restart) / "config.yaml").string();

@@ -25,6 +25,11 @@ struct RunCommand {
   double rebalance_threshold = 1.2;
 };
 
+// What is wrong with an --output given on the command line ("empty folder name", or that it is a
+// symbolic link, io/links.hpp), or nullopt. Shared by the run command and the study subcommands, so
+// both refuse the same names before any work; the output folder checks the link again when claimed.
+std::optional<std::string> output_option_problem(const std::string& output);
+
 // Declares the run command's options on the top-level app.
 void add_run_options(CLI::App& app, RunCommand& cmd);
 

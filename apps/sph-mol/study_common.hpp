@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "sphmol/config/config.hpp"
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/studies/integrator_spec.hpp"
@@ -55,10 +56,11 @@ inline bool coarse_to_fine_ok(const char* who, const std::string& option, const 
   return true;
 }
 
-// An output folder must be named (an empty name would write into the current directory's root files).
+// The same --output checks as the run command's (command_line.hpp).
 inline bool output_option_ok(const char* who, const std::string& output) {
-  if (!output.empty()) return true;
-  bad_option(who, "--output", "empty folder name");
+  const auto problem = output_option_problem(output);
+  if (!problem) return true;
+  bad_option(who, "--output", *problem);
   return false;
 }
 

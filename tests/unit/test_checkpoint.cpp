@@ -218,3 +218,22 @@ TEST_CASE("case_state helpers name the key of a malformed entry and restore colu
   CHECK_THROWS_WITH(state_double(state, "t"), "t: 2 values, expected 1");
   CHECK(state_double(state, "short") == 1.0);
 }
+
+TEST_CASE("checkpoints are neither written into nor read from a folder that is a symbolic link", "[checkpoint]") {
+  const fs::path dir = test_support::fresh_dir("checkpoint-links");
+  fs::create_directories(dir / "victim");
+  fs::create_symlink("victim", dir / "link");
+  std::vector<std::string> written;
+  for (const std::string name : {"link", "link/", "link/."})
+    CHECK_THROWS_WITH(write_checkpoint((dir / name).string(), sample(0.5), "case: couette\n", written),
+                      Catch::Matchers::Contains((dir / name).string() + " is a symbolic link to " + (dir / "victim").string()));
+  CHECK(fs::is_empty(dir / "victim"));
+
+  // A checkpoint folder reached through a link of that name is refused; one below a linked folder
+  // (a link higher up the path) is read.
+  write_checkpoint((dir / "victim").string(), sample(0.5), "case: couette\n", written);
+  fs::create_symlink("victim/checkpoint-0.5", dir / "checkpoint-link");
+  CHECK_THAT(error_of(dir / "checkpoint-link"), Catch::Matchers::Contains("checkpoint-link is a symbolic link to " +
+                                                                           (dir / "victim" / "checkpoint-0.5").string()));
+  CHECK(error_of(dir / "link" / "checkpoint-0.5") == "<no error>");
+}

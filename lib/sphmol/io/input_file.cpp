@@ -17,10 +17,19 @@ std::string format_bytes(std::uintmax_t bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
-std::string read_input_file(const std::string& path, std::uintmax_t max_bytes, const std::string& what) {
+std::string read_input_file(const std::string& path, std::uintmax_t max_bytes, const std::string& what,
+                            InputLinks links) {
   // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) throw InputFileError(path + ": cannot open " + what + ": " + std::strerror(errno));
+  const int nofollow = links == InputLinks::refuse ? O_NOFOLLOW : 0;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | nofollow);
+  if (fd < 0) {
+    const int err = errno;
+    struct stat lst {};
+    // O_NOFOLLOW fails with ELOOP on a link: say so rather than "too many levels of symbolic links".
+    if (nofollow && err == ELOOP && ::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode))
+      throw InputFileError(path + ": a symbolic link; a " + what + " is never read through a link");
+    throw InputFileError(path + ": cannot open " + what + ": " + std::strerror(err));
+  }
   struct FdCloser {
     int fd;
     ~FdCloser() { ::close(fd); }

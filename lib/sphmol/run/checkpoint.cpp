@@ -16,6 +16,7 @@
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/io/input_file.hpp"
+#include "sphmol/io/links.hpp"
 
 namespace sphmol {
 
@@ -76,6 +77,9 @@ std::string checkpoint_name(double t) {
 
 std::string write_checkpoint(const std::string& directory, const Checkpoint& cp, const std::string& config_yaml,
                              std::vector<std::string>& written) {
+  // weakly_canonical resolves links: the run's folder was refused as a link when claimed
+  // (run/output_folder.hpp), so one here was put in its place since; links higher up are layout.
+  if (const auto link = final_link_message(directory)) throw std::runtime_error("cannot write a checkpoint: " + *link);
   const fs::path dir = fs::weakly_canonical(fs::absolute(directory));
   const std::string name = checkpoint_name(cp.t);
   const fs::path final_dir = dir / name;
@@ -131,6 +135,8 @@ std::string write_checkpoint(const std::string& directory, const Checkpoint& cp,
 }
 
 Checkpoint read_checkpoint(const std::string& checkpoint_dir) {
+  // A linked checkpoint folder would also make the run continue in the link's folder, not the run's.
+  if (const auto link = final_link_message(checkpoint_dir)) throw CheckpointError("--restart " + *link);
   const fs::path file = fs::path(checkpoint_dir) / "checkpoint.json";
   const std::string where = file.string() + ": ";
   std::string text;

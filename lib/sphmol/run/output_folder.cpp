@@ -8,10 +8,11 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
+
+#include "sphmol/io/input_file.hpp"
+#include "sphmol/io/links.hpp"
 
 namespace sphmol {
 
@@ -25,14 +26,18 @@ bool plain_name(const std::string& name) {
          name.find('\0') == std::string::npos && name != kOutputLockFile;
 }
 
+// A run's summary lists its files and measurements: megabytes at most. The cap keeps a planted
+// /dev/zero-like or huge file from exhausting memory.
+constexpr std::uintmax_t kMaxSummaryBytes = std::uintmax_t{64} << 20;
+
 // The files of the run whose summary.json is in `dir` (the summary lists them under "files"; it and
-// the resolved config.yaml are always that run's).
+// the resolved config.yaml are always that run's). The summary is read as an input file: a FIFO
+// would block for ever with the folder locked, and a link is refused (a run writes a plain file).
+// Throws InputFileError.
 std::set<std::string> files_of_previous_run(const fs::path& summary) {
   std::set<std::string> names{"summary.json", "config.yaml"};
-  std::ifstream in(summary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  const std::string text = read_input_file(summary.string(), kMaxSummaryBytes, "run summary", InputLinks::refuse);
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_object() && j.contains("files") && j["files"].is_array())
     for (const auto& f : j["files"])
       if (f.is_string() && plain_name(f.get<std::string>())) names.insert(f.get<std::string>());
@@ -42,6 +47,8 @@ std::set<std::string> files_of_previous_run(const fs::path& summary) {
 }  // namespace
 
 OutputFolder::OutputFolder(const std::string& directory, Options options) : directory_(directory) {
+  // Before anything is created: a link under the folder's name would receive every file.
+  if (const auto link = final_link_message(directory)) throw OutputFolderError("output directory " + *link);
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec || !fs::is_directory(directory))
@@ -60,24 +67,29 @@ OutputFolder::OutputFolder(const std::string& directory, Options options) : dire
                                                      ": another sph-mol run is writing there (choose another --output)"
                                                : "output directory " + directory + ": cannot lock it: " + std::strerror(err));
   }
-  const fs::path summary = fs::path(directory) / "summary.json";
-  if (options.lock_only || options.continuing || !fs::exists(fs::symlink_status(summary))) return;
-  if (!options.overwrite) {
+  const auto refuse = [this](const std::string& message) {
     ::close(lock_fd_);
     lock_fd_ = -1;
-    throw OutputFolderError("output directory " + directory +
-                            " holds the results of another run (summary.json); choose another --output, or give "
-                            "--overwrite to delete that run's files first");
+    return OutputFolderError(message);
+  };
+  const fs::path summary = fs::path(directory) / "summary.json";
+  if (options.lock_only || options.continuing || !fs::exists(fs::symlink_status(summary))) return;
+  if (!options.overwrite)
+    throw refuse("output directory " + directory +
+                 " holds the results of another run (summary.json); choose another --output, or give "
+                 "--overwrite to delete that run's files first");
+  std::set<std::string> previous;
+  try {
+    previous = files_of_previous_run(summary);
+  } catch (const InputFileError& e) {
+    throw refuse("output directory " + directory + ": --overwrite reads the earlier run's summary.json to know its files: " +
+                 e.what() + "; remove it or choose another --output");
   }
-  for (const std::string& name : files_of_previous_run(summary)) {
+  for (const std::string& name : previous) {
     const fs::path p = fs::path(directory) / name;
     // remove_all deletes a link itself, never what it points to.
     fs::remove_all(p, ec);
-    if (ec) {
-      ::close(lock_fd_);
-      lock_fd_ = -1;
-      throw OutputFolderError("output directory " + directory + ": --overwrite cannot delete " + name + ": " + ec.message());
-    }
+    if (ec) throw refuse("output directory " + directory + ": --overwrite cannot delete " + name + ": " + ec.message());
   }
 }
 

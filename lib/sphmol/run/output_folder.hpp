@@ -5,7 +5,9 @@
 // - a folder that holds another run's summary.json is refused unless `overwrite`, which first deletes
 //   exactly the files that run listed in its summary (nothing else in the folder is touched);
 // - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left;
-// - `lock_only` takes the lock and leaves the folder's contents alone.
+// - `lock_only` takes the lock and leaves the folder's contents alone;
+// - a folder whose own name is a symbolic link is refused (io/links.hpp), and so is a summary.json
+//   that is a link, a FIFO, a device or larger than a summary can be.
 #include <stdexcept>
 #include <string>
 
