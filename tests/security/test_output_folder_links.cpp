@@ -1,9 +1,9 @@
 // The output folder and what --overwrite reads from it: a summary.json that is a FIFO, a device, a
 // link or huge is refused before it is read (the folder lock is not held for ever); an output
 // folder or a --restart checkpoint folder whose own name is a symbolic link is refused, naming the
-// link and its target, for the run command and the studies alike (links higher up the path are
-// layout and pass); an empty --output is refused; newlines in the config and output paths leave a
-// config.yaml that a restart loads. The runs are tiny (Couette, 10 particles across, t_end 2 ms).
+// link and its target, for the run command, the studies and `kernels` alike (links higher up the
+// path are layout and pass); an empty --output is refused; newlines in the config and output paths
+// leave a config.yaml that a restart loads. The runs are tiny (Couette, 10 particles across).
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>
@@ -76,7 +76,7 @@ TEST_CASE("overwrite: a summary.json that is a FIFO or a device or a link or hug
   }
 }
 
-TEST_CASE("an output folder that is a symbolic link is refused, naming its target (exit 2)", "[security][output]") {
+TEST_CASE("an output folder that is a symbolic link is refused and its target named (exit 2)", "[security][output]") {
   const fs::path dir = test_support::fresh_dir("output-link");
   fs::create_directories(dir / "victim");
   fs::create_symlink("victim", dir / "lnout");
@@ -103,6 +103,13 @@ TEST_CASE("an output folder that is a symbolic link is refused, naming its targe
         CHECK(fs::is_empty(dir / "victim"));
       }
     }
+  SECTION("kernels --analysis hydrostatic --output") {
+    const auto r = sph_mol({"kernels", "--analysis", "hydrostatic", "--kernel", "cubic_spline", "--output", (dir / "lnout").string()}, dir);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("sph-mol kernels: --output: " + (dir / "lnout").string() + " is a symbolic link to " + target));
+    CHECK(fs::is_empty(dir / "victim"));
+  }
   SECTION("output.directory of the config, claimed after the scene is built") {
     const auto r = sph_mol(tiny_run({"--set", "output.directory=\"" + (dir / "lnout").string() + "\""}), dir);
     INFO(r.err);
