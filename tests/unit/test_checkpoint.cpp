@@ -183,7 +183,7 @@ TEST_CASE("read_checkpoint refuses a checkpoint.json that is not a regular file"
   CHECK_THAT(error_of(dir / "checkpoint-1"), Catch::Matchers::Contains("not a regular file"));
 }
 
-TEST_CASE("checkpoint carries the case's state; one written without it reads back as none", "[checkpoint]") {
+TEST_CASE("checkpoint carries the case's state and one written without it reads back as none", "[checkpoint]") {
   const fs::path dir = test_support::fresh_dir("case-state");
   std::vector<std::string> written;
   Checkpoint cp = sample(0.05);
