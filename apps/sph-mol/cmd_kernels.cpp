@@ -19,7 +19,7 @@
 #include "sphmol/analysis/particle_sets.hpp"
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/kernels/registry.hpp"
-#include "command_line.hpp"
+#include "study_common.hpp"
 #include "subcommand.hpp"
 
 namespace {
@@ -211,11 +211,7 @@ int run() {
       }
     }
     // Empty: the tables are printed only. A named folder gets the other commands' checks (a link).
-    if (!opt.output.empty())
-      if (const auto problem = sphmol::app::output_option_problem(opt.output)) {
-        std::cerr << "sph-mol kernels: --output: " << *problem << "\n";
-        return 2;
-      }
+    if (!opt.output.empty() && !sphmol::app::output_option_ok("kernels", opt.output)) return 2;
     return run_hydrostatic();
   }
   if (!opt.analysis.empty() && opt.analysis != "catalogue") {

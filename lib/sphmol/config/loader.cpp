@@ -78,13 +78,14 @@ void apply_override(YAML::Node& root, const std::string& text, YamlOrigin& origi
   origin.add_override(path, text);
 }
 
+// The kernel's support radius in units of h.
 template <int D>
-void check_kernel(const MapReader& r, const std::string& name) {
+double check_kernel(const MapReader& r, const std::string& name) {
   std::vector<std::string> names;
   for (auto n : kernel_names<D>()) names.emplace_back(n);
   r.choice("kernel", name, names);
   try {
-    (void)kernel_info<D>(name);  // rejects kernels their source does not define in D
+    return kernel_info<D>(name).support;  // rejects kernels their source does not define in D
   } catch (const std::invalid_argument& e) {
     r.fail("kernel", e.what());
   }
@@ -350,25 +351,18 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       d.spacing = *dx;
     }  // else the case derives the spacing from its geometry (after its reader, below)
     if (const auto k = disc.string("kernel")) d.kernel = *k;
-    switch (c.dimension) {
-      case 1: check_kernel<1>(disc, d.kernel); break;
-      case 2: check_kernel<2>(disc, d.kernel); break;
-      default: check_kernel<3>(disc, d.kernel); break;
-    }
+    const double support = c.dimension == 1   ? check_kernel<1>(disc, d.kernel)
+                           : c.dimension == 2 ? check_kernel<2>(disc, d.kernel)
+                                              : check_kernel<3>(disc, d.kernel);
     if (const auto v = disc.real("smoothing_ratio")) d.smoothing_ratio = *v;
     disc.check("smoothing_ratio", d.smoothing_ratio > 0, d.smoothing_ratio, "> 0 (h / dx)");
-    {
-      // A support that does not reach the nearest lattice neighbour (one spacing away) leaves every
-      // particle alone in its sums: no pressure force, the densities of isolated particles.
-      const double support = c.dimension == 1 ? kernel_info<1>(d.kernel).support
-                             : c.dimension == 2 ? kernel_info<2>(d.kernel).support
-                                                : kernel_info<3>(d.kernel).support;
-      if (!(support * d.smoothing_ratio > 1.0))
-        disc.fail("smoothing_ratio", number_text(d.smoothing_ratio) + " gives " + d.kernel + " a support of " +
-                                         number_text(support * d.smoothing_ratio) +
-                                         " spacings, which does not reach the nearest particle one spacing away; it needs h / dx > " +
-                                         number_text(1.0 / support));
-    }
+    // A support that does not reach the nearest lattice neighbour (one spacing away) leaves every
+    // particle alone in its sums: no pressure force, the densities of isolated particles.
+    if (!(support * d.smoothing_ratio > 1.0))
+      disc.fail("smoothing_ratio", number_text(d.smoothing_ratio) + " gives " + d.kernel + " a support of " +
+                                       number_text(support * d.smoothing_ratio) +
+                                       " spacings, which does not reach the nearest particle one spacing away; it needs h / dx > " +
+                                       number_text(1.0 / support));
     if (const auto v = disc.string("density")) d.density = disc.choice("density", *v, {"summation", "normalised_summation", "continuity"});
     if (const auto v = disc.string("momentum")) d.momentum = disc.choice("momentum", *v, {"symmetric_117", "symmetric_116", "integral_approach"});
     if (const auto v = disc.string("viscosity"))

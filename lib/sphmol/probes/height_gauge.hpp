@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "sphmol/core/particles.hpp"
@@ -48,31 +49,29 @@ inline double open_support_sum(double fluid, double walls) {
   return open > 0.25 ? fluid / open : 0.0;
 }
 
-// The wall particles' kernel sums at the heights z of the line at `at` (vertical coordinate
-// ignored), with the walls where they are at t (moving bodies follow their motions).
+// The wall particles where they are at t (moving bodies follow their motions), with their volumes
+// m / rho: their kernel sum at any point is a FluidSampler's over these (walls.kernel_sum), built once
+// per sample time for every gauge.
 template <int D>
-std::vector<double> wall_sums_on_line(const Particles<D>& walls, double t, geometry::Vec<D> at, const std::vector<double>& z,
-                                      double (*W)(double, double), double h, double support, const Domain<D>& domain) {
-  std::vector<double> sum(z.size(), 0.0);
-  const std::size_t n = walls.size();
-  if (n == 0) return sum;
+struct WallKernelSum {
   std::array<std::vector<double>, D> x;
-  std::vector<double> volume(n);
-  const auto frames = walls.motion_frames(t);
-  for (std::size_t j = 0; j < n; ++j) {
-    const auto s = walls.wall_state(j, frames, t);
-    for (int d = 0; d < D; ++d) x[d].push_back(s.x[d]);
-    volume[j] = walls.mass[j] / walls.rho[j];
+  std::vector<double> volume;
+  std::optional<FluidSampler<D>> walls;
+  WallKernelSum(const Particles<D>& P, double t, double (*W)(double, double), double h, double support, const Domain<D>& domain) {
+    const auto frames = P.motion_frames(t);
+    for (std::size_t j = 0; j < P.size(); ++j) {
+      const auto s = P.wall_state(j, frames, t);
+      for (int d = 0; d < D; ++d) x[d].push_back(s.x[d]);
+      volume.push_back(P.mass[j] / P.rho[j]);
+    }
+    std::array<const double*, D> xp{};
+    for (int d = 0; d < D; ++d) xp[d] = x[d].data();
+    walls.emplace(xp, volume.data(), volume.size(), W, h, support, domain);
   }
-  std::array<const double*, D> xp{};
-  for (int d = 0; d < D; ++d) xp[d] = x[d].data();
-  const PointBins<D> bins(xp, n, support * h, domain);
-  for (std::size_t k = 0; k < z.size(); ++k) {
-    at[D - 1] = z[k];
-    bins.for_each_near(at, [&](std::size_t j, double r, const auto&) { sum[k] += volume[j] * W(r, h); });
-  }
-  return sum;
-}
+  WallKernelSum(const WallKernelSum&) = delete;  // the sampler points into x and volume
+  WallKernelSum& operator=(const WallKernelSum&) = delete;
+  double operator()(const geometry::Vec<D>& p) const { return walls->kernel_sum(p); }
+};
 
 // `at`: the line's position (its vertical coordinate is ignored); [bottom, top]: the scanned range.
 template <int D>

@@ -258,6 +258,15 @@ void ProbeObserver<D>::append_rows(Series& s, double t, const std::vector<double
 }
 
 template <int D>
+std::unique_ptr<WallKernelSum<D>> ProbeObserver<D>::gauge_walls(const std::vector<std::size_t>& which, double t,
+                                                                const Domain<D>& domain) const {
+  for (const std::size_t k : which)
+    if (series_[k].cfg.type == "height_gauge")
+      return std::make_unique<WallKernelSum<D>>(walls_[series_[k].walls].walls, t, W_, h_, support_, domain);
+  return nullptr;
+}
+
+template <int D>
 void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSystem<D>& sys, const double* y, double t) {
   if (which.empty()) return;
   const auto& P = sys.particles();
@@ -274,6 +283,7 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
   // Fluid taken out of the run (run/outflow.hpp) has no volume: no probe sees it.
   for (std::size_t i = 0; i < nf; ++i) volume[i] = sys.is_retired(i) ? 0.0 : P.mass[i] / rho[i];
   const FluidSampler<D> fluid(xf, volume.data(), nf, W_, h_, support_, sys.domain());
+  const auto walls = gauge_walls(which, t, sys.domain());
   for (const std::size_t k : which) {
     Series& s = series_[k];
     const ProbeConfig& c = s.cfg;
@@ -288,12 +298,11 @@ void ProbeObserver<D>::sample(const std::vector<std::size_t>& which, const SphSy
         }
     } else if (c.type == "height_gauge") {
       const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
-      const std::vector<double> walls = wall_sums_on_line<D>(walls_[s.walls].walls, t, gauge_line(s), z, W_, h_, support_, sys.domain());
       std::vector<double> sum(z.size());
       geometry::Vec<D> at = gauge_line(s);
       for (std::size_t q = 0; q < z.size(); ++q) {
         at[D - 1] = z[q];
-        sum[q] = open_support_sum(fluid.kernel_sum(at), walls[q]);
+        sum[q] = open_support_sum(fluid.kernel_sum(at), (*walls)(at));
       }
       values.push_back(surface_height(z, sum));
     } else {
@@ -513,6 +522,7 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
   std::size_t at = 0;
   for (int r = 0; r < piece.ranks; ++r)
     for (ProbeTerms& T : merged) T.read(all, at);
+  const auto walls = gauge_walls(which, t, whole.domain());
   for (std::size_t w = 0; w < which.size(); ++w) {
     Series& s = series_[which[w]];
     const ProbeConfig& c = s.cfg;
@@ -542,8 +552,11 @@ void ProbeObserver<D>::sample_pieces(const std::vector<std::size_t>& which, cons
       const std::vector<double> z = gauge_levels(s.bottom, s.top, 0.25 * h_);
       std::vector<double> sum(z.size(), 0.0);
       for (const std::size_t e : order) sum[T.keys[e].a] += T.values[e];
-      const std::vector<double> walls = wall_sums_on_line<D>(walls_[s.walls].walls, t, gauge_line(s), z, W_, h_, support_, whole.domain());
-      for (std::size_t q = 0; q < z.size(); ++q) sum[q] = open_support_sum(sum[q], walls[q]);
+      geometry::Vec<D> at = gauge_line(s);
+      for (std::size_t q = 0; q < z.size(); ++q) {
+        at[D - 1] = z[q];
+        sum[q] = open_support_sum(sum[q], (*walls)(at));
+      }
       values.push_back(surface_height(z, sum));
     } else {
       std::array<double, D> force{};

@@ -10,9 +10,11 @@
 // observer's checkpoint state, so a restart continues each series.
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "sphmol/probes/height_gauge.hpp"
 #include "sphmol/probes/probe_config.hpp"
 #include "sphmol/probes/wall_force.hpp"
 #include "sphmol/run/case.hpp"
@@ -85,6 +87,9 @@ class ProbeObserver final : public OutputObserver<D> {
   // The same series from the ranks' pieces (collective: every rank passes the same `which`).
   void sample_pieces(const std::vector<std::size_t>& which, const SphSystem<D>& whole, const OwnedPiece<D>& piece, double t);
   std::vector<std::size_t> at_outputs() const;  // the series without `every`
+  // Every wall's kernel sum at t when a height gauge is among `which` (all gauges share the walls of
+  // every body, walls_), else null: built once per sample time.
+  std::unique_ptr<WallKernelSum<D>> gauge_walls(const std::vector<std::size_t>& which, double t, const Domain<D>& domain) const;
   // The sampled values of one row group (point, line, plane: columns() per point; height gauge: 1;
   // force: D) as the series' rows at t.
   void append_rows(Series& s, double t, const std::vector<double>& values);

@@ -2,7 +2,6 @@
 
 #include <arkode/arkode_butcher_erk.h>
 
-#include <sstream>
 #include <stdexcept>
 
 #include "sphmol/config/ark_pairs.hpp"
@@ -36,10 +35,11 @@ void IntegratorSpec::apply(TimeConfig& time) const {
 
 std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const std::string& default_table) {
   std::vector<IntegratorSpec> out;
-  if (!list.empty() && list.back() == ',') throw std::invalid_argument("an empty entry in '" + list + "' (a doubled or trailing comma)");
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
+  if (list.empty()) throw std::invalid_argument("empty integrator list");
+  // Every comma-separated entry, the one after a trailing comma too (getline would drop it).
+  for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
+    end = list.find(',', start);
+    const std::string item = list.substr(start, end == std::string::npos ? std::string::npos : end - start);
     if (item.empty()) throw std::invalid_argument("an empty entry in '" + list + "' (a doubled or trailing comma)");
     IntegratorSpec s;
     s.label = item;
@@ -66,7 +66,6 @@ std::vector<IntegratorSpec> parse_integrator_list(const std::string& list, const
         throw std::invalid_argument("integrator '" + item + "' is listed twice (as '" + o.label + "')");
     out.push_back(s);
   }
-  if (out.empty()) throw std::invalid_argument("empty integrator list");
   return out;
 }
 
