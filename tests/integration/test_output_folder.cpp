@@ -117,6 +117,23 @@ TEST_CASE("output folder: the resolved config records the real folder, a restart
   CHECK(std::find(files.begin(), files.end(), "profile_t0.02.csv") != files.end());
   CHECK(std::find(files.begin(), files.end(), "profile_t0.03.csv") != files.end());
   CHECK(std::find(files.begin(), files.end(), "checkpoint-0.02") != files.end());
+  CHECK_THAT(r.err, !Contains("is not used"));
+
+  // output.directory changed for the restart (--set here; an edited config.yaml alike): the run still
+  // continues in `out`, and says that the other folder is not used instead of ignoring it silently.
+  const fs::path other = dir / "other";
+  r = test_support::run_process(SPHMOL_BINARY,
+                                {"--restart", (out / "checkpoint-0.02").string(), "-q", "--set", "time.t_end=0.04",
+                                 "--set", "output.directory=" + other.string()},
+                                (dir / "stderr.txt").string(), (dir / "elsewhere").string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Contains("output.directory " + other.string() + " is not used"));
+  CHECK_THAT(r.err, Contains("--output " + other.string()));
+  CHECK(!fs::exists(other));
+  const auto s2 = json_file(out / "summary.json");
+  CHECK(s2["t_end"] == 0.04);
+  CHECK_THAT(s2["warnings"].dump(), Contains("is not used"));
 }
 
 TEST_CASE("output folder: a config.yaml inside the output folder is read before it is replaced",

@@ -564,6 +564,20 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     const auto home = std::filesystem::weakly_canonical(std::filesystem::path(options.restart_from).lexically_normal().parent_path());
     opt.continuing = here == home;
   }
+  // A restart without --output continues in its checkpoint's folder whatever output.directory says;
+  // a different one (edited in config.yaml, given with --set, or a run folder moved since) is not
+  // used, and the run says so.
+  std::string folder_notice;
+  if (!options.restart_from.empty() && options.output_dir.empty() && out.enabled) {
+    std::error_code ec1, ec2;
+    const auto wanted = std::filesystem::weakly_canonical(config.output.directory, ec1);
+    const auto here = std::filesystem::weakly_canonical(out.directory, ec2);
+    if (ec1 || ec2 || wanted != here)
+      folder_notice = "output.directory " + config.output.directory + " is not used: a restart without --output " +
+                      "continues in the folder of its checkpoint, " + out.directory + "; give --output " +
+                      config.output.directory + " to write there";
+    if (!folder_notice.empty() && opt.log) *opt.log << "warning: " << folder_notice << '\n';
+  }
   // Claimed by run_with before its first step (so before any file is written) and held until the
   // summary is written.
   std::optional<OutputFolder> folder;
@@ -575,6 +589,7 @@ nlohmann::json run_case(const Config& config, const RunOptions& options) {
     default: throw std::invalid_argument("dimension: must be 1, 2 or 3");
   }
   summary["config_file"] = config.source;
+  if (!folder_notice.empty()) summary["warnings"].push_back(folder_notice);
   if (const auto& pc = config.discretization.position_correction; !pc.setting.empty()) {
     // discretization.position_correction: what ran, and for auto why (config/position_correction.hpp).
     nlohmann::json j{{"setting", pc.setting}, {"chosen", pc.chosen}};
