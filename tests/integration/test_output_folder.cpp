@@ -159,6 +159,8 @@ TEST_CASE("output folder: a file size limit ends the run with a message and no t
           "[integration][output-folder]") {
   const fs::path dir = scratch("fsize");
   const fs::path out = dir / "out";
+  // Made beforehand: a folder the run made and left holding only its lock file would be removed.
+  fs::create_directories(out);
   // 4 KiB: the first profile (about 10 KiB) cannot be written.
   const auto r = test_support::run_process(
       SPHMOL_BINARY,

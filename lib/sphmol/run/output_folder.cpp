@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -46,10 +47,17 @@ std::set<std::string> files_of_previous_run(const fs::path& summary) {
 
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& directory, Options options) : directory_(directory) {
+OutputFolder::OutputFolder(const std::string& directory, Options options)
+    : directory_(directory), uncaught_(std::uncaught_exceptions()) {
   // Before anything is created: a link under the folder's name would receive every file.
   if (const auto link = final_link_message(directory)) throw OutputFolderError("output directory " + *link);
   std::error_code ec;
+  fs::path top = fs::path(directory).lexically_normal();
+  if (!top.has_filename()) top = top.parent_path();  // "a/b/" names the folder a/b
+  for (fs::path p = top; !p.empty() && !fs::exists(fs::symlink_status(p, ec)); p = p.parent_path()) {
+    created_.push_back(p.string());
+    if (p == p.parent_path()) break;
+  }
   fs::create_directories(directory, ec);
   if (ec || !fs::is_directory(directory))
     throw OutputFolderError("output directory " + directory + ": cannot create it" + (ec ? ": " + ec.message() : std::string()));
@@ -94,7 +102,21 @@ OutputFolder::OutputFolder(const std::string& directory, Options options) : dire
 }
 
 OutputFolder::~OutputFolder() {
-  // The lock file stays: deleting it would let a run that opened it meanwhile lock a dead file.
+  // A folder this claim made, left by a failure with nothing in it but the lock file, is removed (the
+  // lock is unlinked while still held; a run that opens the folder meanwhile makes it non-empty, and
+  // then it stays). Otherwise the lock file stays: deleting it would let a run that opened it
+  // meanwhile lock a dead file.
+  if (lock_fd_ >= 0 && !created_.empty() && std::uncaught_exceptions() > uncaught_) {
+    std::error_code ec;
+    bool only_lock = true;
+    for (const auto& e : fs::directory_iterator(directory_, ec)) only_lock = only_lock && e.path().filename() == kOutputLockFile;
+    if (!ec && only_lock) {
+      fs::remove(fs::path(directory_) / kOutputLockFile, ec);
+      // fs::remove on a folder is rmdir: it fails, and leaves the folder, unless it is empty.
+      for (const auto& d : created_)
+        if (!fs::remove(d, ec)) break;
+    }
+  }
   if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 

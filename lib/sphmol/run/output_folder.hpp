@@ -7,9 +7,12 @@
 // - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left;
 // - `lock_only` takes the lock and leaves the folder's contents alone;
 // - a folder whose own name is a symbolic link is refused (io/links.hpp), and so is a summary.json
-//   that is a link, a FIFO, a device or larger than a summary can be.
+//   that is a link, a FIFO, a device or larger than a summary can be;
+// - folders it created are removed again when it is destroyed by an exception while they hold
+//   nothing but the lock file: a run or study that fails before writing leaves no empty folder.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sphmol {
 
@@ -37,6 +40,9 @@ class OutputFolder {
  private:
   std::string directory_;
   int lock_fd_ = -1;
+  // The folders create_directories made, innermost first, and the exceptions in flight at the start.
+  std::vector<std::string> created_;
+  int uncaught_ = 0;
 };
 
 // The name of the lock file inside an output folder.
