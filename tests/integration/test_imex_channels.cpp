@@ -52,3 +52,42 @@ TEST_CASE("IMEX integrators reach the explicit e_rms on Poiseuille and Couette",
   CHECK(ai["final_errors"]["e_rms"].get<double>() == Approx(e_ref).epsilon(0.1));
   CHECK(ai["integrator"]["krylov_iterations"].get<long>() > 0);
 }
+
+TEST_CASE("arkode_imex: a stage solve cut off by max_iterations is not taken as solved", "[integration][imex]") {
+  // Poiseuille 20 across: one Krylov iteration per solve is far from the solves' tolerance at the
+  // steps the error control would take. ARKStep must shrink the step until the solves converge
+  // (same e_rms as unlimited iterations), not accept the unconverged stages (e_rms 40 % off).
+  const std::vector<std::string> small{"discretization.particles_across=20", "time.integrator=arkode_imex"};
+  auto capped = small;
+  capped.push_back("time.krylov.max_iterations=1");
+  const auto full = run("poiseuille.yaml", small);
+  const auto one = run("poiseuille.yaml", capped);
+  CHECK(one["status"] == "completed");
+  CHECK(one["final_errors"]["e_rms"].get<double>() == Approx(full["final_errors"]["e_rms"].get<double>()).epsilon(0.01));
+  CHECK(one["steps"].get<long>() > 2 * full["steps"].get<long>());
+  // At a fixed step it cannot shrink: the run stops and says why.
+  capped.push_back("time.dt=0.005");
+  try {
+    run("poiseuille.yaml", capped);
+    FAIL("expected the run to stop");
+  } catch (const std::runtime_error& e) {
+    CHECK_THAT(e.what(), Catch::Matchers::Contains("did not reach their tolerance in time.krylov.max_iterations = 1"));
+  }
+}
+
+TEST_CASE("time.max_steps stops the SUNDIALS integrators too", "[integration][max_steps]") {
+  // Adaptive steps at a tight tolerance: more than the load-time bound (t_end over the CFL step at
+  // rest), which therefore lets a limit just below the run's own count pass.
+  const std::string integrator = GENERATE(std::string("arkode_erk"), std::string("cvode_adams"), std::string("arkode_imex"));
+  INFO(integrator);
+  std::vector<std::string> o{"discretization.particles_across=20", "time.integrator=" + integrator, "time.rtol=1e-10"};
+  const long steps = run("poiseuille.yaml", o)["steps"].get<long>();
+  const long limit = steps - 5;
+  o.push_back("time.max_steps=" + std::to_string(limit));
+  try {
+    run("poiseuille.yaml", o);
+    FAIL("expected the run to stop at time.max_steps");
+  } catch (const std::runtime_error& e) {
+    CHECK_THAT(e.what(), Catch::Matchers::Contains("time.max_steps = " + std::to_string(limit) + " reached"));
+  }
+}

@@ -130,7 +130,7 @@ TEST_CASE("config errors: non-physical and out-of-range values name the allowed 
       {"particles_across: 20", "particles_across: 20\n  wall_layers: -1",
        "case.yaml:14: discretization.wall_layers: -1 is out of range (allowed: >= 0; 0 = fill the kernel support)"},
       {"t_end: 0.5", "t_end: 0", "case.yaml:15: time.t_end: 0 is out of range (allowed: > 0 s)"},
-      {"t_end: 0.5", "t_end: 0.5\n  rtol: 0", "case.yaml:16: time.rtol: 0 is out of range (allowed: > 0)"},
+      {"t_end: 0.5", "t_end: 0.5\n  rtol: 0", "case.yaml:16: time.rtol: 0 is out of range (allowed: >= 1e-15, the double round-off)"},
       {"t_end: 0.5", "t_end: 0.5\n  atol: -1e-9", "case.yaml:16: time.atol: -1e-09 is out of range (allowed: > 0)"},
       {"t_end: 0.5", "t_end: 0.5\n  cfl:\n    acoustic: 1.5",
        "case.yaml:17: time.cfl.acoustic: 1.5 is out of range (allowed: (0, 1]: a sound wave may cross at most one smoothing length per step (Monaghan 1992 uses 0.25-0.4))"},

@@ -8,6 +8,7 @@
 
 using namespace sphmol;
 using config_test::base;
+using config_test::error_of;
 using config_test::with;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
@@ -263,4 +264,52 @@ TEST_CASE("config: transport velocity and position noise of the shipped Taylor-G
                                {"discretization.transport_velocity.enabled=false"});
   CHECK_FALSE(c.discretization.transport_velocity.enabled);
   CHECK_THAT(to_yaml(c), !Contains("transport_velocity"));
+}
+
+TEST_CASE("config: time settings the integrator does not read get a notice", "[config]") {
+  const auto notices_of = [](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const auto& n : load_config_string(base, sets, "case.yaml").notices) all += n + "\n";
+    return all;
+  };
+  // The leapfrogs read neither a table nor tolerances.
+  const std::string lf = notices_of({"time.integrator=leapfrog", "time.table=ARKODE_HEUN_EULER_2_1_2", "time.rtol=1e-3", "time.atol=1e-9"});
+  CHECK_THAT(lf, Contains("--set time.table=ARKODE_HEUN_EULER_2_1_2: time.table: has no effect: leapfrog takes no Butcher table"));
+  CHECK_THAT(lf, Contains("time.rtol: has no effect: leapfrog takes fixed or CFL steps"));
+  CHECK_THAT(lf, Contains("time.atol: has no effect"));
+  // cvode_adams reads tolerances, no table.
+  const std::string cv = notices_of({"time.integrator=cvode_adams", "time.table=ARKODE_HEUN_EULER_2_1_2", "time.rtol=1e-3"});
+  CHECK_THAT(cv, Contains("time.table: has no effect"));
+  CHECK_THAT(cv, !Contains("time.rtol"));
+  // arkode_erk at a fixed step has no error control and no CFL bound.
+  const std::string fixed = notices_of({"time.dt=1e-5", "time.rtol=1e-3", "time.cfl.acoustic=0.1"});
+  CHECK_THAT(fixed, Contains("time.rtol: has no effect: arkode_erk with a fixed time.dt has no error control"));
+  CHECK_THAT(fixed, Contains("time.cfl: has no effect: a fixed time.dt is not bounded by the CFL limits"));
+  // Read: adaptive arkode_erk with everything; arkode_imex takes its tolerances at a fixed step too.
+  CHECK(notices_of({"time.rtol=1e-3", "time.atol=1e-9", "time.table=ARKODE_HEUN_EULER_2_1_2", "time.cfl.acoustic=0.1"}).empty());
+  CHECK(notices_of({"time.integrator=leapfrog", "time.cfl.acoustic=0.1"}).empty());
+}
+
+TEST_CASE("config: the resolved config writes only the time settings the integrator reads", "[config]") {
+  const Config lf = load_config_string(base, {"time.integrator=leapfrog", "time.dt=1e-5"});
+  const std::string y = to_yaml(lf);
+  CHECK_THAT(y, !Contains("rtol:"));
+  CHECK_THAT(y, !Contains("table:"));
+  CHECK_THAT(y, !Contains("cfl:"));
+  // It loads back without notices.
+  CHECK(load_config_string(y).notices.empty());
+  const std::string erk = to_yaml(load_config_string(base));
+  CHECK_THAT(erk, Contains("rtol:"));
+  CHECK_THAT(erk, Contains("table:"));
+  CHECK_THAT(erk, Contains("cfl:"));
+}
+
+TEST_CASE("config: tolerances and Krylov iterations are bounded where a run could not use them", "[config]") {
+  CHECK_THAT(error_of(base, {"time.rtol=1e-300"}), Contains("time.rtol: 1e-300 is out of range (allowed: >= 1e-15"));
+  // 2^32 + 1 would wrap to 1 in an int.
+  const std::vector<std::string> imex{"time.integrator=leapfrog_imex", "time.krylov.max_iterations=4294967297"};
+  CHECK_THAT(error_of(base, imex), Contains("time.krylov.max_iterations: 4294967297 is out of range (allowed: 1 to 1000)"));
+  CHECK_THAT(error_of(base, {"time.integrator=arkode_imex", "time.krylov.solver=spgmr", "time.krylov.max_iterations=1000"}),
+             Contains("(allowed: 1 to 200 with spgmr"));
+  CHECK(load_config_string(base, {"time.integrator=leapfrog_imex", "time.krylov.max_iterations=1000"}).time.krylov.max_iterations == 1000);
 }

@@ -204,6 +204,16 @@ struct TimeConfig {
   std::optional<double> dt;                         // given -> fixed step (> 0)
   long max_steps = 10'000'000;                      // > 0
   KrylovConfig krylov;                              // leapfrog_imex, arkode_imex
+
+  // Which settings the chosen integrator reads (the loader notes the others when given; the resolved
+  // config writes only these).
+  bool takes_table() const { return integrator == "arkode_erk" || integrator == "arkode_imex"; }
+  // Error control (adaptive steps) and, for arkode_imex, its Krylov tolerance at fixed steps too.
+  bool takes_tolerances() const {
+    return integrator == "cvode_adams" || integrator == "arkode_imex" || (integrator == "arkode_erk" && !dt);
+  }
+  // A fixed step is not bounded by the CFL limits.
+  bool takes_cfl() const { return !dt; }
 };
 
 struct OutputConfig {

@@ -1,6 +1,7 @@
 #include "sphmol/time/arkode_erk.hpp"
 
 #include <omp.h>
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/io/double_codec.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/erk_table.hpp"
 #include "sphmol/time/state_vector.hpp"
+#include "sphmol/time/step_limit.hpp"
 
 namespace sphmol {
 
@@ -102,6 +104,7 @@ void ArkodeErk::advance(double tout) {
 
 double ArkodeErk::step_toward(double tout) {
   if (t_ >= tout) return t_;
+  check_step_limit(name(), stats().steps, opt_.max_steps, t_);
   check(ERKStepSetStopTime(mem_, tout), "SetStopTime");
   double t = t_;
   // One internal step; the stop time keeps it from passing tout (same steps as advance()).
@@ -109,7 +112,7 @@ double ArkodeErk::step_toward(double tout) {
   if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL)
     throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ERKStepGetReturnFlagName(flag));
   if (flag < 0)
-    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " +
+    throw std::runtime_error("ARKODE: integration failed at t = " + number_text(t) + " s: " +
                              ERKStepGetReturnFlagName(flag));
   t_ = (flag == ARK_TSTOP_RETURN) ? tout : t;
   double h = 0.0;

@@ -9,10 +9,12 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/time/block_error_weights.hpp"
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/state_vector.hpp"
+#include "sphmol/time/step_limit.hpp"
 
 namespace sphmol {
 
@@ -247,13 +249,21 @@ void ArkodeImex::advance(double tout) {
 
 double ArkodeImex::step_toward(double tout) {
   if (t_ >= tout) return t_;
+  check_step_limit(name(), stats().steps, opt_.max_steps, t_);
   check(ARKStepSetStopTime(mem_, tout), "SetStopTime");
   double t = t_;
   const int flag = ARKStepEvolve(mem_, tout, y_, &t, ARK_ONE_STEP);
+  // A solve that threw (out of memory, say) is that failure, not a blow-up.
+  if (flag < 0 && ls_->error()) std::rethrow_exception(ls_->error());
+  if (flag == ARK_CONV_FAILURE && ls_->last_capped())
+    throw std::runtime_error("arkode_imex: at t = " + number_text(t) + " s the stage solves did not reach their tolerance in " +
+                             "time.krylov.max_iterations = " + std::to_string(ls_->max_iterations()) + " iterations" +
+                             (opt_.fixed_step ? " at the fixed step time.dt" : " even at reduced steps") +
+                             " (raise time.krylov.max_iterations" + (opt_.fixed_step ? ", or remove time.dt" : "") + ")");
   if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL || flag == ARK_LSOLVE_FAIL)
     throw BlowUp(t, -1, std::string("step-size collapse: ARKODE ") + ARKStepGetReturnFlagName(flag));
   if (flag < 0)
-    throw std::runtime_error("ARKODE: integration failed at t = " + std::to_string(t) + ": " + ARKStepGetReturnFlagName(flag));
+    throw std::runtime_error("ARKODE: integration failed at t = " + number_text(t) + " s: " + ARKStepGetReturnFlagName(flag));
   t_ = (flag == ARK_TSTOP_RETURN) ? tout : t;
   double h = 0.0;
   ARKStepGetLastStep(mem_, &h);

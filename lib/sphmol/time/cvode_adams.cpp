@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/state_vector.hpp"
+#include "sphmol/time/step_limit.hpp"
 
 namespace sphmol {
 
@@ -93,6 +95,7 @@ void CvodeAdams::advance(double tout) {
 
 double CvodeAdams::step_toward(double tout) {
   if (t_ >= tout) return t_;
+  check_step_limit(name(), stats().steps, opt_.max_steps, t_);
   // CVODE clears its stop time once it is reached; a new target sets it again.
   if (!tstop_set_ || tstop_ != tout) {
     check(CVodeSetStopTime(mem_, tout), "SetStopTime");
@@ -104,7 +107,7 @@ double CvodeAdams::step_toward(double tout) {
   if (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE || flag == CV_RHSFUNC_FAIL)
     throw BlowUp(t, -1, std::string("step-size collapse: CVODE ") + CVodeGetReturnFlagName(flag));
   if (flag < 0)
-    throw std::runtime_error("CVODE: integration failed at t = " + std::to_string(t) + ": " + CVodeGetReturnFlagName(flag));
+    throw std::runtime_error("CVODE: integration failed at t = " + number_text(t) + " s: " + CVodeGetReturnFlagName(flag));
   double h = 0.0;
   CVodeGetLastStep(mem_, &h);
   after_step(t, N_VGetArrayPointer(y_), h);

@@ -7,6 +7,7 @@
 
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/step_limit.hpp"
 
 namespace sphmol {
 
@@ -42,9 +43,7 @@ double LeapfrogBase::step_toward(double tout) {
   if (fixed && std::abs(tout - t_) <= 1e-9 * dt) return tout;
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw BlowUp(t_, -1, "step-size collapse: the CFL step is " + std::to_string(dt));
-  if (stats_.steps >= opt_.max_steps)
-    throw std::runtime_error(name() + ": time.max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " +
-                             std::to_string(t_));
+  check_step_limit(name(), stats_.steps, opt_.max_steps, t_);
   double t_new = 0.0;
   if (fixed) {
     // Steps on the grid t_k = k dt, each computed from k (not accumulated), so that where the run

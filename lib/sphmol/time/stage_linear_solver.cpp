@@ -6,7 +6,7 @@ namespace sphmol {
 
 StageLinearSolver::StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb,
                                      std::size_t length)
-    : solve_(std::move(k)), op_(op), vb_(vb), length_(length) {
+    : solve_(k), op_(op), vb_(vb), length_(length), max_iterations_(k.max_iterations) {
   ls_ = SUNLinSolNewEmpty(ctx);
   if (!ls_) throw std::runtime_error("SUNDIALS: creating the stage linear solver failed");
   ls_->content = this;
@@ -53,7 +53,10 @@ int StageLinearSolver::solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector 
     for (std::size_t k = ve; k < n; ++k) xx[k] = bb[k];
     const double* w = me->weights_ ? N_VGetArrayPointer(me->weights_) + vb : nullptr;
     me->last_flag_ = me->solve_.solve_weighted(*me->op_, gamma, bb + vb, xx + vb, w, delta, me->zero_guess_);
+    me->last_capped_ = me->last_flag_ == SUNLS_RES_REDUCED;
+    if (me->last_capped_) me->last_flag_ = SUNLS_CONV_FAIL;
   } catch (...) {
+    me->error_ = std::current_exception();
     me->last_flag_ = SUNLS_ATIMES_FAIL_UNREC;
   }
   return me->last_flag_;

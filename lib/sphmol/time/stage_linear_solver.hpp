@@ -13,6 +13,7 @@
 #include <sundials/sundials_linearsolver.h>
 
 #include <cstddef>
+#include <exception>
 #include <functional>
 
 #include "sphmol/time/viscous_solve.hpp"
@@ -36,6 +37,15 @@ class StageLinearSolver {
     vb_ = vb;
     length_ = length;
   }
+  // Whether the last solve stopped at time.krylov.max_iterations short of its tolerance. Such a solve
+  // is reported to ARKStep as a recoverable convergence failure (it shrinks the step and tries
+  // again), not as the "residual reduced" that ARKStep accepts as solved when it makes one Newton
+  // iteration per stage, as here (SetLinear).
+  bool last_capped() const { return last_capped_; }
+  int max_iterations() const { return max_iterations_; }
+  // An exception a solve caught (it may not cross SUNDIALS' C frames), for the caller to rethrow
+  // once ARKStep has returned; null if none.
+  std::exception_ptr error() const { return error_; }
 
  private:
   static StageLinearSolver* self(SUNLinearSolver S) { return static_cast<StageLinearSolver*>(S->content); }
@@ -49,6 +59,9 @@ class StageLinearSolver {
   N_Vector weights_ = nullptr;  // ARKStep's, set through the scaling-vector operation
   bool zero_guess_ = false;
   int last_flag_ = 0;
+  bool last_capped_ = false;
+  int max_iterations_ = 0;
+  std::exception_ptr error_;
 };
 
 }  // namespace sphmol

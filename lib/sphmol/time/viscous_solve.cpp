@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/time/fixed_point_norm.hpp"
 #include "sphmol/time/vector_ops.hpp"
 
@@ -117,7 +118,7 @@ int ViscousSolve::solve(const ViscousOperator& op, double gamma, const double* r
   // Warm start: x holds the caller's guess.
   const int flag = run(op, gamma, nullptr, opt_.tolerance * norm, false);
   if (flag != SUNLS_SUCCESS)
-    throw std::runtime_error("time.krylov: " + opt_.solver + " did not reach the tolerance " + std::to_string(opt_.tolerance) +
+    throw std::runtime_error("time.krylov: " + opt_.solver + " did not reach the tolerance " + number_text(opt_.tolerance) +
                              " in " + std::to_string(last_its_) + " iterations (time.krylov.max_iterations = " +
                              std::to_string(opt_.max_iterations) + "; flag " + std::to_string(flag) + ")");
   std::copy(xx, xx + n, x);
