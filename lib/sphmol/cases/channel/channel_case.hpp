@@ -1,6 +1,6 @@
 #pragma once
 // Couette and Poiseuille start-up flows (Vukčević et al. 2012, §4): the channel scene, the series reference and
-// the e_rms / e_max error of u / v0 over fluid particles, with a profile CSV per output time.
+// the e_rms / e_max error of u / |v0| over fluid particles, with a profile CSV per output time.
 #include "sphmol/run/case.hpp"
 #include "sphmol/cases/channel/channel_reference.hpp"
 

@@ -1,7 +1,8 @@
 #pragma once
 // The exact start-up solution a channel case is measured against (cases/channel/channel_case.hpp:
-// e_rms(t) = sqrt(mean_i (u_i - u_exact(y_i, t))^2) / v0, e_max = max_i |...| / v0, over fluid
-// particles); v0 is the Couette plate speed or the Poiseuille peak speed.
+// e_rms(t) = sqrt(mean_i (u_i - u_exact(y_i, t))^2) / |v0|, e_max = max_i |...| / |v0|, over fluid
+// particles); v0 is the Couette plate speed or the Poiseuille peak speed, signed (negative for a flow
+// driven along -x).
 #include <functional>
 #include <string>
 
