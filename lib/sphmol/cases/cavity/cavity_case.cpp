@@ -68,12 +68,16 @@ nlohmann::json CavityCase::measure_pieces(const SphSystem<2>& whole, const Owned
     int c;
     PieceReduction::Slot A, b;  // the 9 sums of A (row by row), then the 3 of b
   };
+  // A lid moving along -x drives the mirror image (x -> L - x) of the flow Ghia et al. tabulate for a
+  // lid along +x: the run is measured in their frame, where u' = -u and v' = v. So u/U is compared as
+  // it is, and v at table point x is the run's v at L - x, over |U|.
+  const bool mirrored = U_ < 0.0;
   std::vector<Fit> fits;
   if (ghia_) {
     for (const double yy : ghia_->y)
       if (yy > 0.0 && yy < 1.0) fits.push_back({0.5 * L_, yy * L_, 0, r.sums(9), r.sums(3)});
     for (const double xx : ghia_->x)
-      if (xx > 0.0 && xx < 1.0) fits.push_back({xx * L_, 0.5 * L_, 1, r.sums(9), r.sums(3)});
+      if (xx > 0.0 && xx < 1.0) fits.push_back({(mirrored ? 1.0 - xx : xx) * L_, 0.5 * L_, 1, r.sums(9), r.sums(3)});
   }
   for (const std::size_t i : piece.fluid_rows) {
     r.add(ke_sum, 0.5 * m[i] * (std::pow(y[lay.velocity(0) + i], 2) + std::pow(y[lay.velocity(1) + i], 2)));
@@ -150,7 +154,7 @@ nlohmann::json CavityCase::measure_pieces(const SphSystem<2>& whole, const Owned
   for (std::size_t k = 0; k < ghia_->x.size(); ++k) {
     const double xx = ghia_->x[k];
     if (xx <= 0.0 || xx >= 1.0) continue;
-    const double v = interpolate(fits.at(next_fit++)) / U_;
+    const double v = interpolate(fits.at(next_fit++)) / std::abs(U_);
     line.push_back(v);
     const double e = v - ghia_->v[k];
     sv += e * e;
@@ -217,8 +221,12 @@ void CavityCase::annotate(nlohmann::json& summary) const {
     r << " vs Ghia, Ghia & Shin (1982) Tables I and II at Re = " << Re_
       << "; SPH velocities interpolated to the table points by linear moving least squares, output time t";
     const std::string ref = r.str();
-    summary["csv_files"]["centreline_u_t<t>.csv"] = "u/U on the vertical centre line x = L/2" + ref;
-    summary["csv_files"]["centreline_v_t<t>.csv"] = "v/U on the horizontal centre line y = L/2" + ref;
+    // A lid along -x: the run mirrored in x, in the tables' frame (measure_pieces).
+    const std::string frame = U_ < 0.0 ? "; lid speed < 0: in the frame mirrored in x (x -> L - x, u -> -u, U -> |U|), "
+                                         "where the lid moves along +x as in the tables"
+                                       : "";
+    summary["csv_files"]["centreline_u_t<t>.csv"] = "u/U on the vertical centre line x = L/2" + ref + frame;
+    summary["csv_files"]["centreline_v_t<t>.csv"] = "v/U on the horizontal centre line y = L/2" + ref + frame;
   }
 }
 

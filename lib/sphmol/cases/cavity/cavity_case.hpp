@@ -1,9 +1,11 @@
 #pragma once
 // Lid-driven cavity: unit box, all four walls, the top one moving at geometry.wall_velocity (a belt:
-// its particles stay put). Reference: Ghia, Ghia & Shin (1982) centre lines for Re = U L / nu if the
+// its particles stay put). Reference: Ghia, Ghia & Shin (1982) centre lines for Re = |U| L / nu if the
 // tables have that Re (else the run reports "no reference" and no errors). At output times:
 //   u_rms, u_max = RMS / max over the table points of (u_sph(0.5, y) - u_ghia) / U, and v likewise on
 //   y = 0.5; the table's end points on the walls (prescribed values, not results) are left out.
+// A lid speed U < 0 is measured in the frame mirrored in x (x -> L - x, u -> -u, U -> |U|), where the
+// lid moves along +x as in the tables.
 // SPH values at a point are interpolated by linear moving least squares over the fluid particles
 // (weights V_j W; exact for a linear field, also next to a wall).
 // Steadiness, per output, as changes per convective time L/U since the previous output (so that it does
