@@ -50,10 +50,31 @@ TEST_CASE("config: without sound_speed, c = 10 U from the case's velocity scale"
     CHECK(c.fluid.eos.sound_speed == 10.0);
     CHECK_FALSE(has_notice(c, "sound_speed"));
   }
-  SECTION("a case without a velocity scale from its config still needs it") {
+  SECTION("cavity: U = |lid speed|, also for a lid along -x") {
     const std::string cavity = without_line(shipped("cavity.yaml"), "sound_speed:");
-    CHECK_THROWS_WITH(load_config_string(cavity, {}, "cavity.yaml"),
-                      StartsWith("cavity.yaml:") && Contains("fluid.eos.sound_speed: required value missing") &&
+    const Config c = load_config_string(cavity, {}, "cavity.yaml");
+    CHECK(c.fluid.eos.sound_speed == Approx(10.0));
+    CHECK(has_notice(c, "fluid.eos.sound_speed: not given: c = 10 U = 10 m/s"));
+    const Config fast = load_config_string(cavity, {"geometry.wall_velocity=-2"}, "cavity.yaml");
+    CHECK(fast.fluid.eos.sound_speed == Approx(20.0));
+  }
+  SECTION("duct: U = |u_max| of the series, for either sign of g") {
+    const std::string duct = without_line(shipped("duct_3d.yaml"), "sound_speed:");
+    const Config plus = load_config_string(duct, {}, "duct.yaml");
+    const Config minus = load_config_string(duct, {"fluid.body_force=[-2e-4, 0, 0]"}, "duct.yaml");
+    // The square duct's centre speed 0.2947 g a^2 / nu (a the half-width; White 2006, eq 3-48).
+    CHECK(plus.fluid.eos.sound_speed == Approx(10.0 * 0.2947 * 2e-4 * 0.25e-6 / 1e-6).epsilon(1e-3));
+    CHECK(minus.fluid.eos.sound_speed == plus.fluid.eos.sound_speed);
+  }
+  SECTION("beltrami: U = sqrt(A^2 + B^2 + C^2)") {
+    const std::string abc = without_line(shipped("beltrami_3d.yaml"), "sound_speed:");
+    const Config c = load_config_string(abc, {"geometry.amplitudes=[-1, 2, 2]"}, "abc.yaml");
+    CHECK(c.fluid.eos.sound_speed == Approx(30.0));
+  }
+  SECTION("a case without a velocity scale from its config still needs it") {
+    const std::string dam = without_line(shipped("dam_break.yaml"), "sound_speed:");
+    CHECK_THROWS_WITH(load_config_string(dam, {}, "dam_break.yaml"),
+                      StartsWith("dam_break.yaml:") && Contains("fluid.eos.sound_speed: required value missing") &&
                           Contains("gives no velocity scale"));
   }
 }

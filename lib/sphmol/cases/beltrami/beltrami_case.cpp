@@ -63,6 +63,11 @@ std::unique_ptr<SphSystem<3>> BeltramiCase::build(const Config& config) {
   return assemble_system<3>(config, std::move(P), domain, dx);
 }
 
+double BeltramiCase::velocity_scale(const Config& config) const {
+  const auto& a = config.settings<BeltramiSettings>().amplitudes;
+  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
 nlohmann::json BeltramiCase::measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t,
                                             const OutputSink& out) {
   const auto& lay = piece.system->layout();

@@ -26,7 +26,8 @@ class BeltramiCase final : public Case<3> {
  public:
   std::unique_ptr<SphSystem<3>> build(const Config& config) override;
   std::string reference() const override { return "abc_flow (decaying Arnold-Beltrami-Childress flow, exact)"; }
-  double velocity_scale(const Config&) const override { return scale(); }
+  // sqrt(A^2 + B^2 + C^2) from the config's amplitudes (also before the scene is built).
+  double velocity_scale(const Config& config) const override;
   // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
   bool measures_pieces() const override { return true; }
   nlohmann::json measure_pieces(const SphSystem<3>& whole, const OwnedPiece<3>& piece, double t, const OutputSink& out) override;

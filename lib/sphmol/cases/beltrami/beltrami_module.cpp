@@ -55,6 +55,7 @@ CaseModule beltrami_module() {
   m.dimensions = {3};
   m.sections = {"geometry"};
   m.lattice_mass = true;
+  m.velocity_scale_from_config = true;  // U = sqrt(A^2 + B^2 + C^2) of geometry.amplitudes
   m.read = read_beltrami;
   m.make3 = [] { return std::make_unique<BeltramiCase>(); };
   return m;

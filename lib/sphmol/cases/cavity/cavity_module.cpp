@@ -43,6 +43,7 @@ CaseModule cavity_module() {
   m.sections = {"geometry"};
   m.position_noise = true;
   m.lattice_mass = true;
+  m.velocity_scale_from_config = true;  // U = |geometry.wall_velocity|, the lid speed
   m.read = read_cavity;
   m.make2 = [] { return std::make_unique<CavityCase>(); };
   return m;

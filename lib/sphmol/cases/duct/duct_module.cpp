@@ -56,6 +56,7 @@ CaseModule duct_module() {
   m.dimensions = {3};
   m.sections = {"geometry"};
   m.lattice_mass = true;
+  m.velocity_scale_from_config = true;  // U = |u_max|, the series' steady centre speed from g, a, b and nu
   m.read = read_duct;
   m.make3 = [] { return std::make_unique<DuctCase>(); };
   return m;
