@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <utility>
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/run_case.hpp"
@@ -41,5 +42,42 @@ TEST_CASE("dam_break: mass exact, no wall penetration, front between Martin & Mo
     INFO("t = " << e["t"]);
     CHECK(e["x_front"].get<double>() < e["x_ritter"].get<double>());
     if (!e["x_ko"].is_null()) CHECK(e["x_front"].get<double>() > e["x_ko"].get<double>() - 0.1);
+  }
+}
+
+// The experiments (Martin & Moyce 1952, n^2 = 2; Koshizuka & Oka 1996) are for a column H = 2a: another
+// column keeps the Ritter comparison and reports theirs as not applicable, with a notice.
+TEST_CASE("dam_break: a column with H != 2a is not compared with the H = 2a experiments (dp = 0.05)", "[integration][dam_break]") {
+  auto run = [](const std::string& column) {
+    const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/dam_break.yaml",
+                                 {"discretization.spacing=0.05", "time.t_end=0.2", "output.times=[0.1, 0.2]",
+                                  "output.plots=false", "geometry.column=" + column});
+    bool notice = false;
+    for (const auto& n : c.notices) notice = notice || n.find("geometry.column: H/a = ") != std::string::npos;
+    RunOptions opt;
+    opt.write_files = false;
+    return std::make_pair(notice, run_case(c, opt));
+  };
+  SECTION("a square column: null, with a notice") {
+    const auto [notice, s] = run("[1.0, 1.0]");
+    CHECK(notice);
+    CHECK(s["experiments_compared"] == false);
+    const auto& f = s["final_errors"];
+    INFO(f.dump());
+    for (const char* k : {"front_rms_martin_moyce", "front_mean_martin_moyce", "front_rms_koshizuka_oka"}) CHECK(f[k].is_null());
+    CHECK(f["front_max_over_ritter"].is_number());
+    for (const auto& e : s["errors"]) {
+      CHECK(e["x_mm"].is_null());
+      CHECK(e["x_ko"].is_null());
+    }
+  }
+  SECTION("the experiments' column H = 2a: compared, no notice") {
+    const auto [notice, s] = run("[1.0, 2.0]");
+    CHECK_FALSE(notice);
+    CHECK(s["experiments_compared"] == true);
+    const auto& f = s["final_errors"];
+    INFO(f.dump());
+    CHECK(f["front_rms_martin_moyce"].is_number());
+    CHECK(f["front_rms_koshizuka_oka"].is_number());
   }
 }

@@ -25,6 +25,11 @@ std::span<const FrontPoint> koshizuka_oka_1996();
 // Z at T by linear interpolation between the points; empty outside their range.
 std::optional<double> interpolate_front(std::span<const FrontPoint> data, double T);
 
+// Whether a column of width a and height H is the experiments' H = 2a, to a relative 1e-6 (lengths
+// given as whole numbers of a spacing that does not divide them exactly). Other columns have no
+// experimental front here: the experiments are for n^2 = H/a = 2 only.
+inline bool experiments_apply(double a, double H) { return std::abs(H / a - 2.0) <= 2e-6; }
+
 // Ritter front x_front(t) = a + 2 sqrt(g H) t.
 inline double ritter_front(double a, double g, double H, double t) { return a + 2.0 * std::sqrt(g * H) * t; }
 

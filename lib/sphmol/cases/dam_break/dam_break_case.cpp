@@ -27,6 +27,7 @@ std::unique_ptr<SphSystem<2>> DamBreakCase::build(const Config& config) {
   Lx_ = config.settings<DamBreakSettings>().box[0];
   t_end_ = config.time.t_end;
   g_ = s.g;
+  experiments_ = experiments_apply(a_, H_);
   dx_ = s.spacing;
   wall_layers_ = s.wall_layers;
   n_fluid0_ = s.particles.n_fluid;
@@ -58,8 +59,10 @@ nlohmann::json DamBreakCase::measure_pieces(const SphSystem<2>& whole, const Own
   const double x_front = xmax + 0.5 * dx_;
   const double x_ritter = ritter_front(a_, g_, H_, t);
   const double T = t * std::sqrt(2.0 * g_ / a_);
-  const auto mm = interpolate_front(martin_moyce_1952_n2_2(), T);
-  const auto ko = interpolate_front(koshizuka_oka_1996(), T);
+  // Empty for a column that is not the experiments' (no data span: nothing to interpolate).
+  const std::span<const FrontPoint> none{};
+  const auto mm = interpolate_front(experiments_ ? martin_moyce_1952_n2_2() : none, T);
+  const auto ko = interpolate_front(experiments_ ? koshizuka_oka_1996() : none, T);
   const bool impacted = x_front >= Lx_ - dx_;
   nlohmann::json j = {{"t", t},
                       {"x_front", x_front},
@@ -72,7 +75,8 @@ nlohmann::json DamBreakCase::measure_pieces(const SphSystem<2>& whole, const Own
 
   std::ostringstream row;
   row << std::setprecision(10) << t << ',' << T << ',' << x_front << ',' << x_ritter << ',';
-  // Outside the experiments' time range: nan (read as missing by pandas and numpy).
+  // Outside the experiments' time range, or for a column that is not theirs: nan (read as missing by
+  // pandas and numpy).
   row << (mm ? *mm * a_ : std::nan("")) << ',' << (ko ? *ko * a_ : std::nan("")) << '\n';
   csv_ += row.str();
   if (out.enabled) out.write("front.csv", csv_);
@@ -151,17 +155,22 @@ void DamBreakCase::annotate(nlohmann::json& summary) const {
       "front_max_over_ritter = max (x_front - a)/(2 sqrt(gH) t) (<= 1: below the Ritter bound); "
       "mass_change: largest relative change of the fluid mass; wall_penetrations: fluid particles that ever "
       "passed a wall (every RHS evaluation); min_wall_gap: closest approach to a wall surface [dx]; "
-      "t_impact: first output time with the front at the right wall";
+      "t_impact: first output time with the front at the right wall" +
+      std::string(experiments_ ? "" : "; front_*_martin_moyce, front_rms_koshizuka_oka: null, the experiments have H = 2a");
   summary["column"] = {a_, H_};
+  summary["experiments_compared"] = experiments_;
   summary["discretization"]["spacing"] = dx_;
   summary["discretization"]["wall_layers"] = wall_layers_;
   summary["particles_total"] = n_fluid0_ + n_wall_;
   summary["csv_files"] = {
       {"front.csv", "surge front x_front (rightmost fluid particle + dx/2) at every output time, T = t sqrt(2 g / a), "
                     "vs Ritter a + 2 sqrt(g H) t and the experiments of Martin and Moyce (1952, n^2 = 2) and Koshizuka "
-                    "and Oka (1996) scaled to a (x_mm, x_ko; nan outside their time range)"},
-      {"front_martin_moyce_1952.csv", "Martin and Moyce (1952, n^2 = 2) surge front scaled to a and g of this run"},
-      {"front_koshizuka_oka_1996.csv", "Koshizuka and Oka (1996) surge front scaled to a and g of this run"}};
+                    "and Oka (1996) scaled to a (x_mm, x_ko; nan outside their time range, and everywhere for a "
+                    "column with H != 2a)"}};
+  if (experiments_) {
+    summary["csv_files"]["front_martin_moyce_1952.csv"] = "Martin and Moyce (1952, n^2 = 2) surge front scaled to a and g of this run";
+    summary["csv_files"]["front_koshizuka_oka_1996.csv"] = "Koshizuka and Oka (1996) surge front scaled to a and g of this run";
+  }
   // Per particle-step with all particles (fluid and wall), as DualSPHysics reports its cost.
   const long steps = summary.value("steps", 0L);
   const double wall = summary.value("wall_seconds", 0.0);
@@ -178,8 +187,10 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
     for (const auto& p : points) ref << p.T * tscale << ',' << p.Z * a_ << '\n';
     out.write(file, ref.str());
   };
-  reference("front_martin_moyce_1952.csv", martin_moyce_1952_n2_2());
-  reference("front_koshizuka_oka_1996.csv", koshizuka_oka_1996());
+  if (experiments_) {
+    reference("front_martin_moyce_1952.csv", martin_moyce_1952_n2_2());
+    reference("front_koshizuka_oka_1996.csv", koshizuka_oka_1996());
+  }
   std::ostringstream s;
   s << gnuplot_csv_preamble("Dam-break surge front vs Ritter and experiments (sph-mol DamBreakCase)", 900, 640, 11, "front.png")
     << "set title 'Dam break (a = " << a_ << " m, H = " << H_ << " m): surge front x_{front}(t)'\n"
@@ -189,10 +200,11 @@ std::vector<PlotScript> DamBreakCase::plots(const OutputSink& out) const {
     << "set samples 400\n"
     << "ritter(t) = " << a_ << " + 2.0 * sqrt(" << g_ << " * " << H_ << ") * t\n"
     << "plot 'front.csv' using 1:3 with linespoints pt 7 ps 0.6 lw 1.5 title 'SPH', \\\n"
-    << "  ritter(x) with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t (upper bound)', \\\n"
-    << "  'front_martin_moyce_1952.csv' using 1:2 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
-    << "  'front_koshizuka_oka_1996.csv' using 1:2 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n"
-    << "  " << Lx_ << " with lines lc rgb 'black' lw 1 title 'right wall'\n";
+    << "  ritter(x) with lines dt 2 lw 1.5 title 'Ritter a + 2 sqrt(gH) t (upper bound)', \\\n";
+  if (experiments_)
+    s << "  'front_martin_moyce_1952.csv' using 1:2 with points pt 5 ps 1 title 'Martin and Moyce 1952 (n^2 = 2)', \\\n"
+      << "  'front_koshizuka_oka_1996.csv' using 1:2 with points pt 9 ps 1 title 'Koshizuka and Oka 1996', \\\n";
+  s << "  " << Lx_ << " with lines lc rgb 'black' lw 1 title 'right wall'\n";
   return {{"front.png", s.str()}};
 }
 

@@ -5,6 +5,7 @@
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/cases/dam_break/dam_break_case.hpp"
 #include "sphmol/cases/dam_break/dam_break_settings.hpp"
+#include "sphmol/reference/dam_break_front.hpp"
 
 namespace sphmol {
 
@@ -37,7 +38,12 @@ CaseRead read_dam_break(CaseReaders& r, const Config& c) {
   const double nxt = case_keys::whole_spacings(geo, "box", Lx, dx, "geometry.box[0]");
   const double nyt = case_keys::whole_spacings(geo, "box", Ly, dx, "geometry.box[1]");
   const double layers = case_keys::wall_layers(c);
-  return {s, {dx, nx * ny, (nxt + 2 * layers) * layers + 2 * layers * nyt}};
+  CaseRead out{s, {dx, nx * ny, (nxt + 2 * layers) * layers + 2 * layers * nyt}};
+  if (!experiments_apply(a, H))
+    out.notices.push_back(geo.where("column") + ": H/a = " + number_text(H / a) +
+                          ": the experiments of Martin & Moyce (1952, n^2 = 2) and Koshizuka & Oka (1996) have H = 2a "
+                          "and are not compared (null in final_errors, nan in front.csv); the Ritter front is");
+  return out;
 }
 
 }  // namespace
