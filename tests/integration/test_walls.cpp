@@ -49,9 +49,10 @@ TEST_CASE("hydrostatic with ghost walls: pressure and drift stay bounded (coarse
   CHECK(s["particles"]["wall"].get<int>() > 0);  // the ghosts of the last evaluation
 }
 
-// Repulsive virtual particles (Niedoba 2012, eq 2.76) with D = g H = 8.8 m^2/s^2 and r0 = dx/2, the
-// distance from the wall line to the outermost particles, so that nothing is repelled at t = 0
-// (r0 = dx blows up at t = 0.002: the particles half a spacing from the wall feel 2^12 D / r).
+// Repulsive virtual particles (Niedoba 2012, eq 2.76) with D = g H = 8.8 m^2/s^2 and the tank's
+// default r0 = dx/2, the distance from the wall line to the outermost particles, so that nothing is
+// repelled at t = 0 (r0 = dx blew up at t = 0.002: the particles half a spacing from the wall feel
+// 2^12 D / r; it is refused).
 // Continuity density: summation density is deficient by half a kernel next to the massless walls.
 // Measured (20 across, 4 s, c0 = 29.7 m/s): max_drift 0.87, p_rms 0.23, p_max 1.29 — the rows next to the walls
 // are wrong by up to rho0 g H (truncated kernel), the interior rows by about 0.01-0.05. The bound
@@ -60,7 +61,7 @@ TEST_CASE("hydrostatic with repulsive virtual particles: stable, column stands (
           "[integration][hydrostatic][repulsive]") {
   const auto s = run_in_process(
       "hydrostatic.yaml", {"discretization.boundary=virtual_repulsive", "discretization.wall_pressure=rest",
-                           "discretization.repulsive.strength=8.8", "discretization.repulsive.r0=0.5",
+                           "discretization.repulsive.strength=8.8",
                            "discretization.density=continuity", "discretization.particle_mass=summation",
                            "discretization.kernel=cubic_spline",
                            "discretization.smoothing_ratio=1.3", "fluid.eos.clamp_negative=true",
@@ -71,6 +72,18 @@ TEST_CASE("hydrostatic with repulsive virtual particles: stable, column stands (
   CHECK(f["settled_outputs"].get<int>() == 3);
   CHECK(f["max_drift"].get<double>() < 1.5);
   CHECK(f["p_rms"].get<double>() < 0.35);
+}
+
+TEST_CASE("hydrostatic with repulsive virtual particles: a cut-off past the first fluid row is refused",
+          "[integration][hydrostatic][repulsive]") {
+  try {
+    run_in_process("hydrostatic.yaml", {"discretization.boundary=virtual_repulsive", "discretization.wall_pressure=rest",
+                                        "discretization.repulsive={strength: 8.8, r0: 1}", "discretization.density=continuity",
+                                        "discretization.particles_across=20", "time.t_end=0.01"});
+    FAIL("expected a config error");
+  } catch (const sphmol::ConfigError& e) {
+    CHECK_THAT(e.what(), Catch::Matchers::Contains("r0 = 1 spacings reaches the fluid's outermost rows"));
+  }
 }
 
 TEST_CASE("plots: hydrostatic p vs depth and shock-tube panels are drawn when gnuplot is present",

@@ -45,6 +45,10 @@ SceneSize tank_3d_size(CaseReaders& r, MapReader& geo, const Config& c, const st
 // breadth) are whole numbers of H / N; 0 if there is none.
 constexpr int kDefaultRows = 36;
 
+// The distance from the tank's virtual repulsive particles to the nearest fluid particles at the
+// start, in spacings: the default and the largest repulsive.r0.
+constexpr double kVirtualWallGap = 0.5;
+
 int default_rows(const std::vector<double>& box) {
   const double depth = box.back();
   for (int n = kDefaultRows; n <= 2 * kDefaultRows; ++n) {
@@ -78,6 +82,15 @@ CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
                                    c.dimension == 3 ? "[width, breadth, depth] of the water column in m"
                                                     : "[width, depth] of the water column in m");
   case_keys::require_gravity(r, c);
+  // The tank's virtual particles lie on the wall lines, half a spacing from the outermost fluid rows
+  // (scenes/box_scene.hpp); a cut-off beyond that pushes the start lattice off the walls at 2^p1 D / r
+  // and the run blows up in its first steps (Niedoba 2012, §2.2.5: r0 must not reach the particles'
+  // initial positions).
+  if (c.discretization.boundary == "virtual_repulsive" && c.discretization.repulsive.r0 > kVirtualWallGap)
+    r.discretization.fail("repulsive", "r0 = " + number_text(c.discretization.repulsive.r0) +
+                                           " spacings reaches the fluid's outermost rows, " + number_text(kVirtualWallGap) +
+                                           " spacings from the tank's virtual particles: the start lattice would be pushed "
+                                           "off the walls; give r0 <= " + number_text(kVirtualWallGap) + " (the default)");
   const double width = s->box[0], depth = s->box.back();
   // Without a resolution key: N rows in the depth (default_rows); the size checks below then read it.
   std::optional<Config> derived;
@@ -117,6 +130,7 @@ CaseModule hydrostatic_module() {
   m.spacing_from_scene = true;
   m.default_sound_speed = tank_sound_speed;
   m.read = read_hydrostatic;
+  m.defaults = [](Config& c) { c.discretization.repulsive.r0 = kVirtualWallGap; };
   m.make2 = [] { return std::make_unique<HydrostaticCase<2>>(); };
   m.make3 = [] { return std::make_unique<HydrostaticCase<3>>(); };
   return m;
