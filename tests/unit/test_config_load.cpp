@@ -313,3 +313,11 @@ TEST_CASE("config: tolerances and Krylov iterations are bounded where a run coul
              Contains("(allowed: 1 to 200 with spgmr"));
   CHECK(load_config_string(base, {"time.integrator=leapfrog_imex", "time.krylov.max_iterations=1000"}).time.krylov.max_iterations == 1000);
 }
+
+TEST_CASE("config: output.every past t_end leaves t_end alone with a notice", "[config]") {
+  // As output times past t_end are dropped: a file with `every` shortened by --set time.t_end loads.
+  const Config c = load_config_string(base, {"output.times=[]", "output.every=0.2", "time.t_end=0.1"}, "case.yaml");
+  CHECK(c.output.times == std::vector<double>{0.1});
+  REQUIRE(c.notices.size() == 1);
+  CHECK(c.notices[0] == "--set output.every=0.2: output.every: 0.2 s is past time.t_end = 0.1 s: the only output time is t_end");
+}

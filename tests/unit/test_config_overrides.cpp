@@ -76,3 +76,14 @@ TEST_CASE("config overrides: errors name the override", "[config]") {
   // ... and an override fixes a bad file value.
   CHECK(error_of(with("density: 1000", "density: -1"), {"fluid.density=1000"}) == "<no error>");
 }
+
+TEST_CASE("config overrides: key=null removes the key", "[config]") {
+  // Swap the resolution keys, and take a fixed step out.
+  const Config c = load_config_string(base, {"discretization.particles_across=null", "discretization.spacing=5e-5",
+                                             "time.dt=1e-5", "time.dt=~"});
+  CHECK(c.discretization.spacing == 5e-5);
+  CHECK_FALSE(c.time.dt.has_value());
+  // A key or section that is not there: nothing to do, nothing created.
+  const Config d = load_config_string(base, {"time.table=null", "health.max_outflow_fraction=null"});
+  CHECK(d.time.table == Config{}.time.table);
+}

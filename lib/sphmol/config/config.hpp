@@ -214,6 +214,8 @@ struct TimeConfig {
   }
   // A fixed step is not bounded by the CFL limits.
   bool takes_cfl() const { return !dt; }
+  // The viscous term implicit: no viscous limit in the CFL step, a Krylov solver (time.krylov).
+  bool implicit_viscosity() const { return integrator == "leapfrog_imex" || integrator == "arkode_imex"; }
 };
 
 struct OutputConfig {

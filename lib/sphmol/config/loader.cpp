@@ -60,6 +60,20 @@ void apply_override(YAML::Node& root, const std::string& text, YamlOrigin& origi
   }
   if (!root.IsDefined() || root.IsNull()) root.reset(YAML::Node(YAML::NodeType::Map));
   if (!root.IsMap()) return;  // validation reports the malformed document itself
+  // key=null (or ~) takes the key out, so the default or another key applies: time.dt=null for CFL
+  // steps, particles_across=null beside a spacing. A key that is not there leaves nothing to do.
+  const std::string raw = trim(text.substr(eq + 1));
+  if (raw == "null" || raw == "~" || raw == "Null" || raw == "NULL") {
+    YAML::Node cur;
+    cur.reset(root);
+    for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+      if (!cur.IsMap() || !cur[segments[i]].IsDefined()) return;
+      YAML::Node child = cur[segments[i]];
+      cur.reset(child);
+    }
+    if (cur.IsMap()) cur.remove(segments.back());
+    return;
+  }
   YAML::Node cur;
   cur.reset(root);
   std::string sofar;
@@ -588,7 +602,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     time.check("t_end", t.t_end > 0, t.t_end, "> 0 s");
     if (const auto v = time.string("integrator"))
       t.integrator = time.choice("integrator", *v, {"arkode_erk", "leapfrog", "leapfrog_kdk", "cvode_adams", "leapfrog_imex", "arkode_imex"});
-    const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
+    const bool imex = t.implicit_viscosity();
     if (imex) {
       // The implicit part is the Morris viscous sum, linear in the fluid velocities with the walls'
       // own (prescribed or Morris-extrapolated) velocities (time/viscous_operator.hpp).
@@ -728,7 +742,11 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.real("every")) {
       // An empty list (--set output.times=[] to switch a file's list off) gives no times.
       if (out.has("times") && !out.reals("times")->empty()) out.fail("every", "give either output.times or output.every, not both");
-      out.check("every", *v > 0 && *v <= c.time.t_end, *v, "> 0 s and at most time.t_end");
+      out.check("every", *v > 0, *v, "> 0 s");
+      // Like output times past t_end (a file shortened with --set time.t_end): dropped, with a notice.
+      if (*v > c.time.t_end)
+        c.notices.push_back(out.where("every") + ": " + number_text(*v) + " s is past time.t_end = " + number_text(c.time.t_end) +
+                            " s: the only output time is t_end");
       const double n = std::floor(c.time.t_end / *v * (1 + 1e-12));
       if (n > 1e6) out.fail("every", number_text(*v) + " s gives " + number_text(n) + " output times (at most 1e6)");
       // k * every rounds off: a time within 1e-9 every of t_end is t_end.

@@ -121,7 +121,7 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     double dt_max = std::numeric_limits<double>::infinity();
     if (barotropic && f.eos.sound_speed > 0) dt_max = std::min(dt_max, t.cfl.acoustic * h / f.eos.sound_speed);
     // The IMEX integrators treat the viscous term implicitly: their CFL step has no viscous limit.
-    const bool imex = t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex";
+    const bool imex = t.implicit_viscosity();
     const double nu = std::max(f.kinematic_viscosity, s.kinematic_viscosity);
     // The bulk viscosity is explicit with every integrator (rhs/sph_system.hpp, cfl_step).
     const double diffusivity = CflConfig::diffusivity(imex ? 0.0 : nu, d.bulk_zeta(f.eos.sound_speed, h));

@@ -126,7 +126,7 @@ std::string to_yaml(const Config& c) {
       << "    viscous: " << num(t.cfl.viscous) << "\n";
   if (t.dt)
     y << "  dt: " << num(*t.dt) << "\n";
-  if (t.integrator == "leapfrog_imex" || t.integrator == "arkode_imex") {
+  if (t.implicit_viscosity()) {
     y << "  krylov:\n    solver: " << t.krylov.solver << "\n";
     if (t.integrator == "leapfrog_imex") y << "    tolerance: " << num(t.krylov.tolerance) << "\n";
     y << "    max_iterations: " << t.krylov.max_iterations << "\n";
