@@ -1,12 +1,19 @@
 // The shock-tube case module: its tube and initial-state keys, checks and scene size.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "sphmol/cases/case_keys.hpp"
 #include "sphmol/cases/case_module.hpp"
 #include "sphmol/cases/shock_tube/shock_tube_case.hpp"
 #include "sphmol/cases/shock_tube/shock_tube_settings.hpp"
+#include "sphmol/cases/shock_tube/shock_tube_wall_clearance.hpp"
+#include "sphmol/kernels/registry.hpp"
+#include "sphmol/reference/exact_riemann.hpp"
 
 namespace sphmol {
 
@@ -22,6 +29,13 @@ std::string ShockTubeSettings::to_yaml() const {
 }
 
 namespace {
+
+// x to 4 significant digits, rounded down (a time allowed must stay allowed as printed).
+std::string four_digits_down(double x) {
+  if (!(x > 0.0)) return number_text(x);
+  const double scale = std::pow(10.0, 3 - static_cast<int>(std::floor(std::log10(x))));
+  return number_text(std::floor(x * scale) / scale);
+}
 
 CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   auto s = std::make_shared<ShockTubeSettings>();
@@ -39,8 +53,9 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
     geo.check("tube_width", s->tube_width > 0, s->tube_width, "> 0");
   }
   MapReader st = r.top.section("shock_tube", {"left", "right", "setup", "smoothing"});
+  std::vector<MapReader> state_keys;
   for (const char* side : {"left", "right"}) {
-    MapReader q = st.section(side, {"density", "pressure", "velocity"});
+    MapReader& q = state_keys.emplace_back(st.section(side, {"density", "pressure", "velocity"}));
     ShockTubeState& state = std::string(side) == "left" ? s->left : s->right;
     state.density = q.required(q.real("density"), "density", "> 0");
     q.check("density", state.density > 0, state.density, "> 0");
@@ -79,11 +94,55 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
     r.top.fail("shock_tube", "the states separate into a vacuum (right.velocity - left.velocity = " +
                                  number_text(R.velocity - L.velocity) + " >= 2 (aL + aR) / (gamma - 1) = " +
                                  number_text(2.0 / (gm - 1.0) * (aL + aR)) + " m/s), which the exact Riemann solver does not cover");
+  // The end walls are at rest: a state moving along the tube pulls away from (or runs into) its end
+  // wall from t = 0 and launches a wave there that the infinite tube's solution does not hold.
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ShockTubeState& q = k == 0 ? L : R;
+    if (q.velocity != 0.0)
+      state_keys[k].fail("velocity", "= " + number_text(q.velocity) + " m/s: the end walls are at rest, so gas moving along the tube "
+                         "leaves or runs into its end wall from t = 0 and launches a wave there that the exact (infinite-tube) "
+                         "solution does not contain; the shock tube needs both states at rest (velocity 0)");
+  }
   if (c.dimension == 1 && d.particles_across > 0)
     r.discretization.fail("particles_across", "counts particles across the tube width, which the 1D shock tube does not have; give discretization.spacing");
 
   const double Lt = s->tube_length, W = s->tube_width;
   const double dx = case_keys::spacing(c, W);
+  // The run is measured against the infinite tube's solution: t_end must come before the outermost
+  // waves reach the gas the end walls' particles act on, the kernel support of the end's gas and one
+  // spacing more (the wall layers' rule). Measured on the 1D tubes against tubes twice as long: at that
+  // time the largest density difference is 1e-5 of the density, 1e-4 when the shock is one support
+  // from the wall (docs/verification.md, "The end walls").
+  {
+    const ExactRiemannSolver exact({L.density, 0.0, L.pressure}, {R.density, 0.0, R.pressure}, gm);
+    const double support = c.dimension == 1 ? kernel_info<1>(d.kernel).support : kernel_info<2>(d.kernel).support;
+    const double rho_dense = std::max(L.density, R.density);
+    std::array<double, 2> reach{};
+    for (std::size_t k = 0; k < 2; ++k) {
+      // The end gas's own spacing (m / rho)^(1/D), and h0 = smoothing_ratio times it (shock_tube_scene.cpp).
+      const double rho = k == 0 ? L.density : R.density;
+      const double sp = s->setup == "equal_mass" ? dx * std::pow(rho_dense / rho, 1.0 / c.dimension) : dx;
+      reach[k] = (support * d.smoothing_ratio + 1.0) * sp;
+    }
+    const ShockTubeClearance clear = shock_tube_clearance(exact, 0.5 * Lt, reach);
+    if (c.time.t_end > clear.t_clear) {
+      const double need = shock_tube_length_for(exact, c.time.t_end, reach);
+      const double need_whole = std::ceil(need / dx * (1.0 - 1e-12)) * dx;
+      const std::string wave = std::string(clear.side == 0 ? "left-moving " : "right-moving ") + (clear.shock ? "shock" : "rarefaction head");
+      const auto side = static_cast<std::size_t>(clear.side);
+      const std::string end = clear.side == 0 ? "left" : "right";
+      const std::string when =
+          clear.t_clear > 0.0
+              ? "the " + wave + " (" + four_digits_down(clear.speed) + " m/s) comes within " + four_digits_down(reach[side]) +
+                    " m (the kernel support and one spacing) of the " + end + " end wall at t = " + four_digits_down(clear.t_clear) + " s"
+              : "the tube's half length " + number_text(0.5 * Lt) + " m lies within the " + end + " end wall's reach, " +
+                    four_digits_down(reach[side]) + " m (the kernel support and one spacing), from the start";
+      r.time.fail("t_end", "= " + number_text(c.time.t_end) + " s is past the time the waves reach the end walls: " + when +
+                               "; from then on the run no longer follows the exact solution of an infinite tube it is measured against. " +
+                               (clear.t_clear > 0.0 ? "Give time.t_end <= " + four_digits_down(clear.t_clear) + " s, or lengthen" : std::string("Lengthen")) +
+                               " the tube: geometry.tube_length >= " + number_text(need_whole) + " m for this t_end");
+    }
+  }
   const double nx = case_keys::whole_spacings(geo, "tube_length", Lt, dx, "geometry.tube_length");
   const double ny = c.dimension == 2 ? case_keys::whole_spacings(geo, "tube_width", W, dx, "geometry.tube_width") : 1.0;
   // One layer more than the support: the gas next to the end walls must stay at rest until t_end.
