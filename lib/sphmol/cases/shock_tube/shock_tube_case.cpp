@@ -34,33 +34,74 @@ double crossing(const ShockTubeBin& a, const ShockTubeBin& b, double fa, double 
 
 }  // namespace
 
+ShockTubeWaveKind shock_tube_wave_kind(const ExactRiemannSolver& exact, int side) {
+  const double p = side == 0 ? exact.left().p : exact.right().p;
+  // p* equal to the side's pressure to round-off: a wave of no strength, nothing to read.
+  if (std::abs(exact.p_star() - p) <= 1e-12 * p) return ShockTubeWaveKind::none;
+  return exact.p_star() > p ? ShockTubeWaveKind::shock : ShockTubeWaveKind::rarefaction;
+}
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// The leftmost x within [lo, hi] where the field f passes `level` rising (rightwards) or falling.
+double leftmost_crossing(const std::vector<ShockTubeBin>& bins, double ShockTubeBin::*f, double level, bool rising, double lo,
+                         double hi) {
+  for (std::size_t k = 0; k + 1 < bins.size(); ++k) {
+    if (bins[k].x < lo) continue;
+    if (bins[k + 1].x > hi) break;
+    const double a = bins[k].*f, b = bins[k + 1].*f;
+    if (rising ? (a < level && b >= level) : (a >= level && b < level)) return crossing(bins[k], bins[k + 1], a, b, level);
+  }
+  return nan;
+}
+
+// The profile seen from the other side: x -> -x, u -> -u, in ascending x.
+std::vector<ShockTubeBin> mirrored(const std::vector<ShockTubeBin>& bins) {
+  std::vector<ShockTubeBin> m(bins.rbegin(), bins.rend());
+  for (auto& b : m) {
+    b.x = -b.x;
+    b.u = -b.u;
+  }
+  return m;
+}
+
+// The left wave of the given kind on `bins`, u_s / rho_s the left state, u* / rho*_s the star state
+// beside it.
+ShockTubeSideWave left_wave(const std::vector<ShockTubeBin>& bins, ShockTubeWaveKind kind, double u_s, double rho_s, double u_star,
+                            double rho_star) {
+  ShockTubeSideWave w{kind, nan, nan, nan};
+  if (kind == ShockTubeWaveKind::rarefaction) {  // u rises from u_s to u* > u_s (Toro 2009, eq 4.56)
+    w.head = leftmost_crossing(bins, &ShockTubeBin::u, u_s + 0.05 * (u_star - u_s), true, -inf, inf);
+    w.tail = leftmost_crossing(bins, &ShockTubeBin::u, u_s + 0.95 * (u_star - u_s), true, -inf, inf);
+  } else if (kind == ShockTubeWaveKind::shock) {  // rho rises to rho*_s, u falls to u* < u_s
+    w.head = w.tail = leftmost_crossing(bins, &ShockTubeBin::rho, 0.5 * (rho_s + rho_star), true, -inf, inf);
+    w.shock_velocity = leftmost_crossing(bins, &ShockTubeBin::u, 0.5 * (u_s + u_star), false, -inf, inf);
+  }
+  return w;
+}
+
+}  // namespace
+
 ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRiemannSolver& exact) {
-  ShockTubeWaves w{nan, nan, nan, nan, nan};
-  const double us = exact.u_star();
-  const std::size_t n = bins.size();
-  auto leftmost_rise = [&](double level) {
-    for (std::size_t k = 0; k + 1 < n; ++k)
-      if (bins[k].u < level && bins[k + 1].u >= level) return crossing(bins[k], bins[k + 1], bins[k].u, bins[k + 1].u, level);
-    return nan;
-  };
-  w.rarefaction_head = leftmost_rise(0.05 * us);
-  w.rarefaction_tail = leftmost_rise(0.95 * us);
-  // The rightmost x within [lo, hi] where the field f falls (rightwards) through `level`.
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  auto rightmost_fall = [&](double ShockTubeBin::*f, double level, double lo, double hi) {
-    for (std::size_t k = n; k-- > 1;) {
-      if (bins[k].x > hi) continue;
-      if (bins[k - 1].x < lo) break;
-      if (bins[k - 1].*f >= level && bins[k].*f < level)
-        return crossing(bins[k - 1], bins[k], bins[k - 1].*f, bins[k].*f, level);
-    }
-    return nan;
-  };
-  w.shock_velocity = rightmost_fall(&ShockTubeBin::u, 0.5 * us, -inf, inf);
-  w.shock = rightmost_fall(&ShockTubeBin::rho, 0.5 * (exact.rho_star_right() + exact.right().rho), -inf, inf);
-  if (std::isnan(w.shock) || std::isnan(w.rarefaction_tail)) return w;
-  w.contact = rightmost_fall(&ShockTubeBin::rho, 0.5 * (exact.rho_star_left() + exact.rho_star_right()), w.rarefaction_tail,
-                             w.shock);
+  const auto& L = exact.left();
+  const auto& R = exact.right();
+  const std::vector<ShockTubeBin> m = mirrored(bins);
+  ShockTubeWaves w;
+  w.left = left_wave(bins, shock_tube_wave_kind(exact, 0), L.u, L.rho, exact.u_star(), exact.rho_star_left());
+  w.right = left_wave(m, shock_tube_wave_kind(exact, 1), -R.u, R.rho, -exact.u_star(), exact.rho_star_right());
+  for (double* x : {&w.right.head, &w.right.tail, &w.right.shock_velocity}) *x = -*x;
+  w.contact = nan;
+  // Between the inner edges of the waves that exist (the whole tube beside a wave of no strength).
+  const double lo = w.left.kind == ShockTubeWaveKind::none ? -inf : w.left.tail;
+  const double hi = w.right.kind == ShockTubeWaveKind::none ? inf : w.right.tail;
+  const double rl = exact.rho_star_left(), rr = exact.rho_star_right();
+  if (std::isnan(lo) || std::isnan(hi) || rl == rr) return w;
+  const double level = 0.5 * (rl + rr);
+  // Nearest the lighter side: read from that side, on the mirrored profile when it is the right one.
+  w.contact = rl < rr ? leftmost_crossing(bins, &ShockTubeBin::rho, level, true, lo, hi)
+                      : -leftmost_crossing(m, &ShockTubeBin::rho, level, true, -hi, -lo);
   return w;
 }
 
@@ -203,18 +244,40 @@ nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const
   auto offset = [this](double sph, double exact) {
     return std::isnan(sph) || std::isnan(exact) ? nlohmann::json(nullptr) : nlohmann::json((sph - exact) / spacing_);
   };
-  // local: the x spacing of the gas at the wave, on its denser side (rarefaction and contact: the
-  // left gas; shock: the shocked right gas), for the left-facing fan and right-moving shock the
-  // detector reads.
-  auto wave = [&](double sph, double exact, double crossing, double local) {
+  // local: the x spacing of the gas at the wave, on its denser side (fan head: the undisturbed gas;
+  // fan tail and shock: the star state of the wave's side; contact: the denser star state).
+  auto wave = [&](double sph, double exact, double crossing, double local, const char* side) {
     nlohmann::json j{
         {"sph", pos(sph)}, {"exact", exact}, {"exact_crossing", pos(crossing)}, {"offset_spacings", offset(sph, crossing)},
-        {"local_spacing", local}};
+        {"local_spacing", local}, {"side", side}};
     j["offset_local_spacings"] = std::isnan(sph) || std::isnan(crossing) ? nlohmann::json(nullptr)
                                                                          : nlohmann::json((sph - crossing) / local);
     return j;
   };
-  const double rho_l = exact_->sample(x0, t, 0.0).rho;
+  // Each wave of the exact pattern, named by its kind; prefixed by its side when both sides have one of
+  // that kind (two shocks, two fans).
+  nlohmann::json waves = nlohmann::json::object();
+  const bool same_kind = w.left.kind == w.right.kind;
+  for (int side = 0; side < 2; ++side) {
+    const ShockTubeSideWave& sw = side == 0 ? w.left : w.right;
+    const ShockTubeSideWave& sx = side == 0 ? wx.left : wx.right;
+    const char* name = side == 0 ? "left" : "right";
+    const std::string prefix = same_kind ? std::string(name) + "_" : std::string();
+    const double rho_side = side == 0 ? exact_->left().rho : exact_->right().rho;
+    const double rho_star = side == 0 ? exact_->rho_star_left() : exact_->rho_star_right();
+    const double head = side == 0 ? ex.left_head : ex.right_head, tail = side == 0 ? ex.left_tail : ex.right_tail;
+    if (sw.kind == ShockTubeWaveKind::shock) {
+      waves[prefix + "shock"] = wave(sw.head, head, sx.head, local_spacing(side, rho_star), name);
+      waves[prefix + "shock_velocity"] = wave(sw.shock_velocity, head, sx.shock_velocity, local_spacing(side, rho_star), name);
+    } else if (sw.kind == ShockTubeWaveKind::rarefaction) {
+      waves[prefix + "rarefaction_head"] = wave(sw.head, head, sx.head, local_spacing(side, rho_side), name);
+      waves[prefix + "rarefaction_tail"] = wave(sw.tail, tail, sx.tail, local_spacing(side, rho_star), name);
+    }
+  }
+  const bool left_denser = exact_->rho_star_left() >= exact_->rho_star_right();
+  waves["contact"] = wave(w.contact, ex.contact, wx.contact,
+                          left_denser ? local_spacing(0, exact_->rho_star_left()) : local_spacing(1, exact_->rho_star_right()),
+                          "between");
   const double inv_n = 1.0 / n;
   return {{"t", t},
           {"L1_rho", r.value(l1) * inv_n},
@@ -225,14 +288,7 @@ nlohmann::json ShockTubeCase<D>::measure_pieces(const SphSystem<D>& whole, const
           {"L1_mid_u", r.value(l1_mid + 1) * inv_mid},
           {"L1_mid_p", r.value(l1_mid + 2) * inv_mid},
           {"L1_mid_e", r.value(l1_mid + 3) * inv_mid},
-          {"waves",
-           {{"shock", wave(w.shock, ex.right_head, wx.shock, local_spacing(1, exact_->rho_star_right()))},
-            {"shock_velocity",
-             wave(w.shock_velocity, ex.right_head, wx.shock_velocity, local_spacing(1, exact_->rho_star_right()))},
-            {"contact", wave(w.contact, ex.contact, wx.contact, local_spacing(0, exact_->rho_star_left()))},
-            {"rarefaction_head", wave(w.rarefaction_head, ex.left_head, wx.rarefaction_head, local_spacing(0, rho_l))},
-            {"rarefaction_tail",
-             wave(w.rarefaction_tail, ex.left_tail, wx.rarefaction_tail, local_spacing(0, exact_->rho_star_left()))}}}};
+          {"waves", waves}};
 }
 
 template <int D>
@@ -244,19 +300,28 @@ void ShockTubeCase<D>::annotate(nlohmann::json& summary) const {
                        : boundary_ == "virtual_repulsive"
                            ? "virtual particles with the repulsive force (Niedoba 2012, eq 2.76) on y = -dx and y = W + dx"
                            : "none: y periodic";
+  auto kind = [this](int side) {
+    const ShockTubeWaveKind k = shock_tube_wave_kind(*exact_, side);
+    return std::string(k == ShockTubeWaveKind::shock ? "shock" : k == ShockTubeWaveKind::rarefaction ? "rarefaction" : "none");
+  };
   summary["exact"] = {{"p_star", exact_->p_star()},
                       {"u_star", exact_->u_star()},
                       {"rho_star_left", exact_->rho_star_left()},
                       {"rho_star_right", exact_->rho_star_right()},
-                      {"gamma", gamma_}};
+                      {"gamma", gamma_},
+                      {"wave_pattern", {{"left", kind(0)}, {"right", kind(1)}}}};
   summary["error_definitions"] = {
       {"L1", "mean over all fluid particles of |f_sph - f_exact(x_i, t)| (with y periodic every row is a mid-line; "
              "with walls the rows next to them are included)"},
       {"L1_mid", "the same mean over the mid-line particles only, |y - W/2| < dx (1D: all particles)"},
-      {"waves", "threshold crossings on the x-binned profile: rarefaction head/tail where u passes 5%/95% of u*, "
-                "shock where rho passes (rho*_R + rho_R)/2 (the middle of the density jump), shock_velocity where u falls "
-                "through u*/2 (across a smeared shock u leads rho, so this reads ahead of the jump's middle by a "
-                "fraction of the shock's width), contact where rho passes (rho*_L + rho*_R)/2. exact: the wave's exact "
+      {"waves", "the waves of the exact solution (exact.wave_pattern: a shock, a rarefaction or none on each side, and the "
+                "contact), each read off the x-binned profile by a threshold crossing, the outermost on its side "
+                "(side: the state it moves into); named by kind, with left_/right_ when both sides have that kind. With "
+                "u_s, rho_s the side's initial state and u*, rho*_s the star state beside it: rarefaction head/tail "
+                "where u passes u_s + 5%/95% of (u* - u_s), shock where rho passes (rho*_s + rho_s)/2 (the middle of the "
+                "density jump), shock_velocity where u passes (u* + u_s)/2 (across a smeared shock u leads rho, so this "
+                "reads ahead of the jump's middle by a fraction of the shock's width), contact where rho passes "
+                "(rho*_L + rho*_R)/2. exact: the wave's exact "
                 "position (fan head and tail: its edges); exact_crossing: the same threshold crossing on the exact profile; "
                 "offset_spacings = (sph - exact_crossing) / discretization.spacing (the denser side's spacing); "
                 "offset_local_spacings = (sph - exact_crossing) / local_spacing, the x spacing m / (rho dy) (1D: m / rho) "

@@ -17,26 +17,36 @@ struct ShockTubeBin {
   double x, rho, u, p, e;
 };
 
-// Wave positions read off a binned profile, each by a threshold crossing (linear interpolation
-// between bin centres):
-//   rarefaction_head: leftmost x where u rises through 5 % of u*;
-//   rarefaction_tail: leftmost x where u rises through 95 % of u*;
-//   shock:            rightmost x where rho rises (leftwards) through (rho*_R + rho_R)/2, the middle of
-//                     the density jump (like the contact);
-//   shock_velocity:   rightmost x where u falls through 50 % of u* (u is u* behind the shock, u_R = 0
-//                     ahead in the shipped tubes), reported beside it. A shock smeared over a width w
+// The waves of the exact solution (Toro 2009, §4.2): on each side a shock (p* above that side's
+// pressure), a rarefaction (below) or none (equal), and the contact between them. detect_waves reads
+// each wave the exact solution has off a binned profile by a threshold crossing (linear interpolation
+// between bin centres), the outermost crossing on its side; u_s, rho_s are the side's initial state
+// and u*, rho*_s the star state on that side:
+//   rarefaction head: where u passes u_s + 5 % of (u* - u_s); tail: u_s + 95 % of (u* - u_s);
+//   shock:            where rho passes (rho*_s + rho_s)/2, the middle of the density jump (like the contact);
+//   shock_velocity:   where u passes (u* + u_s)/2, reported beside it. A shock smeared over a width w
 //                     reads ahead by a fraction of w here: across a steady shock of speed S the mass flux
-//                     gives u = S (1 - rho_R / rho) (Rankine-Hugoniot), so u passes u*/2 where rho has
-//                     risen only (rho - rho_R) / (rho*_R - rho_R) = 0.32 of the jump in Sod's tube, not
+//                     gives u - u_s = S (1 - rho_s / rho) (Rankine-Hugoniot), so u passes halfway where rho
+//                     has risen only (rho - rho_s) / (rho*_s - rho_s) = 0.32 of the jump in Sod's tube, not
 //                     half of it. The density crossing has no such bias;
-//   contact:          between tail and shock, the rightmost x where rho rises (leftwards) through
-//                     (rho*_L + rho*_R)/2.
-// The summary reports each with its offset from the exact profile's crossing, in spacings of the
-// denser side and in local particle spacings (the x spacing of the gas at the wave, see local_spacing).
-// NaN when a crossing is not found.
-struct ShockTubeWaves {
-  double shock, contact, rarefaction_head, rarefaction_tail, shock_velocity;
+//   contact:          between the two waves' inner edges, where rho passes (rho*_L + rho*_R)/2, the
+//                     crossing nearest the lighter side.
+// The right wave is read as the left one on the mirrored profile (x -> -x, u -> -u), so a mirrored
+// problem gives mirrored positions. The summary reports each with its offset from the exact profile's
+// crossing, in spacings of the denser side and in local particle spacings (the x spacing of the gas at
+// the wave, see local_spacing). NaN when a crossing is not found or the wave does not exist.
+enum class ShockTubeWaveKind { none, shock, rarefaction };
+struct ShockTubeSideWave {
+  ShockTubeWaveKind kind = ShockTubeWaveKind::none;
+  double head, tail;      // rarefaction: outer and inner edge; shock: both the density crossing
+  double shock_velocity;  // shock: the velocity crossing
 };
+struct ShockTubeWaves {
+  ShockTubeSideWave left, right;
+  double contact;
+};
+// The kind of the left (side 0) or right (side 1) wave of the exact solution.
+ShockTubeWaveKind shock_tube_wave_kind(const ExactRiemannSolver& exact, int side);
 ShockTubeWaves detect_waves(const std::vector<ShockTubeBin>& bins, const ExactRiemannSolver& exact);
 
 template <int D>
