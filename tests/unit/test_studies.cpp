@@ -59,6 +59,9 @@ TEST_CASE("stability classification", "[studies]") {
   CHECK(classify_run(summary({0.3, 0.011, 0.009, 0.011, 0.009, 0.011, 0.009, 0.011, 0.009, 0.011}), 0.002).label == "stable");  // small wiggles ignored
   CHECK(classify_run(summary({}, "blown_up"), 0.002).label == "blown_up");
   CHECK(classify_run(summary({0.1, -3.0, 40.0, -200.0}), 0.002).label == "blown_up");  // unbounded growth
+  // A case without e_signed: not called stable, only not blown up.
+  nlohmann::json plain{{"status", "completed"}, {"errors", nlohmann::json::array({{{"L_inf", 0.3}}, {{"L_inf", 0.2}}})}};
+  CHECK(classify_run(plain, 0.002).label == "not_blown_up");
 }
 
 TEST_CASE("cost at a target error: log-log interpolation on the error-vs-cost curve", "[studies]") {

@@ -29,6 +29,12 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
   std::vector<double> s;
   for (const auto& m : summary["errors"])
     if (m.contains("e_signed")) s.push_back(m["e_signed"].get<double>());
+  // A case without a signed error (Taylor-Green, the cavity, the tanks, scenes) gives nothing to
+  // test for oscillation or growth: its run is only known not to have blown up.
+  if (s.empty()) {
+    c.label = "not_blown_up";
+    return c;
+  }
   for (double x : s) c.max_abs_signed = std::max(c.max_abs_signed, std::abs(x));
   // An error larger than the velocity scale itself is unbounded growth (a numerical instability
   // that has not yet thrown a particle out), not the bounded oscillation.
@@ -77,6 +83,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   by_class["stable"] = ChartSeries{"stable", {}, {}, "forest-green"};
   by_class["oscillating"] = ChartSeries{"oscillating", {}, {}, "dark-orange"};
   by_class["blown_up"] = ChartSeries{"blown_up", {}, {}, "red"};
+  by_class["not_blown_up"] = ChartSeries{"not blown up (no e_signed)", {}, {}, "grey40"};
   nlohmann::json runs = nlohmann::json::array();
   for (double fc : opt.sound_speed_factors)
     for (double fs : opt.step_factors) {
@@ -132,7 +139,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   };
   chart.logx = spans_decade(&ChartSeries::x);
   chart.logy = spans_decade(&ChartSeries::y);
-  for (const char* k : {"stable", "oscillating", "blown_up"})
+  for (const char* k : {"stable", "oscillating", "not_blown_up", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
   const std::string problem = draw_chart(chart, opt.output_dir, "stability");
   nlohmann::json j{{"case", base.case_name}, {"step_mode", fixed ? "fixed dt" : "cfl factor"}, {"osc_threshold", opt.osc_threshold},
