@@ -331,7 +331,7 @@ TEST_CASE("stability on the dam break: runs without a Martin-Moyce error are rep
   const auto j = read_json(out + "/stability.json");
   REQUIRE(j["runs"].size() == 2);
   for (const auto& r : j["runs"]) {
-    CHECK(r["class"] == "stable");
+    CHECK(r["class"] == "not_blown_up");  // the dam break has no e_signed to test for oscillation
     CHECK(r["error"].is_null());
   }
   CHECK(slurp(out + ".log").find("front_rms_martin_moyce was not measured") != std::string::npos);

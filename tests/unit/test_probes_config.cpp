@@ -65,8 +65,14 @@ TEST_CASE("probes config: errors name the key and its line", "[probes][config]")
         "case.yaml:19: probes[0].type: a plane probe needs dimension 3 (this run is 2D; use a line probe)");
   CHECK(error_of(with_probes("  - {name: f, type: force, body: obstacle}\n")) ==
         "case.yaml:19: probes[0].body: the scene has no wall body named 'obstacle' (this scene has no named wall bodies)");
-  CHECK(error_of(with_probes("  - {name: a, type: point, at: [0, 0], every: 0.6}\n")) ==
-        "case.yaml:19: probes[0].every: 0.6 is out of range (allowed: > 0 s and at most time.t_end = 0.5 s)");
+  CHECK(error_of(with_probes("  - {name: a, type: point, at: [0, 0], every: 0}\n")) ==
+        "case.yaml:19: probes[0].every: 0 is out of range (allowed: > 0 s)");
+  // Past t_end (a file shortened with --set time.t_end): accepted, with a notice.
+  const Config late = load_config_string(with_probes("  - {name: a, type: point, at: [0, 0], every: 0.6}\n"), {}, "case.yaml");
+  REQUIRE(late.probes.size() == 1);
+  bool said = false;
+  for (const auto& n : late.notices) said = said || n == "case.yaml:19: probes[0].every: 0.6 s is past time.t_end = 0.5 s: the probe samples t = 0 and t_end only";
+  CHECK(said);
   CHECK(error_of(with_probes("  - {name: a, type: line, from: [0, 0], to: [0, 1.0e-4], points: 1}\n"))
             .rfind("case.yaml:19: probes[0].points: 1 is out of range", 0) == 0);
   CHECK(error_of(with_probes("  - {name: a, type: point, at: [0, 0], fields: [p, vel]}\n"))

@@ -804,7 +804,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                         " (" + c.discretization.position_correction.reason + ")");
   resolve_velocity_defaults(c, module, fluid, disc);
   // Probes (probes/probe_config.hpp) after the case: a force probe names one of its wall bodies.
-  c.probes = read_probes(top, c, c.case_settings->wall_bodies());
+  c.probes = read_probes(top, c, c.case_settings->wall_bodies(), &c.notices);
   check_scene(c, readers, own.size);
   return c;
 }

@@ -81,7 +81,8 @@ std::vector<std::vector<double>> ProbeConfig::sample_points() const {
   return pts;
 }
 
-std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const std::vector<std::string>& bodies) {
+std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const std::vector<std::string>& bodies,
+                                     std::vector<std::string>* notices) {
   const int dimension = config.dimension;
   const double t_end = config.time.t_end;
   const std::vector<std::string> types{"point", "line", "plane", "height_gauge", "force"};
@@ -117,8 +118,11 @@ std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const
     p.type = any.choice("type", any.required(any.string("type"), "type", join(types)), types);
     MapReader r = any.with_keys(keys_of(p.type));
     if (const auto v = r.real("every")) {
-      if (!(*v > 0) || *v > t_end)
-        r.fail("every", shown(*v) + " is out of range (allowed: > 0 s and at most time.t_end = " + shown(t_end) + " s)");
+      if (!(*v > 0)) r.fail("every", shown(*v) + " is out of range (allowed: > 0 s)");
+      // As output.every: a file shortened with --set time.t_end still loads.
+      if (*v > t_end && notices)
+        notices->push_back(r.where("every") + ": " + shown(*v) + " s is past time.t_end = " + shown(t_end) +
+                           " s: the probe samples t = 0 and t_end only");
       p.every = *v;
     }
     const std::string dims = std::to_string(dimension) + "D";

@@ -38,7 +38,9 @@ struct Config;
 // time.t_end, discretization); `bodies`: the names of the scene's wall bodies (index =
 // Particles::body), empty for scenes without named bodies. Throws ConfigError through the reader
 // (FILE:LINE: probes[i].key: message).
-std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const std::vector<std::string>& bodies);
+// `notices` receives what is accepted but worth saying (an `every` past t_end).
+std::vector<ProbeConfig> read_probes(MapReader& top, const Config& config, const std::vector<std::string>& bodies,
+                                     std::vector<std::string>* notices = nullptr);
 
 // The resolved `probes` section as YAML (top-level key at column 0); "" when there are none.
 std::string probes_to_yaml(const std::vector<ProbeConfig>& probes);
