@@ -12,6 +12,7 @@
 
 #include "sphmol/time/blow_up.hpp"
 #include "sphmol/time/erk_table.hpp"
+#include "sphmol/time/saved_count.hpp"
 #include "sphmol/time/state_vector.hpp"
 #include "sphmol/time/step_limit.hpp"
 
@@ -42,9 +43,7 @@ nlohmann::json ArkodeErk::describe() const {
     j["atol"] = opt_.atol;
     if (mem_) {
       // Step attempts whose size the CFL limit set, and those the error controller set.
-      long exp_steps = 0, acc_steps = 0;
-      ERKStepGetNumExpSteps(mem_, &exp_steps);
-      ERKStepGetNumAccSteps(mem_, &acc_steps);
+      const auto [exp_steps, acc_steps] = limited_steps();
       j["stability_limited_steps"] = exp_steps;
       j["accuracy_limited_steps"] = acc_steps;
     }
@@ -121,11 +120,25 @@ double ArkodeErk::step_toward(double tout) {
   return t_;
 }
 
+std::pair<long, long> ArkodeErk::limited_steps() const {
+  long exp_steps = 0, acc_steps = 0;
+  if (mem_) {
+    ERKStepGetNumExpSteps(mem_, &exp_steps);
+    ERKStepGetNumAccSteps(mem_, &acc_steps);
+  }
+  return {exp_steps + stability_limited_before_, acc_steps + accuracy_limited_before_};
+}
+
 nlohmann::json ArkodeErk::save_state() const {
   double h = 0.0;
   ERKStepGetCurrentStep(mem_, &h);
   const IntegratorStats s = stats();
-  return {{"step", encode_doubles({h})}, {"steps", s.steps}, {"rejected_steps", s.rejected_steps}};
+  const auto [exp_steps, acc_steps] = limited_steps();
+  return {{"step", encode_doubles({h})},
+          {"steps", s.steps},
+          {"rejected_steps", s.rejected_steps},
+          {"stability_limited_steps", exp_steps},
+          {"accuracy_limited_steps", acc_steps}};
 }
 
 void ArkodeErk::restore_state(const nlohmann::json& s) {
@@ -133,6 +146,8 @@ void ArkodeErk::restore_state(const nlohmann::json& s) {
   if (!opt_.fixed_step && h > 0.0 && std::isfinite(h)) check(ERKStepSetInitStep(mem_, h), "SetInitStep");
   steps_before_ = s.at("steps").get<long>();
   rejected_before_ = s.at("rejected_steps").get<long>();
+  stability_limited_before_ = saved_count(s, "stability_limited_steps");
+  accuracy_limited_before_ = saved_count(s, "accuracy_limited_steps");
 }
 
 void ArkodeErk::resize(OdeSystem& sys, double t, double* y) {

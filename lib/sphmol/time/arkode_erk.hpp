@@ -8,6 +8,7 @@
 #include <sundials/sundials_context.h>
 
 #include <optional>
+#include <utility>
 
 #include "sphmol/time/integrator.hpp"
 
@@ -32,7 +33,7 @@ class ArkodeErk final : public Integrator {
   void advance(double tout) override;
   IntegratorStats stats() const override;
   double step_toward(double tout) override;
-  // Saves the current step size; a restart begins with it as the initial step. The Runge-Kutta
+  // Saves the current step size and the counters; a restart begins with that step as the initial step. The Runge-Kutta
   // history and error-controller memory are not saved, so a restart agrees within the tolerance,
   // not bit for bit.
   nlohmann::json save_state() const override;
@@ -50,6 +51,8 @@ class ArkodeErk final : public Integrator {
  private:
   static int rhs_callback(double t, N_Vector y, N_Vector ydot, void* self);
   static int stability_callback(N_Vector y, double t, double* hstab, void* self);
+  // Step attempts the CFL limit sized, and those the error controller sized, since the run's start.
+  std::pair<long, long> limited_steps() const;
 
   Options opt_;
   OdeSystem* sys_ = nullptr;
@@ -58,6 +61,7 @@ class ArkodeErk final : public Integrator {
   void* mem_ = nullptr;
   double t_ = 0.0;
   long steps_before_ = 0, rejected_before_ = 0;  // counted before a restart
+  long stability_limited_before_ = 0, accuracy_limited_before_ = 0;  // the same, from the checkpoint
 };
 
 }  // namespace sphmol

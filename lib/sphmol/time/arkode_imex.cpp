@@ -13,6 +13,7 @@
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/time/block_error_weights.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/saved_count.hpp"
 #include "sphmol/time/state_vector.hpp"
 #include "sphmol/time/step_limit.hpp"
 
@@ -41,11 +42,10 @@ void ArkodeImex::release() {
 }
 
 void ArkodeImex::restart(OdeSystem& sys, double t, double* y) {
-  const IntegratorStats s = stats();
+  const Counts c = counts();
   release();
   initialize(sys, t, y);
-  steps_before_ = s.steps;
-  rejected_before_ = s.rejected_steps;
+  before_ = c;
 }
 
 nlohmann::json ArkodeImex::describe() const {
@@ -60,9 +60,8 @@ nlohmann::json ArkodeImex::describe() const {
   }
   j["krylov"] = {{"solver", opt_.krylov.solver}, {"max_iterations", opt_.krylov.max_iterations}};
   if (mem_) {
-    const long its = krylov_iterations(), steps = stats().steps;
-    long newton = 0;
-    ARKStepGetNumNonlinSolvIters(mem_, &newton);
+    const Counts c = counts();
+    const long its = c.krylov, steps = c.steps, newton = c.stage_solves;
     j["krylov_iterations"] = its;
     j["krylov_iterations_per_step"] = steps > 0 ? static_cast<double>(its) / static_cast<double>(steps) : 0.0;
     j["stage_solves"] = newton;
@@ -72,20 +71,30 @@ nlohmann::json ArkodeImex::describe() const {
     // Step attempts whose size the stability limit (the explicit part's CFL step) set, and those
     // the error controller set (ARKStepGetNumExpSteps / GetNumAccSteps).
     if (!opt_.fixed_step) {
-      long exp_steps = 0, acc_steps = 0;
-      ARKStepGetNumExpSteps(mem_, &exp_steps);
-      ARKStepGetNumAccSteps(mem_, &acc_steps);
-      j["stability_limited_steps"] = exp_steps;
-      j["accuracy_limited_steps"] = acc_steps;
+      j["stability_limited_steps"] = c.stability_limited;
+      j["accuracy_limited_steps"] = c.accuracy_limited;
     }
   }
   return j;
 }
 
-long ArkodeImex::krylov_iterations() const {
-  long v = 0;
-  if (mem_) ARKStepGetNumLinIters(mem_, &v);
-  return v;
+ArkodeImex::Counts ArkodeImex::counts() const {
+  Counts c;
+  if (mem_) {
+    ARKStepGetNumSteps(mem_, &c.steps);
+    ARKStepGetNumErrTestFails(mem_, &c.rejected);
+    ARKStepGetNumNonlinSolvIters(mem_, &c.stage_solves);
+    ARKStepGetNumLinIters(mem_, &c.krylov);
+    ARKStepGetNumExpSteps(mem_, &c.stability_limited);
+    ARKStepGetNumAccSteps(mem_, &c.accuracy_limited);
+  }
+  c.steps += before_.steps;
+  c.rejected += before_.rejected;
+  c.stage_solves += before_.stage_solves;
+  c.krylov += before_.krylov;
+  c.stability_limited += before_.stability_limited;
+  c.accuracy_limited += before_.accuracy_limited;
+  return c;
 }
 
 void ArkodeImex::evaluate(double t, const double* y) {
@@ -274,24 +283,32 @@ double ArkodeImex::step_toward(double tout) {
 nlohmann::json ArkodeImex::save_state() const {
   double h = 0.0;
   ARKStepGetCurrentStep(mem_, &h);
-  const IntegratorStats s = stats();
-  return {{"step", encode_doubles({h})}, {"steps", s.steps}, {"rejected_steps", s.rejected_steps}};
+  const Counts c = counts();
+  return {{"step", encode_doubles({h})},
+          {"steps", c.steps},
+          {"rejected_steps", c.rejected},
+          {"stage_solves", c.stage_solves},
+          {"krylov_iterations", c.krylov},
+          {"stability_limited_steps", c.stability_limited},
+          {"accuracy_limited_steps", c.accuracy_limited}};
 }
 
 void ArkodeImex::restore_state(const nlohmann::json& s) {
   const double h = decode_doubles(s.at("step").get<std::string>()).at(0);
   if (!opt_.fixed_step && h > 0.0 && std::isfinite(h)) check(ARKStepSetInitStep(mem_, h), "SetInitStep");
-  steps_before_ = s.at("steps").get<long>();
-  rejected_before_ = s.at("rejected_steps").get<long>();
+  before_.steps = s.at("steps").get<long>();
+  before_.rejected = s.at("rejected_steps").get<long>();
+  before_.stage_solves = saved_count(s, "stage_solves");
+  before_.krylov = saved_count(s, "krylov_iterations");
+  before_.stability_limited = saved_count(s, "stability_limited_steps");
+  before_.accuracy_limited = saved_count(s, "accuracy_limited_steps");
 }
 
 IntegratorStats ArkodeImex::stats() const {
   IntegratorStats s;
-  long v = 0;
-  ARKStepGetNumSteps(mem_, &v);
-  s.steps = v + steps_before_;
-  ARKStepGetNumErrTestFails(mem_, &v);
-  s.rejected_steps = v + rejected_before_;
+  const Counts c = counts();
+  s.steps = c.steps;
+  s.rejected_steps = c.rejected;
   ARKStepGetLastStep(mem_, &s.last_step);
   return s;
 }

@@ -61,11 +61,11 @@ class ArkodeImex final : public Integrator {
   // steps, stage solves and Krylov iterations go on as in the serial run.
   bool can_resize() const override { return true; }
   void resize(OdeSystem& sys, double t, double* y) override;
-  // As arkode_erk: the step size is saved, the Runge-Kutta history is not (a restart agrees within
-  // the tolerance).
+  // As arkode_erk: the step size and the counters are saved, the Runge-Kutta history is not (a
+  // restart agrees within the tolerance).
   nlohmann::json save_state() const override;
   void restore_state(const nlohmann::json& state) override;
-  long krylov_iterations() const;
+  long krylov_iterations() const { return counts().krylov; }
 
  private:
   void release();  // frees what initialize() made (the destructor, restart())
@@ -95,7 +95,13 @@ class ArkodeImex final : public Integrator {
   double cache_t_ = 0.0;
   bool cached_ = false;
   bool cache_frozen_ = false;  // the cached evaluation's operator is the frozen one (a step's start)
-  long steps_before_ = 0, rejected_before_ = 0;
+  // What the solver counts, since the run's start: ARKStep's own counts plus those before a restart
+  // (in the run, or from the checkpoint), which ARKStep started again from 0.
+  struct Counts {
+    long steps = 0, rejected = 0, stage_solves = 0, krylov = 0, stability_limited = 0, accuracy_limited = 0;
+  };
+  Counts counts() const;
+  Counts before_;
 };
 
 }  // namespace sphmol

@@ -9,6 +9,7 @@
 
 #include "sphmol/config/yaml_reader.hpp"
 #include "sphmol/time/blow_up.hpp"
+#include "sphmol/time/saved_count.hpp"
 #include "sphmol/time/state_vector.hpp"
 #include "sphmol/time/step_limit.hpp"
 
@@ -120,6 +121,16 @@ double CvodeAdams::step_toward(double tout) {
   }
   t_ = t;
   return t_;
+}
+
+nlohmann::json CvodeAdams::save_state() const {
+  const IntegratorStats s = stats();
+  return {{"steps", s.steps}, {"rejected_steps", s.rejected_steps}};
+}
+
+void CvodeAdams::restore_state(const nlohmann::json& s) {
+  steps_before_ = saved_count(s, "steps");
+  rejected_before_ = saved_count(s, "rejected_steps");
 }
 
 IntegratorStats CvodeAdams::stats() const {

@@ -42,6 +42,10 @@ class CvodeAdams final : public Integrator {
   // evaluation, is unchanged.
   bool can_resize() const override { return true; }
   void resize(OdeSystem& sys, double t, double* y) override;
+  // Only the counters are saved (the summary's steps continue); the Nordsieck history is not, so a
+  // restart is a fresh start from (t, y) that agrees within the tolerance.
+  nlohmann::json save_state() const override;
+  void restore_state(const nlohmann::json& state) override;
 
  private:
   void release();

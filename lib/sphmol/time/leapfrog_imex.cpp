@@ -4,6 +4,7 @@
 
 #include "sphmol/io/double_codec.hpp"
 #include "sphmol/time/particle_split.hpp"
+#include "sphmol/time/saved_count.hpp"
 
 namespace sphmol {
 
@@ -11,7 +12,7 @@ nlohmann::json LeapfrogImex::describe() const {
   nlohmann::json j = LeapfrogBase::describe();
   const long steps = stats().steps;
   j["krylov"] = {{"solver", krylov_.solver}, {"tolerance", krylov_.tolerance}, {"max_iterations", krylov_.max_iterations}};
-  const long its = solve_.total_iterations(), solves = solve_.total_solves();
+  const long its = krylov_iterations(), solves = solve_.total_solves() + solves_before_;
   j["krylov_iterations"] = its;
   j["krylov_iterations_per_step"] = steps > 0 ? static_cast<double>(its) / static_cast<double>(steps) : 0.0;
   // One viscous solve per step (the trapezoidal kick).
@@ -96,6 +97,8 @@ void LeapfrogImex::save_extra(nlohmann::json& j) const {
   j["v_previous"] = encode_doubles(vprev_);
   j["dt_previous"] = encode_doubles({dt_prev_});
   j["f_implicit"] = encode_doubles(w_);
+  j["krylov_iterations"] = krylov_iterations();
+  j["implicit_solves"] = solve_.total_solves() + solves_before_;
 }
 
 void LeapfrogImex::restore_extra(const nlohmann::json& j) {
@@ -109,6 +112,10 @@ void LeapfrogImex::restore_extra(const nlohmann::json& j) {
     if (w.size() != w_.size()) throw std::runtime_error("leapfrog_imex: checkpoint state does not match this system (sizes differ)");
     w_ = w;
   }
+  // The saved totals, whatever this solver counted already (a start on a new share over MPI ranks
+  // restores the state saved by this same process).
+  iterations_before_ = saved_count(j, "krylov_iterations") - solve_.total_iterations();
+  solves_before_ = saved_count(j, "implicit_solves") - solve_.total_solves();
 }
 
 }  // namespace sphmol

@@ -29,8 +29,8 @@ class LeapfrogImex final : public LeapfrogBase {
   LeapfrogImex(Options o, KrylovOptions k) : LeapfrogBase(o), krylov_(k), solve_(k) {}
   std::string name() const override { return "leapfrog_imex"; }
   nlohmann::json describe() const override;
-  // Krylov iterations since the start (this process).
-  long krylov_iterations() const { return solve_.total_iterations(); }
+  // Krylov iterations since the run's start (those before a restart from the checkpoint).
+  long krylov_iterations() const { return solve_.total_iterations() + iterations_before_; }
 
  private:
   const char* scheme() const override { return "kick-drift-kick with a trapezoidal implicit viscous kick"; }
@@ -47,6 +47,7 @@ class LeapfrogImex final : public LeapfrogBase {
   std::vector<double> w_;  // f_I,n = L_n v_n + b_n, which starts the next step
   double dt_prev_ = 0.0;  // 0: no previous step (predict with a_n)
   long steps_ = 0;
+  long iterations_before_ = 0, solves_before_ = 0;  // Krylov iterations and solves before a restart
 };
 
 }  // namespace sphmol
