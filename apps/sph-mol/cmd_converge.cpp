@@ -39,7 +39,10 @@ int run() {
     o.log = &std::cerr;
     const auto j = sphmol::run_converge(*config, o);
     for (const auto& s : j["series"]) {
-      std::cout << s["integrator"].get<std::string>() << ": observed order " << s["observed_order"].get<double>();
+      std::cout << s["integrator"].get<std::string>() << ": observed order ";
+      if (s["observed_order"].is_null()) std::cout << "not measured (no two consecutive clean levels)";
+      else
+        std::cout << s["observed_order"].get<double>() << " (levels " << s["order_levels"][0] << "-" << s["order_levels"][1] << ")";
       if (!s["expected_order"].is_null()) std::cout << " (expected " << s["expected_order"] << ")";
       std::cout << ", errors " << s["errors"].dump() << '\n';
     }

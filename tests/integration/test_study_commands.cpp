@@ -269,7 +269,7 @@ TEST_CASE("every study runs on every registered case with finite errors", "[inte
         const auto j = read_json(out + "/space/convergence.json");
         REQUIRE(j["series"].size() == 1);
         for (const auto& e : j["series"][0]["errors"]) CHECK(finite_number(e));
-        const auto& dx = j["series"][0]["steps"];
+        const auto& dx = j["series"][0]["spacings"];
         CHECK(dx[1].get<double>() == Approx(dx[0].get<double>() / 2));
       }
       {
@@ -360,7 +360,7 @@ TEST_CASE("converge --refine space keeps the configured integrator and refines a
   const auto j = read_json(out + "/convergence.json");
   CHECK(j["series"][0]["integrator"] == "leapfrog");
   CHECK(j["levels"][1]["spacing"].get<double>() == Approx(0.05));
-  CHECK(j["series"][0]["steps"][0].get<double>() == Approx(0.1));
+  CHECK(j["series"][0]["spacings"][0].get<double>() == Approx(0.1));
 }
 
 TEST_CASE("bad study command lines are exit 2 and name the option", "[integration][studies]") {
@@ -385,4 +385,34 @@ TEST_CASE("bad study command lines are exit 2 and name the option", "[integratio
       CHECK(slurp(log).find(option) != std::string::npos);
     }
   }
+}
+
+TEST_CASE("sph-mol compare leaves the error cells of a blown-up run empty, as the JSON has null", "[integration][compare]") {
+  // leapfrog_kdk on Poiseuille 20 across at fixed steps 0.005 x (1, 1/2, 1/4, 1/8): the first three blow up.
+  const std::string out = "reports/compare_blown_up";
+  REQUIRE(run("--threads 1 compare --config " SPHMOL_SOURCE_DIR "/verification/poiseuille.yaml --output " + out +
+                  " --integrators leapfrog_kdk --set discretization.particles_across=20 --set time.t_end=0.05"
+                  " --set output.times=[0.05] --set time.dt=0.005",
+              out + ".log") == 0);
+  const auto j = read_json(out + "/comparison.json");
+  std::ifstream f(out + "/comparison.csv");
+  std::string line;
+  std::getline(f, line);
+  REQUIRE(j["runs"].size() == 4);
+  int blown_up = 0;
+  for (const auto& r : j["runs"]) {
+    REQUIRE(std::getline(f, line));
+    INFO(line);
+    CHECK(line.find("inf") == std::string::npos);
+    CHECK(line.find("nan") == std::string::npos);
+    if (r["status"] == "blown_up") {
+      ++blown_up;
+      CHECK(r["error"].is_null());
+      CHECK(line.size() > 11);
+      CHECK(line.substr(line.size() - 11) == ",,,blown_up");  // error and exact_error empty
+    } else {
+      CHECK(finite_number(r["error"]));
+    }
+  }
+  CHECK(blown_up >= 1);
 }

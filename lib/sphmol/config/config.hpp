@@ -200,6 +200,7 @@ struct TimeConfig {
   std::string table = "ARKODE_DORMAND_PRINCE_7_4_5";
   double rtol = 1e-6;                               // > 0
   double atol = 1e-12;                              // > 0 (absolute, on every state component)
+  bool rtol_given = false, atol_given = false;      // set in the config or by --set (studies keep them)
   CflConfig cfl;
   std::optional<double> dt;                         // given -> fixed step (> 0)
   long max_steps = 10'000'000;                      // > 0

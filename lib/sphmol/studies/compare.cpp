@@ -1,6 +1,7 @@
 #include "sphmol/studies/compare.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -216,9 +217,9 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
       const auto cell = [](const auto& v) { return v ? fmt(static_cast<double>(*v)) : std::string(); };
       csv << spec.label << ',' << setting << ',' << fmt(wall) << ',' << fmt(r.cpu_seconds) << ',' << S["rhs_evals"] << ','
           << n.steps << ',' << n.rejected << ',' << cell(n.stability_limited) << ',' << n.solves << ',' << n.krylov << ','
-          << fmt(n.krylov_per_step()) << ',' << cell(per_solve) << ',' << fmt(error) << ',' << fmt(exact_error) << ','
+          << fmt(n.krylov_per_step()) << ',' << cell(per_solve) << ',' << csv_number(error) << ',' << csv_number(exact_error) << ','
           << S["status"].get<std::string>() << '\n';
-      const auto num = [&](double x) { return r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(x); };
+      const auto num = [&](double x) { return r.blown_up || !std::isfinite(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
       const auto opt_json = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
       runs.push_back({{"integrator", spec.label},
                       {"setting", setting},

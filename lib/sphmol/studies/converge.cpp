@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +21,26 @@ namespace sphmol {
 
 namespace {
 constexpr int kReferenceRefinement = 8;
+// arkode_imex solves its implicit stages to a tolerance from time.rtol and time.atol, also at a fixed
+// step; at the defaults (1e-6, 1e-12) that error (near 1e-8 relative) hides the step's. The time
+// study solves them to rtol 1e-14 and atol 1e-14 max|v_ref| (an absolute atol far below the flow's
+// velocities would ask for more than round-off where the fluid starts at rest).
+constexpr double kImexStudyTolerance = 1e-14;
+
+// The longest run of consecutive clean levels (the finer one of equal runs): [first, last], or
+// first == last when no two consecutive levels are clean.
+std::pair<int, int> clean_run(const std::vector<bool>& clean) {
+  int best_first = 0, best_last = 0, first = -1;
+  for (int k = 0; k < static_cast<int>(clean.size()); ++k) {
+    if (!clean[k]) {
+      first = -1;
+      continue;
+    }
+    if (first < 0) first = k;
+    if (k - first >= best_last - best_first) best_first = first, best_last = k;
+  }
+  return {best_first, best_last};
+}
 
 }  // namespace
 
@@ -71,6 +93,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
               true, {}};
 
   std::vector<double> ref_state;
+  double ref_vmax = 0.0;
   std::string series_error_key = "e_rms";  // the case's primary error, from the first summary
   double dt0 = 0.0;
   if (time) {
@@ -92,6 +115,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     const StudyRun ref = run_study_case(rc);
     if (ref.blown_up) throw std::runtime_error("the reference run blew up: " + ref.summary["blow_up"].dump());
     ref_state = ref.final_state;
+    ref_vmax = max_abs_velocity(ref_state, base.dimension, ref.summary["particles"]["fluid"].get<std::size_t>());
     if (opt.log)
       *opt.log << "converge: reference " << kReferenceTable << " dt = " << fmt(*rc.time.dt) << " (" << fmt(ref.summary["wall_seconds"].get<double>())
                << " s)\n";
@@ -117,10 +141,26 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     if (time && spec.adaptive() && spec.integrator == "cvode_adams")
       throw std::invalid_argument("--refine time: cvode_adams has no fixed step");
     std::vector<double> errors, dts, walls;
+    std::vector<std::string> statuses;
+    // arkode_imex at fixed steps: its stage solves' tolerance, relative to max|v_ref| as the error is
+    // (0: no stage solves). A level whose error is below it may be measuring the solves, not the step.
+    double solve_tolerance = 0.0;
+    std::optional<double> study_rtol, study_atol;
+    if (time && spec.integrator == "arkode_imex") {
+      if (!base.time.rtol_given) study_rtol = kImexStudyTolerance;
+      if (!base.time.atol_given && ref_vmax > 0.0) study_atol = kImexStudyTolerance * ref_vmax;
+      const double rtol = study_rtol.value_or(cfg.time.rtol), atol = study_atol.value_or(cfg.time.atol);
+      solve_tolerance = rtol + (ref_vmax > 0.0 ? atol / ref_vmax : 0.0);
+      if (opt.log)
+        *opt.log << "converge: " << spec.label << ": stage solves at time.rtol = " << fmt(rtol) << (study_rtol ? "" : " (given)")
+                 << ", time.atol = " << fmt(atol) << (study_atol ? "" : " (given)") << '\n';
+    }
     const int runs = quantity ? opt.levels + 1 : opt.levels;
     for (int k = 0; k < runs; ++k) {
       Config c = cfg;
       spec.apply(c.time);
+      if (study_rtol) c.time.rtol = *study_rtol;
+      if (study_atol) c.time.atol = *study_atol;
       double xk;
       if (time) {
         c.time.dt = dt0 / std::pow(2.0, k);
@@ -154,38 +194,80 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
       errors.push_back(e);
       dts.push_back(xk);
       walls.push_back(r.summary["wall_seconds"].get<double>());
+      statuses.push_back(r.blown_up ? "blown_up" : "completed");
       if (opt.log)
         *opt.log << "converge: " << spec.label << (k == opt.levels ? " reference level " : " level ") << k << " (" << fmt(xk)
-                 << "): " << (quantity ? series_error_key + " " : "error ") << fmt(e) << '\n';
+                 << "): " << (r.blown_up ? std::string("blown up") : (quantity ? series_error_key + " " : "error ") + fmt(e)) << '\n';
     }
     if (quantity) {
       const double ref = errors.back();
       errors.pop_back();
       dts.pop_back();
       walls.pop_back();
+      statuses.pop_back();
       for (double& e : errors) e = relative_difference(e, ref);
     }
-    const auto orders = pairwise_orders(errors);
-    const double slope = least_squares_order(errors);
+    // Clean levels: completed with a finite error > 0, not below the stage solves' tolerance. Orders
+    // are taken between consecutive clean levels only; the overall order over the longest run of them.
+    std::vector<bool> clean(opt.levels), below_solves(opt.levels, false);
+    for (int k = 0; k < opt.levels; ++k) {
+      below_solves[k] = statuses[k] == "completed" && std::isfinite(errors[k]) && errors[k] < solve_tolerance;
+      clean[k] = statuses[k] == "completed" && std::isfinite(errors[k]) && errors[k] > 0.0 && !below_solves[k];
+      if (below_solves[k] && opt.log)
+        *opt.log << "converge: " << spec.label << " level " << k << ": error " << fmt(errors[k])
+                 << " is below the stage solves' tolerance " << fmt(solve_tolerance)
+                 << " (time.rtol + time.atol / max|v_ref|): it may be theirs, not the step's; left out of the order"
+                 << (base.time.rtol_given || base.time.atol_given ? " (a smaller time.rtol / time.atol, or leave them unset)" : "")
+                 << '\n';
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> orders = pairwise_orders(errors);
+    for (int k = 0; k + 1 < opt.levels; ++k)
+      if (!clean[k] || !clean[k + 1]) orders[k] = nan;
+    const auto [first, last] = clean_run(clean);
+    const double slope =
+        last > first ? least_squares_order(std::vector<double>(errors.begin() + first, errors.begin() + last + 1)) : nan;
     const int expected = time ? spec.order() : 0;
     for (int k = 0; k < opt.levels; ++k)
-      csv << opt.refine << ',' << spec.label << ',' << k << ',' << fmt(dts[k]) << ',' << fmt(errors[k]) << ','
-          << (k > 0 ? fmt(orders[k - 1]) : std::string()) << ',' << (expected > 0 ? std::to_string(expected) : std::string()) << ','
-          << fmt(walls[k]) << '\n';
-    nlohmann::json s{{"integrator", spec.label}, {"errors", errors}, {"steps", dts}, {"observed_orders", orders},
-                     {"observed_order", slope}, {"wall_seconds", walls}};
+      csv << opt.refine << ',' << spec.label << ',' << k << ',' << fmt(dts[k]) << ',' << csv_number(errors[k]) << ','
+          << (k > 0 ? csv_number(orders[k - 1]) : std::string()) << ',' << (expected > 0 ? std::to_string(expected) : std::string())
+          << ',' << fmt(walls[k]) << ',' << statuses[k] << '\n';
+    const auto numbers = [](const std::vector<double>& v) {
+      nlohmann::json a = nlohmann::json::array();
+      for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+      return a;
+    };
+    nlohmann::json s{{"integrator", spec.label},
+                     {"errors", numbers(errors)},
+                     {time ? "steps" : "spacings", dts},
+                     {"status", statuses},
+                     {"observed_orders", numbers(orders)},
+                     {"observed_order", std::isfinite(slope) ? nlohmann::json(slope) : nlohmann::json(nullptr)},
+                     {"order_levels", last > first ? nlohmann::json{first, last} : nlohmann::json(nullptr)},
+                     {"wall_seconds", walls}};
     s["expected_order"] = expected > 0 ? nlohmann::json(expected) : nlohmann::json(nullptr);
+    if (solve_tolerance > 0.0) {
+      s["stage_solves"] = {{"rtol", study_rtol.value_or(cfg.time.rtol)},
+                           {"atol", study_atol.value_or(cfg.time.atol)},
+                           {"relative_tolerance", solve_tolerance},
+                           {"below_tolerance", below_solves}};
+    }
     series.push_back(s);
-    chart.series.push_back({spec.label + " (slope " + fmt(slope) + ")", dts, errors});
-    if (opt.log)
-      *opt.log << "converge: " << spec.label << ": observed order " << fmt(slope)
-               << (expected > 0 ? " (expected " + std::to_string(expected) + ")" : std::string()) << "\n";
+    chart.series.push_back({spec.label + " (slope " + (std::isfinite(slope) ? fmt(slope) : std::string("-")) + ")", dts, errors});
+    if (opt.log) {
+      *opt.log << "converge: " << spec.label << ": observed order ";
+      if (last > first)
+        *opt.log << fmt(slope) << " (levels " << first << "-" << last << ")";
+      else
+        *opt.log << "not measured (no two consecutive clean levels)";
+      *opt.log << (expected > 0 ? ", expected " + std::to_string(expected) : std::string()) << "\n";
+    }
   }
   if (!time) chart.ylabel = quantity ? "relative difference of " + series_error_key + " from the finest run" : "final " + series_error_key;
   write_file_atomically(opt.output_dir + "/convergence.csv",
                         std::string("refine,integrator,level [-],") + (time ? "dt [s]" : "dx [m]") + ",error [" +
                             (time || quantity ? std::string("-") : error_unit(series_error_key)) +
-                            "],observed_order [-],expected_order [-],wall_seconds [s]\n" + csv.str());
+                            "],observed_order [-],expected_order [-],wall_seconds [s],status\n" + csv.str());
   const std::string problem = draw_chart(chart, opt.output_dir, "convergence");
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +

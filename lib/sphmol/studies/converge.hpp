@@ -11,8 +11,12 @@
 //         its accuracy settings: rtol as configured, a fixed time.dt halved with dx (constant Courant
 //         number), CFL steps as they come; error = the case's primary final error against its
 //         reference, plotted against the spacing the scene used.
-// Observed order per level pair: log(e_k / e_{k+1}) / log 2; overall: least-squares slope of
-// log e vs log(dt) (or log dx). Writes convergence.csv, convergence.json and convergence.png.
+//         arkode_imex levels solve their stages at time.rtol 1e-14, time.atol 1e-14 max|v_ref| unless
+//         the config gives them (at the defaults the solves' error hides the step's).
+// Observed order per pair of consecutive clean levels (completed, finite error above arkode_imex's
+// stage-solve tolerance): log(e_k / e_{k+1}) / log 2; overall: least-squares slope of log e vs
+// log(dt) (or log dx) over the longest run of consecutive clean levels. Each level has a status
+// (completed / blown_up). Writes convergence.csv, convergence.json and convergence.png.
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <optional>

@@ -1,5 +1,6 @@
 #include "sphmol/studies/gnuplot_chart.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -54,7 +55,7 @@ std::string draw_chart(const Chart& chart, const std::string& dir, const std::st
       if (c == '\n' || c == '\r') c = ' ';
     dat << "# " << title << '\n';
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
-      if (s.y[i] > 0 || !chart.logy) dat << s.x[i] << ' ' << s.y[i] << '\n';
+      if (std::isfinite(s.y[i]) && (s.y[i] > 0 || !chart.logy)) dat << s.x[i] << ' ' << s.y[i] << '\n';
     dat << "\n\n";  // gnuplot data-set separator (index)
   }
   write_file_atomically(dir + "/" + stem + ".dat", dat.str());

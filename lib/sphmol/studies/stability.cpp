@@ -109,7 +109,7 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       for (char& ch : cause_csv)
         if (ch == ',' || ch == '"') ch = ';';
       csv << fmt(sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
-          << cl.sign_changes << ',' << fmt(cl.amplitude) << ',' << fmt(cl.max_abs_signed) << ',' << fmt(r.error) << ',' << r.summary["steps"] << ','
+          << cl.sign_changes << ',' << fmt(cl.amplitude) << ',' << fmt(cl.max_abs_signed) << ',' << csv_number(r.error) << ',' << r.summary["steps"] << ','
           << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
       runs.push_back({{"sound_speed", sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
                       {"sign_changes", cl.sign_changes}, {"late_amplitude", cl.amplitude}, {"max_abs_e_signed", cl.max_abs_signed},

@@ -114,6 +114,16 @@ double relative_velocity_error(const std::vector<double>& y, const std::vector<d
   return vmax > 0 ? rms / vmax : rms;
 }
 
+double max_abs_velocity(const std::vector<double>& y, int dimension, std::size_t n) {
+  const std::size_t vb = dimension * n, ve = 2 * dimension * n;
+  if (y.size() < ve) return 0.0;
+  double vmax = 0.0;
+  for (std::size_t k = vb; k < ve; ++k) vmax = std::max(vmax, std::abs(y[k]));
+  return vmax;
+}
+
+std::string csv_number(double x) { return std::isfinite(x) ? fmt(x) : std::string(); }
+
 std::string fmt(double x) {
   std::ostringstream s;
   s.precision(6);

@@ -44,7 +44,13 @@ inline constexpr const char* kReferenceTable = "ARKODE_VERNER_8_5_6";
 // in `dimension` dimensions, state layout of core/state_layout.hpp); +inf if the sizes differ.
 double relative_velocity_error(const std::vector<double>& y, const std::vector<double>& yref, int dimension, std::size_t n);
 
+// max |v| over the fluid velocity components of y (layout as above); 0 if y is too short.
+double max_abs_velocity(const std::vector<double>& y, int dimension, std::size_t n);
+
 // Formats a number for CSV/labels with 6 significant digits.
 std::string fmt(double x);
+// A CSV cell: fmt(x), or empty where x is not finite (not measured: a blown-up run, an order without
+// two clean levels), as the JSON has null there; pandas reads an empty cell as NaN.
+std::string csv_number(double x);
 
 }  // namespace sphmol
