@@ -119,6 +119,8 @@ TEST_CASE("distributed run: leapfrog_imex repartitioned over ranks equals the se
                                                          "time.t_end=0.6", "output.times=[0.3,0.6]"}),
                                                 1.0, 2);
     if (Communicator().size() > 1) CHECK(split.summary["parallel"]["repartitions"].get<long>() > 10);
+    // The counters carried through each start on a new share are not counted twice: one solve per step.
+    CHECK(split.summary["integrator"]["implicit_solves"] == split.summary["steps"]);
   }
   SECTION("the lid-driven cavity stirs the particles: repartitioned again and again") {
     const Config c = load_config(verification("cavity.yaml"), {"discretization.particles_across=20", "time.integrator=leapfrog_imex",
