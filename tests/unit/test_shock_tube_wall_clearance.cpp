@@ -59,7 +59,7 @@ TEST_CASE("shock tube clearance: a t_end past the walls' reach is refused with t
   // The 1D Niedoba tube: shock 1.4847 m/s, the right end's reach (3 h + dx) = 0.01 m of the 0.4 m half:
   // clear until (0.4 - 0.01) / 1.4847 = 0.26267 s.
   const std::string e = load_error("shock_tube_1d", {"time.t_end=0.3", "output.times=[]"});
-  CHECK_THAT(e, Contains("time.t_end: = 0.3 s is past the time the waves reach the end walls"));
+  CHECK_THAT(e, Contains("time.t_end: 0.3 s is past the time the waves reach the end walls"));
   CHECK_THAT(e, Contains("right-moving shock (1.484 m/s)"));
   CHECK_THAT(e, Contains("Give time.t_end <= 0.2626 s"));
   CHECK_THAT(e, Contains("geometry.tube_length >= 0.9125 m for this t_end"));
@@ -80,7 +80,7 @@ TEST_CASE("shock tube clearance: states moving along the tube are refused", "[sh
     INFO(side);
     const std::string e = load_error("shock_tube_1d", {"time.t_end=0.1", "output.times=[]",
                                                        std::string("shock_tube.") + side + ".velocity=0.5"});
-    CHECK_THAT(e, Contains(std::string("shock_tube.") + side + ".velocity: = 0.5 m/s: the end walls are at rest"));
+    CHECK_THAT(e, Contains(std::string("shock_tube.") + side + ".velocity: 0.5 m/s: the end walls are at rest"));
   }
   CHECK(load_error("shock_tube_1d", {"shock_tube.left.velocity=0"}) == "<no error>");
 }

@@ -99,7 +99,7 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   for (std::size_t k = 0; k < 2; ++k) {
     const ShockTubeState& q = k == 0 ? L : R;
     if (q.velocity != 0.0)
-      state_keys[k].fail("velocity", "= " + number_text(q.velocity) + " m/s: the end walls are at rest, so gas moving along the tube "
+      state_keys[k].fail("velocity", number_text(q.velocity) + " m/s: the end walls are at rest, so gas moving along the tube "
                          "leaves or runs into its end wall from t = 0 and launches a wave there that the exact (infinite-tube) "
                          "solution does not contain; the shock tube needs both states at rest (velocity 0)");
   }
@@ -137,7 +137,7 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
                     " m (the kernel support and one spacing) of the " + end + " end wall at t = " + four_digits_down(clear.t_clear) + " s"
               : "the tube's half length " + number_text(0.5 * Lt) + " m lies within the " + end + " end wall's reach, " +
                     four_digits_down(reach[side]) + " m (the kernel support and one spacing), from the start";
-      r.time.fail("t_end", "= " + number_text(c.time.t_end) + " s is past the time the waves reach the end walls: " + when +
+      r.time.fail("t_end", number_text(c.time.t_end) + " s is past the time the waves reach the end walls: " + when +
                                "; from then on the run no longer follows the exact solution of an infinite tube it is measured against. " +
                                (clear.t_clear > 0.0 ? "Give time.t_end <= " + four_digits_down(clear.t_clear) + " s, or lengthen" : std::string("Lengthen")) +
                                " the tube: geometry.tube_length >= " + number_text(need_whole) + " m for this t_end");
