@@ -637,10 +637,16 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
       }
       t.table = *v;
     }
-    if (const auto v = time.real("rtol")) t.rtol = *v, t.rtol_given = true;
+    if (const auto v = time.real("rtol")) {
+      t.rtol = *v;
+      t.rtol_given = true;
+    }
     // Below a few units of round-off (2.2e-16) SUNDIALS refuses the step ("too much accuracy").
     time.check("rtol", t.rtol >= 1e-15, t.rtol, ">= 1e-15, the double round-off");
-    if (const auto v = time.real("atol")) t.atol = *v, t.atol_given = true;
+    if (const auto v = time.real("atol")) {
+      t.atol = *v;
+      t.atol_given = true;
+    }
     time.check("atol", t.atol > 0, t.atol, "> 0");
     MapReader cfl = time.section("cfl", {"acoustic", "force", "viscous"});
     // Stability ranges of the explicit schemes (config/README.md, "CFL coefficients"): a larger

@@ -266,7 +266,7 @@ double ArkodeImex::step_toward(double tout) {
   if (flag < 0 && ls_->error()) std::rethrow_exception(ls_->error());
   if (flag == ARK_CONV_FAILURE && ls_->last_capped())
     throw std::runtime_error("arkode_imex: at t = " + number_text(t) + " s the stage solves did not reach their tolerance in " +
-                             "time.krylov.max_iterations = " + std::to_string(ls_->max_iterations()) + " iterations" +
+                             "time.krylov.max_iterations = " + std::to_string(opt_.krylov.max_iterations) + " iterations" +
                              (opt_.fixed_step ? " at the fixed step time.dt" : " even at reduced steps") +
                              " (raise time.krylov.max_iterations" + (opt_.fixed_step ? ", or remove time.dt" : "") + ")");
   if (flag == ARK_ERR_FAILURE || flag == ARK_CONV_FAILURE || flag == ARK_RHSFUNC_FAIL || flag == ARK_LSOLVE_FAIL)

@@ -1,12 +1,13 @@
 #include "sphmol/time/stage_linear_solver.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace sphmol {
 
 StageLinearSolver::StageLinearSolver(SUNContext ctx, KrylovOptions k, const ViscousOperator* op, std::size_t vb,
                                      std::size_t length)
-    : solve_(k), op_(op), vb_(vb), length_(length), max_iterations_(k.max_iterations) {
+    : solve_(std::move(k)), op_(op), vb_(vb), length_(length) {
   ls_ = SUNLinSolNewEmpty(ctx);
   if (!ls_) throw std::runtime_error("SUNDIALS: creating the stage linear solver failed");
   ls_->content = this;

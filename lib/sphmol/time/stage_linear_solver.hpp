@@ -42,7 +42,6 @@ class StageLinearSolver {
   // again), not as the "residual reduced" that ARKStep accepts as solved when it makes one Newton
   // iteration per stage, as here (SetLinear).
   bool last_capped() const { return last_capped_; }
-  int max_iterations() const { return max_iterations_; }
   // An exception a solve caught (it may not cross SUNDIALS' C frames), for the caller to rethrow
   // once ARKStep has returned; null if none.
   std::exception_ptr error() const { return error_; }
@@ -60,7 +59,6 @@ class StageLinearSolver {
   bool zero_guess_ = false;
   int last_flag_ = 0;
   bool last_capped_ = false;
-  int max_iterations_ = 0;
   std::exception_ptr error_;
 };
 
