@@ -75,9 +75,12 @@ nlohmann::json DamBreakCase::measure_pieces(const SphSystem<2>& whole, const Own
 
   std::ostringstream row;
   row << std::setprecision(10) << t << ',' << T << ',' << x_front << ',' << x_ritter << ',';
-  // Outside the experiments' time range, or for a column that is not theirs: nan (read as missing by
-  // pandas and numpy).
-  row << (mm ? *mm * a_ : std::nan("")) << ',' << (ko ? *ko * a_ : std::nan("")) << '\n';
+  // Outside the experiments' time range, or for a column that is not theirs: an empty cell (missing
+  // to pandas, numpy and gnuplot).
+  if (mm) row << *mm * a_;
+  row << ',';
+  if (ko) row << *ko * a_;
+  row << '\n';
   csv_ += row.str();
   if (out.enabled) out.write("front.csv", csv_);
   return j;

@@ -6,7 +6,7 @@
 //   x_ritter    a + 2 sqrt(g H) t, Ritter's shallow-water front, an upper bound before the impact;
 //   x_mm, x_ko  Martin & Moyce 1952 (n^2 = 2) and Koshizuka & Oka 1996 fronts scaled to a, where their
 //               data cover t (reference/dam_break_front.hpp); both experiments have H = 2a, so for
-//               another column they are not compared (null, nan in front.csv);
+//               another column they are not compared (null, empty cells in front.csv);
 //   mass_change relative change of the total fluid mass, sum_i m_i (constant particle masses and no
 //               particle ever removed: exactly 0 unless a particle is lost);
 //   wall_penetrations  fluid particles that ever passed a wall (every RHS evaluation; analysis/

@@ -42,7 +42,7 @@ CaseRead read_dam_break(CaseReaders& r, const Config& c) {
   if (!experiments_apply(a, H))
     out.notices.push_back(geo.where("column") + ": H/a = " + number_text(H / a) +
                           ": the experiments of Martin & Moyce (1952, n^2 = 2) and Koshizuka & Oka (1996) have H = 2a "
-                          "and are not compared (null in final_errors, nan in front.csv); the Ritter front is");
+                          "and are not compared (null in final_errors, empty cells in front.csv); the Ritter front is");
   return out;
 }
 
