@@ -34,6 +34,9 @@ int run() {
   } catch (const sphmol::OutputFolderError& e) {
     std::cerr << "sph-mol stability: " << e.what() << '\n';
     return 2;  // the folder is in use: bad input, nothing written
+  } catch (const sphmol::ConfigError& e) {
+    std::cerr << "sph-mol stability: config error: " << e.what() << '\n';
+    return 2;  // a factor the case refuses (scale_sound_speed), before anything is written
   } catch (const std::exception& e) {
     std::cerr << "sph-mol stability: " << e.what() << '\n';
     return 1;

@@ -337,6 +337,35 @@ TEST_CASE("stability on the dam break: runs without a Martin-Moyce error are rep
   CHECK(slurp(out + ".log").find("front_rms_martin_moyce was not measured") != std::string::npos);
 }
 
+TEST_CASE("stability on a shock tube refuses sound speed factors whose waves reach the end walls before t_end",
+          "[integration][stability][shock_tube]") {
+  // The shipped 1D tube keeps its waves clear of the end walls until t = 0.2626 s, 1.31x its t_end. At
+  // c x 2 they arrive at 0.1313 s, and the run ended "blown_up" with a gas particle pushed out of the
+  // tube: the map called a step stable at c x 1 unstable at c x 2 for a reason that is not the step.
+  const std::string v = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube_1d.yaml";
+  const std::string out = "reports/stability_tube_walls";
+  std::filesystem::remove_all(out);
+  const int code = run({"stability", "--config", v, "--output", out, "--sound-speed-factors", "1,2", "--step-factors", "1",
+                        "--samples", "3", "--set", "output.plots=false"},
+                       out + ".log");
+  const std::string log = slurp(out + ".log");
+  INFO(log);
+  CHECK(code == 2);
+  CHECK(log.find("sound speed factor 2: ") != std::string::npos);
+  CHECK(log.find("Give factors <= 1.313 for this t_end") != std::string::npos);
+  CHECK(!std::filesystem::exists(out));  // refused before anything is written
+
+  // Up to the limit the map runs, and the faster tube is not blown up.
+  const int ok = run({"stability", "--config", v, "--output", out, "--sound-speed-factors", "1,1.3", "--step-factors", "1",
+                      "--samples", "3", "--set", "output.plots=false"},
+                     out + "_ok.log");
+  INFO(slurp(out + "_ok.log"));
+  REQUIRE(ok == 0);
+  const auto j = read_json(out + "/stability.json");
+  REQUIRE(j["runs"].size() == 2);
+  for (const auto& r : j["runs"]) CHECK(r["class"] != "blown_up");
+}
+
 TEST_CASE("converge --refine time without --dt0 starts from the case's CFL step", "[integration][converge]") {
   // Couette with CFL steps (no time.dt): dt0 is the leapfrog's stable step at t = 0.
   const std::string out = "reports/converge_cfl_dt0";

@@ -58,7 +58,8 @@ struct CaseModule {
   // reject (lengths that are not whole numbers of the spacing, ...) is an error here.
   std::function<CaseRead(CaseReaders& r, const Config& c)> read;
   // Scales every sound speed of the scene by `factor` (stability maps) and returns the sound speed
-  // to report. Empty: fluid.eos.sound_speed is scaled.
+  // to report; throws ConfigError when the scaled scene is not valid for the case. Empty:
+  // fluid.eos.sound_speed is scaled.
   std::function<double(Config& c, double factor)> scale_sound_speed;
 
   // The case in each dimension it supports (empty in the others).

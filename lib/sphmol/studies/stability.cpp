@@ -74,6 +74,12 @@ double scale_sound_speed(Config& c, double factor) {
 }
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
+  // Every factor's scene is checked before anything runs or is written (ConfigError): a factor the
+  // case refuses would otherwise fail halfway through the map.
+  for (double fc : opt.sound_speed_factors) {
+    Config c = base;
+    scale_sound_speed(c, fc);
+  }
   // Locked for the study's lifetime: two studies into one folder would overwrite each other's files.
   const OutputFolder folder(opt.output_dir, OutputFolder::Options{.lock_only = true});
   const bool fixed = base.time.dt.has_value();

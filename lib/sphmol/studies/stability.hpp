@@ -45,7 +45,8 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
 
 // Multiplies the sound speed by `factor`: fluid.eos.sound_speed, or for an ideal gas (the shock tube,
 // whose c = sqrt(gamma p / rho) comes from the state) the initial pressures by factor^2. Returns the
-// sound speed reported on the map (for an ideal gas: that of the left state).
+// sound speed reported on the map (for an ideal gas: that of the left state). ConfigError when the
+// case refuses the scaled scene (a shock tube whose faster waves reach its end walls before t_end).
 double scale_sound_speed(Config& c, double factor);
 
 nlohmann::json run_stability(const Config& base, const StabilityOptions& opt);

@@ -37,6 +37,37 @@ std::string four_digits_down(double x) {
   return number_text(std::floor(x * scale) / scale);
 }
 
+// The distance from each end wall within which the gas interacts with the wall particles: the kernel
+// support of the end's gas and one spacing more (the wall layers' rule). Measured on the 1D tubes
+// against tubes twice as long: when the outermost wave reaches it, the largest density difference is
+// 1e-5 of the density, 1e-4 when the shock is one support from the wall (docs/verification.md, "The
+// end walls").
+std::array<double, 2> end_wall_reach(const Config& c, const ShockTubeSettings& s, double dx) {
+  const auto& d = c.discretization;
+  const double support = c.dimension == 1 ? kernel_info<1>(d.kernel).support : kernel_info<2>(d.kernel).support;
+  const double rho_dense = std::max(s.left.density, s.right.density);
+  std::array<double, 2> reach{};
+  for (std::size_t k = 0; k < 2; ++k) {
+    // The end gas's own spacing (m / rho)^(1/D), and h0 = smoothing_ratio times it (shock_tube_scene.cpp).
+    const double rho = k == 0 ? s.left.density : s.right.density;
+    const double sp = s.setup == "equal_mass" ? dx * std::pow(rho_dense / rho, 1.0 / c.dimension) : dx;
+    reach[k] = (support * d.smoothing_ratio + 1.0) * sp;
+  }
+  return reach;
+}
+
+// "the right-moving shock (1.752 m/s) comes within 0.02 m (...) of the right end wall at t = 0.2284 s"
+std::string when_waves_arrive(const ShockTubeClearance& clear, const std::array<double, 2>& reach, double Lt) {
+  const std::string wave = std::string(clear.side == 0 ? "left-moving " : "right-moving ") + (clear.shock ? "shock" : "rarefaction head");
+  const auto side = static_cast<std::size_t>(clear.side);
+  const std::string end = clear.side == 0 ? "left" : "right";
+  return clear.t_clear > 0.0
+             ? "the " + wave + " (" + four_digits_down(clear.speed) + " m/s) comes within " + four_digits_down(reach[side]) +
+                   " m (the kernel support and one spacing) of the " + end + " end wall at t = " + four_digits_down(clear.t_clear) + " s"
+             : "the tube's half length " + number_text(0.5 * Lt) + " m lies within the " + end + " end wall's reach, " +
+                   four_digits_down(reach[side]) + " m (the kernel support and one spacing), from the start";
+}
+
 CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   auto s = std::make_shared<ShockTubeSettings>();
   s->dimension = c.dimension;
@@ -109,35 +140,15 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   const double Lt = s->tube_length, W = s->tube_width;
   const double dx = case_keys::spacing(c, W);
   // The run is measured against the infinite tube's solution: t_end must come before the outermost
-  // waves reach the gas the end walls' particles act on, the kernel support of the end's gas and one
-  // spacing more (the wall layers' rule). Measured on the 1D tubes against tubes twice as long: at that
-  // time the largest density difference is 1e-5 of the density, 1e-4 when the shock is one support
-  // from the wall (docs/verification.md, "The end walls").
+  // waves reach the gas the end walls' particles act on (end_wall_reach).
   {
     const ExactRiemannSolver exact({L.density, 0.0, L.pressure}, {R.density, 0.0, R.pressure}, gm);
-    const double support = c.dimension == 1 ? kernel_info<1>(d.kernel).support : kernel_info<2>(d.kernel).support;
-    const double rho_dense = std::max(L.density, R.density);
-    std::array<double, 2> reach{};
-    for (std::size_t k = 0; k < 2; ++k) {
-      // The end gas's own spacing (m / rho)^(1/D), and h0 = smoothing_ratio times it (shock_tube_scene.cpp).
-      const double rho = k == 0 ? L.density : R.density;
-      const double sp = s->setup == "equal_mass" ? dx * std::pow(rho_dense / rho, 1.0 / c.dimension) : dx;
-      reach[k] = (support * d.smoothing_ratio + 1.0) * sp;
-    }
+    const auto reach = end_wall_reach(c, *s, dx);
     const ShockTubeClearance clear = shock_tube_clearance(exact, 0.5 * Lt, reach);
     if (c.time.t_end > clear.t_clear) {
       const double need = shock_tube_length_for(exact, c.time.t_end, reach);
       const double need_whole = std::ceil(need / dx * (1.0 - 1e-12)) * dx;
-      const std::string wave = std::string(clear.side == 0 ? "left-moving " : "right-moving ") + (clear.shock ? "shock" : "rarefaction head");
-      const auto side = static_cast<std::size_t>(clear.side);
-      const std::string end = clear.side == 0 ? "left" : "right";
-      const std::string when =
-          clear.t_clear > 0.0
-              ? "the " + wave + " (" + four_digits_down(clear.speed) + " m/s) comes within " + four_digits_down(reach[side]) +
-                    " m (the kernel support and one spacing) of the " + end + " end wall at t = " + four_digits_down(clear.t_clear) + " s"
-              : "the tube's half length " + number_text(0.5 * Lt) + " m lies within the " + end + " end wall's reach, " +
-                    four_digits_down(reach[side]) + " m (the kernel support and one spacing), from the start";
-      r.time.fail("t_end", number_text(c.time.t_end) + " s is past the time the waves reach the end walls: " + when +
+      r.time.fail("t_end", number_text(c.time.t_end) + " s is past the time the waves reach the end walls: " + when_waves_arrive(clear, reach, Lt) +
                                "; from then on the run no longer follows the exact solution of an infinite tube it is measured against. " +
                                (clear.t_clear > 0.0 ? "Give time.t_end <= " + four_digits_down(clear.t_clear) + " s, or lengthen" : std::string("Lengthen")) +
                                " the tube: geometry.tube_length >= " + number_text(need_whole) + " m for this t_end");
@@ -156,6 +167,9 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
 
 // c = sqrt(gamma p / rho): pressures x factor^2 (and velocities x factor) scale every sound speed by
 // `factor` at fixed densities. Reported: the sound speed of the left state.
+// Every wave is `factor` times faster, so it reaches the end walls at t_clear / factor: a factor that
+// brings that before t_end is refused, since the run would then end in the wall (a gas particle
+// pushed out of the tube, "blown up"), which the map would take for an instability of the step.
 double scale_shock_tube_sound_speed(Config& c, double factor) {
   auto s = std::make_shared<ShockTubeSettings>(c.settings<ShockTubeSettings>());
   for (ShockTubeState* st : {&s->left, &s->right}) {
@@ -163,8 +177,20 @@ double scale_shock_tube_sound_speed(Config& c, double factor) {
     st->velocity *= factor;
   }
   const auto& L = s->left;
+  const auto& R = s->right;
+  const double gm = c.fluid.eos.gamma;
+  const auto reach = end_wall_reach(c, *s, case_keys::spacing(c, s->tube_width));
+  const ShockTubeClearance clear = shock_tube_clearance(
+      ExactRiemannSolver({L.density, 0.0, L.pressure}, {R.density, 0.0, R.pressure}, gm), 0.5 * s->tube_length, reach);
+  if (c.time.t_end > clear.t_clear)
+    throw ConfigError("sound speed factor " + number_text(factor) + ": the waves, " + number_text(factor) +
+                      " times faster, reach the end walls before time.t_end = " + number_text(c.time.t_end) + " s: " +
+                      when_waves_arrive(clear, reach, s->tube_length) +
+                      ". The run would end in the wall, not in an instability of the step. Give factors <= " +
+                      four_digits_down(factor * clear.t_clear / c.time.t_end) +
+                      " for this t_end, a shorter time.t_end or a longer geometry.tube_length");
   c.case_settings = s;
-  return L.density > 0.0 ? std::sqrt(c.fluid.eos.gamma * L.pressure / L.density) : 0.0;
+  return L.density > 0.0 ? std::sqrt(gm * L.pressure / L.density) : 0.0;
 }
 
 }  // namespace
