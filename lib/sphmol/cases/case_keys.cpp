@@ -1,5 +1,6 @@
 #include "sphmol/cases/case_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphmol/core/join.hpp"
@@ -44,6 +45,12 @@ void require_viscous(CaseReaders& r, const Config& c, std::string_view why) {
   if (!(c.fluid.kinematic_viscosity > 0))
     r.fluid.fail("kinematic_viscosity", "case '" + c.case_name + "' " + std::string(why) + "; it needs nu > 0 (got " +
                                             number_text(c.fluid.kinematic_viscosity) + ")");
+}
+
+void require_no_body_force(CaseReaders& r, const Config& c, std::string_view why) {
+  const auto& f = c.fluid.body_force;
+  if (std::any_of(f.begin(), f.end(), [](double g) { return g != 0.0; }))
+    r.fluid.fail("body_force", "must be zero for case '" + c.case_name + "' (" + std::string(why) + ")");
 }
 
 void require_gravity(CaseReaders& r, const Config& c) {

@@ -26,6 +26,8 @@ double wall_layers(const Config& c, double extra = 0.0);
 void require_viscous(CaseReaders& r, const Config& c, std::string_view why);
 // Gravity along the last axis only, pointing down: [0, -g] or [0, 0, -g] with g > 0.
 void require_gravity(CaseReaders& r, const Config& c);
+// fluid.body_force zero, else an error giving `why` (a reference without one).
+void require_no_body_force(CaseReaders& r, const Config& c, std::string_view why);
 // discretization.boundary among `allowed`, else an error giving `why`.
 void require_boundary(CaseReaders& r, const Config& c, const std::vector<std::string>& allowed, std::string_view why);
 // "[a, b, c]" with the shortest round-trip text of each number, for to_yaml.

@@ -1,6 +1,7 @@
 // load_config: YAML text -> overrides applied to the tree -> validated Config. The schema lives
 // here, read section by section with MapReader (yaml_reader.hpp), so each key's type, default,
 // range and message are in one place; config/README.md documents the same rules.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <charconv>
@@ -338,6 +339,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   }
   if (const auto v = fluid.real("body_force_ramp")) c.fluid.body_force_ramp = *v;
   fluid.check("body_force_ramp", c.fluid.body_force_ramp >= 0, c.fluid.body_force_ramp, ">= 0 s; 0 = at once");
+  if (c.fluid.body_force_ramp > 0.0 && std::all_of(c.fluid.body_force.begin(), c.fluid.body_force.end(), [](double g) { return g == 0.0; }))
+    c.notices.push_back(fluid.where("body_force_ramp") + ": has no effect: fluid.body_force is zero");
 
   // discretization
   MapReader disc = top.section("discretization",

@@ -31,9 +31,7 @@ CaseRead read_beltrami(CaseReaders& r, const Config& c) {
   if (a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0) geo.fail("amplitudes", "are all zero: the fluid would stay at rest");
   case_keys::require_boundary(r, c, {"wall_particles"}, "the cube is periodic and has no walls");
   case_keys::require_viscous(r, c, "is measured by its viscous decay rate nu k^2");
-  for (std::size_t i = 0; i < c.fluid.body_force.size(); ++i)
-    if (c.fluid.body_force[i] != 0.0)
-      r.fluid.fail("body_force", "must be zero for case 'beltrami' (the ABC flow decays freely)");
+  case_keys::require_no_body_force(r, c, "the ABC flow decays freely");
   if (c.fluid.eos.type == "ideal_gas")
     r.fluid.fail("eos", "case 'beltrami' sets its initial pressure through the densities of a barotropic EOS "
                         "(linear, linear_relative or tait), not ideal_gas");

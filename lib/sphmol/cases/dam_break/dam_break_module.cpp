@@ -27,6 +27,11 @@ CaseRead read_dam_break(CaseReaders& r, const Config& c) {
                                         std::to_string(i) + "] = " + number_text(s->box[i]) + ")");
   s->column = col;
   case_keys::require_gravity(r, c);
+  // The experiments and Ritter's solution release the column under full gravity at t = 0.
+  if (c.fluid.body_force_ramp > 0.0)
+    r.fluid.fail("body_force_ramp", "must be 0 for case 'dam_break': the column is released under full gravity at t = 0, as "
+                                    "in the experiments and Ritter's solution it is measured against (got " +
+                                        number_text(c.fluid.body_force_ramp) + " s)");
   case_keys::require_boundary(r, c, {"wall_particles"}, "the tank is built from wall particles");
   if (c.fluid.eos.type != "tait" && c.fluid.eos.type != "linear_relative")
     r.fluid.fail("eos", "case 'dam_break' needs eos.type 'tait' or 'linear_relative' (got '" + c.fluid.eos.type +

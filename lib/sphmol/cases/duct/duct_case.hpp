@@ -25,7 +25,10 @@ namespace sphmol {
 class DuctCase final : public Case<3> {
  public:
   std::unique_ptr<SphSystem<3>> build(const Config& config) override;
-  std::string reference() const override { return "duct_series (rectangular-duct start-up, Fourier series)"; }
+  std::string reference() const override {
+    return std::string("duct_series (rectangular-duct start-up, Fourier series)") +
+           (ramp_ > 0.0 ? " of the body force ramped in over fluid.body_force_ramp (Duhamel's principle)" : "");
+  }
   // |u_max|, the steady centre speed of the series, from the config alone (also before the scene is built).
   double velocity_scale(const Config& config) const override;
   // From pieces (run/piece_reduction.hpp): over ranks without gathering the whole state.
@@ -39,6 +42,9 @@ class DuctCase final : public Case<3> {
 
  private:
   DuctSeries ref_{1.0, 1.0, 1.0, 0.0};
+  double ramp_ = 0.0;  // fluid.body_force_ramp [s]
+  // The start-up series at (y, z, t), with the force ramped in over ramp_ (reference/ramped_start.hpp).
+  double exact(double y, double z, double t) const;
   double length_ = 0.0, spacing_ = 0.0;
   bool profiles_ = true;
   std::vector<double> t_, peak_sph_, peak_exact_;

@@ -74,6 +74,7 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   MapReader eos = r.fluid.section("eos", {"type", "sound_speed", "gamma", "background_pressure", "clamp_negative"});
   if (c.fluid.eos.type != "ideal_gas")
     eos.fail("type", "case 'shock_tube' needs type 'ideal_gas' (got '" + c.fluid.eos.type + "')");
+  case_keys::require_no_body_force(r, c, "the exact Riemann solution it is measured against has none");
   MapReader geo = r.top.section("geometry", {"tube_length", "tube_width"});
   s->tube_length = geo.required(geo.real("tube_length"), "tube_length", "fluid extent in x, > 0");
   geo.check("tube_length", s->tube_length > 0, s->tube_length, "> 0");
