@@ -67,3 +67,36 @@ TEST_CASE("command line: a compare sweep not from coarse to fine is refused", "[
   CHECK_FALSE(fs::exists(dir / "x"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("command line: term combinations the assembly cannot build are config errors (exit 2), not failed runs", "[cli][integration]") {
+  // They were thrown by the assembly as plain errors: exit 1, "run failed", which scripts count as a
+  // numerical failure.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-combos");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string v = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  struct Case {
+    std::string config;
+    std::vector<std::string> sets;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"couette.yaml", {"discretization.momentum=integral_approach"}, "'integral_approach' needs viscosity: none"},
+      {"dam_break.yaml", {"discretization.spacing=0.1", "discretization.momentum=integral_approach"},
+       "'integral_approach' is not available with density_diffusion"},
+      {"couette.yaml", {"discretization.wall_density_floor_width=0.01"}, "no wall is dynamic"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args{"--threads", "1", "-q", "--config", v + c.config, "--output", (dir / "x").string()};
+    for (const auto& s : c.sets) {
+      args.push_back("--set");
+      args.push_back(s);
+    }
+    const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "err").string());
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::StartsWith("sph-mol: config error: ") && Catch::Matchers::Contains(c.says));
+    CHECK_FALSE(fs::exists(dir / "x"));
+  }
+  fs::remove_all(dir);
+}

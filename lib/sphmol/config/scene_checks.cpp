@@ -72,6 +72,11 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     disc.fail("repulsive", "r0 = " + shown(d.repulsive.r0) + " spacings must lie inside the kernel support (" +
                                shown(support * d.smoothing_ratio) + " spacings: support " + shown(support) +
                                " h, h = " + shown(d.smoothing_ratio) + " dx)");
+  // The integral approach's gradients have no form for these terms (rhs/assemble.cpp).
+  if (d.momentum == "integral_approach" && d.viscosity != "none")
+    disc.fail("momentum", "'integral_approach' needs viscosity: none (got '" + d.viscosity + "')");
+  if (d.momentum == "integral_approach" && d.density_diffusion > 0.0)
+    disc.fail("momentum", "'integral_approach' is not available with density_diffusion (got " + shown(d.density_diffusion) + ")");
   if (d.pair_passes == "fused") {
     std::string stored;
     if (d.boundary == "virtual_repulsive") stored = "boundary: virtual_repulsive";

@@ -135,10 +135,11 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
     throw std::invalid_argument("discretization.momentum: unsupported '" + disc.momentum + "'");
   if (ia) {
     // Terms with no IA form would mix the two gradients.
+    // Config errors (exit 2): the loader's checks (config/scene_checks.cpp) say so first with the line.
     if (disc.viscosity != "none")
-      throw std::invalid_argument("discretization.momentum: integral_approach needs viscosity: none (got '" + disc.viscosity + "')");
+      throw ConfigError("discretization.momentum: integral_approach needs viscosity: none (got '" + disc.viscosity + "')");
     if (disc.density_diffusion > 0.0)
-      throw std::invalid_argument("discretization.momentum: integral_approach is not available with density_diffusion");
+      throw ConfigError("discretization.momentum: integral_approach is not available with density_diffusion");
   }
   const auto& av = disc.artificial_viscosity;
   // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
@@ -314,7 +315,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   fields.wall_density_floor = fluid.density;
   fields.wall_density_floor_width = disc.wall_density_floor_width * fluid.density;
   if (disc.wall_density_floor_width_given && !dynamic_walls)
-    throw std::invalid_argument("discretization.wall_density_floor_width: is the floor of dynamic wall particles' density, "
+    throw ConfigError("discretization.wall_density_floor_width: is the floor of dynamic wall particles' density, "
                                 "and no wall is dynamic (discretization.wall_pressure '" + disc.wall_pressure +
                                 "' and no scene body with treatment: dynamic)");
   if (disc.smoothing_length == "density") fields.smoothing_length = SmoothingLengthMode::density;
