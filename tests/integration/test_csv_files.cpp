@@ -57,6 +57,7 @@ std::string csv_problems(const fs::path& file, bool numeric_rows) {
   const auto header = split(line);
   for (const auto& name : header) {
     if (numeric(name)) return "header cell '" + name + "' is a number";
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, " [1]") == 0) return "column '" + name + "': a dimensionless unit is [-]";
     const auto open = name.find(" [");
     if (open == std::string::npos || name.back() != ']') {
       // Text columns (labels, status) have no unit; numeric tables have none of them.

@@ -103,7 +103,7 @@ nlohmann::json BeltramiCase::measure_pieces(const SphSystem<3>& whole, const Own
   mode_.push_back(mode);
   if (out.enabled) {
     std::ostringstream s;
-    s << "t [s],mode_amplitude_sph [1],mode_amplitude_exact [1]\n" << std::setprecision(12);
+    s << "t [s],mode_amplitude_sph [-],mode_amplitude_exact [-]\n" << std::setprecision(12);
     for (std::size_t k = 0; k < t_.size(); ++k) s << t_[k] << ',' << mode_[k] << ',' << std::exp(-ref_.decay_rate() * t_[k]) << '\n';
     out.write("decay.csv", s.str());
   }
@@ -157,7 +157,7 @@ std::vector<PlotScript> BeltramiCase::plots(const OutputSink&) const {
     << gnuplot_csv_preamble("ABC flow decay: SPH mode amplitude vs exact (sph-mol BeltramiCase)", 900, 640, 11, "decay.png")
     << "set title \"Arnold-Beltrami-Childress flow: mode amplitude (points SPH, line exact e^{-nu k^2 t}, nu k^2 = "
     << std::setprecision(4) << ref_.decay_rate() << " 1/s)\" noenhanced\n"
-    << "set xlabel 't [s]'\nset ylabel 'amplitude [1]'\nset logscale y\nset grid\nset key top right\n"
+    << "set xlabel 't [s]'\nset ylabel 'amplitude [-]'\nset logscale y\nset grid\nset key top right\n"
     << "plot 'decay.csv' using 1:3 with lines lw 2 title 'exact', \\\n"
     << "  'decay.csv' using 1:2 with points pt 7 ps 1.2 title 'SPH'\n";
   return {{"decay.png", s.str()}};
