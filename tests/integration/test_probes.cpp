@@ -145,3 +145,28 @@ TEST_CASE("probes: a restart from a checkpoint continues each series", "[probes]
   }
   CHECK(read_csv(dir / "again" / "probe_gauge.csv").size() == 6);
 }
+
+TEST_CASE("probes: a run that blows up writes the rows sampled before it", "[probes][integration][health]") {
+  // The probes write at output times and at most once a second between them: a run that blew up
+  // between output times left no probe file at all (or, after SIGINT, one that stopped at its last
+  // write), while summary.json listed them. The tank at a step far above its stable one blows up
+  // at t = 0.016 s, after the samples at t = 0 and 0.01 s.
+  const fs::path dir = scratch("probes-blow-up");
+  const auto r = test_support::run_process(
+      SPHMOL_BINARY,
+      {"--config", std::string(SPHMOL_SOURCE_DIR) + "/examples/tank_obstacle_2d.yaml", "--output", (dir / "run").string(), "-q",
+       "--threads", "1", "--set", "discretization.spacing=0.02", "--set", "time.dt=4e-3", "--set", "time.t_end=0.5"},
+      (dir / "run.log").string());
+  INFO(r.err);
+  REQUIRE(r.code == 3);
+  const auto summary = json_file(dir / "run" / "summary.json");
+  const double t_blow = summary["blow_up"]["t"].get<double>();
+  for (const char* f : {"probe_bottom.csv", "probe_surface.csv", "probe_block.csv"}) {
+    INFO(f);
+    REQUIRE(fs::exists(dir / "run" / f));
+    const auto rows = read_csv(dir / "run" / f);
+    REQUIRE(rows.size() >= 3);  // the header and the samples at t = 0 and 0.01 s
+    CHECK(std::stod(rows.back().at(0)) < t_blow);
+    CHECK(std::find(summary["files"].begin(), summary["files"].end(), f) != summary["files"].end());
+  }
+}

@@ -172,7 +172,7 @@ TEST_CASE("probe observer: `every` probes ask the run loop for their own times",
     obs.at_time(*f.sys, f.y.data(), t, out);
     sampled.push_back(t);
   }
-  obs.at_end(*f.sys, f.y.data(), 1.0, out);
+  obs.at_stop(out);
   // 0, 0.3, 0.6, 0.9 and the end state at t_end = 1, which is not a multiple of every.
   REQUIRE(sampled.size() == 5);
   CHECK(sampled[3] == Approx(0.9));

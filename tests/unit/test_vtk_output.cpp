@@ -49,7 +49,8 @@ struct Decoded {
 };
 
 Decoded decode(const std::string& text) {
-  Decoded d{vtk_appended::read(text)};
+  Decoded d;
+  d.file = vtk_appended::read(text);
   REQUIRE(d.file.root->name == "VTKFile");
   REQUIRE(d.file.root->attr.at("type") == "PolyData");
   const auto* poly = d.file.root->child("PolyData");

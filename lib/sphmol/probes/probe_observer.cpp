@@ -609,7 +609,7 @@ void ProbeObserver<D>::at_time(const SphSystem<D>& sys, const double* y, double 
 }
 
 template <int D>
-void ProbeObserver<D>::at_end(const SphSystem<D>&, const double*, double, const OutputSink& out) {
+void ProbeObserver<D>::at_stop(const OutputSink& out) {
   flush(out);
 }
 

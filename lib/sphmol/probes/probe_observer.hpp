@@ -43,7 +43,7 @@ class ProbeObserver final : public OutputObserver<D> {
       if (!s.cfg.every) return true;
     return false;
   }
-  void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
+  void at_stop(const OutputSink& out) override;
   double next_time() const override;
   void at_time(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) override;
   void pass_time(double t) override { due(t); }

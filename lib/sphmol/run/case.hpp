@@ -120,7 +120,9 @@ class OutputObserver {
   // at output times for it, unless it writes pieces or samples the output times from pieces); false
   // for an observer that only samples at its own times (probes that all have `every`).
   virtual bool samples_outputs() const { return true; }
-  virtual void at_end(const SphSystem<D>& sys, const double* y, double t, const OutputSink& out) {}
+  // The run stops: at t_end, by a signal or at a blow-up. Writes what was sampled since the last write
+  // (on rank 0), so that a run that ends early leaves its series up to where it stopped.
+  virtual void at_stop(const OutputSink& out) {}
   // Over several ranks: an observer that writes per-rank files (VTK pieces) is called on every rank
   // at output times with the rank's own particles (run/owned_piece.hpp) instead of at_output on
   // rank 0 with the whole system. `whole`: the scene as built (not evaluated off rank 0); `out`:

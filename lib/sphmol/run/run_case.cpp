@@ -433,10 +433,12 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       part->gather(y);
       part->combine_monitors();
     }
-    if (root)
-      for (auto& o : observers) o->at_end(*sys, y.data(), config.time.t_end, out);
     if (opt.final_state) *opt.final_state = y;
   }
+  // Completed, interrupted or blown up: the probes' rows sampled since their last write (they write
+  // at most once a second between output times).
+  if (root)
+    for (auto& o : observers) o->at_stop(out);
   const double wall = wall_now();
   const IntegratorStats st = integrator->stats();
   // The scene's counts (over ranks the particles are released on every rank but the root); the
