@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "sphmol/studies/compare.hpp"
+#include "number_checks.hpp"
 #include "sphmol/run/output_folder.hpp"
 #include "study_common.hpp"
 #include "subcommand.hpp"
@@ -78,17 +79,17 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--output", opt.output, "output directory (default out/compare)");
       sub.add_option("--reference-dt", opt.reference_dt,
                      "error = time error against an ARKODE Verner 8(5)6 run at this fixed step (default: the case's exact error)")
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--rtols", opt.rtols, "tolerance sweep of the adaptive integrators, coarse to fine (default 1e-3,...,1e-7)")
           ->delimiter(',')
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--step-factors", opt.step_factors,
                      "factors on time.dt or the CFL coefficients for the leapfrogs, coarse to fine (default 1,0.5,0.25,0.125)")
           ->delimiter(',')
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--targets", opt.targets, "target errors for the fastest-integrator summary (default 0.01,0.001)")
           ->delimiter(',')
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },
     run}};

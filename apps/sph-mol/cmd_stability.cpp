@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "sphmol/studies/stability.hpp"
+#include "number_checks.hpp"
 #include "sphmol/run/output_folder.hpp"
 #include "study_common.hpp"
 #include "subcommand.hpp"
@@ -51,13 +52,13 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--output", opt.output, "output directory (default out/stability)");
       sub.add_option("--sound-speed-factors", opt.c_factors, "factors on fluid.eos.sound_speed (default 0.25,0.5,1,2)")
           ->delimiter(',')
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--step-factors", opt.step_factors,
                      "factors on time.dt (fixed step) or on the time.cfl coefficients (default 0.5,1,2,4)")
           ->delimiter(',')
-          ->check(CLI::PositiveNumber);
+          ->check(sphmol::app::positive_number());
       sub.add_option("--osc-threshold", opt.threshold, "|e_signed - late mean| above which a swing counts, in units of v0 (default 0.002)")
-          ->check(CLI::NonNegativeNumber);
+          ->check(sphmol::app::non_negative_number());
       sub.add_option("--samples", opt.samples, "equally spaced sample times (default 20)")->check(CLI::Range(3, 1000));
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
     },

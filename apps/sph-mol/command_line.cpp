@@ -1,4 +1,5 @@
 #include "command_line.hpp"
+#include "number_checks.hpp"
 
 #include <filesystem>
 #include <string>
@@ -28,13 +29,13 @@ void add_run_options(CLI::App& app, RunCommand& cmd) {
                      bounded_spin_count +
                      " iterations at a barrier, then sleep, unless OMP_WAIT_POLICY or GOMP_SPINCOUNT is set "
                      "(docs/performance.md)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(sphmol::app::non_negative_number());
   app.add_option("--set", cmd.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);
 #ifdef SPHMOL_HAVE_MPI
   app.add_option("--rebalance-threshold", cmd.rebalance_threshold,
                  "under mpirun: partition the particles again when the largest rank's pair work exceeds this many "
                  "times the mean (checked at each halo re-plan; default 1.2)")
-      ->check(CLI::Range(1.0, 1e300));
+      ->check(sphmol::app::number_above(1.0, false));
 #endif
 }
 

@@ -100,3 +100,30 @@ TEST_CASE("command line: term combinations the assembly cannot build are config 
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("command line: a number out of its range is named with its bound, not with the largest double", "[cli][integration]") {
+  // CLI11's NonNegativeNumber and PositiveNumber printed "not in range 0.000000 to 1797693...", 300 digits.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-ranges");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"--threads", "-1", "--config", cfg}, "--threads: Value -1 is not a number >= 0"},
+      {{"stability", "--config", cfg, "--sound-speed-factors", "1,-1"}, "--sound-speed-factors: Value -1 is not a number > 0"},
+      {{"stability", "--config", cfg, "--osc-threshold", "x"}, "--osc-threshold: Value x is not a number >= 0"},
+      {{"compare", "--config", cfg, "--step-factors", "0"}, "--step-factors: Value 0 is not a number > 0"},
+      {{"converge", "--config", cfg, "--refine", "time", "--dt0", "-1e-3"}, "--dt0: Value -1e-3 is not a number > 0"},
+  };
+  for (const auto& c : cases) {
+    const auto r = test_support::run_process(SPHMOL_BINARY, c.args, (dir / "err").string());
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::Contains(c.says));
+    CHECK(r.err.size() < 200);
+  }
+  fs::remove_all(dir);
+}
