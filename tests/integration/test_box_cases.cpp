@@ -256,3 +256,17 @@ TEST_CASE("cavity at Re 400: the centre lines settle on Ghia's Re 400 profile, n
   CHECK(worst_u < 0.6 * du);
   CHECK(worst_v < 0.6 * dv);
 }
+
+TEST_CASE("cavity at a Reynolds number Ghia et al. did not tabulate: a notice says nothing is compared", "[integration][cavity][config]") {
+  // Re = 1 x 1 / 0.006 = 166.7: the centre-line errors were null with nothing said.
+  const std::string file = std::string(SPHMOL_SOURCE_DIR) + "/verification/cavity.yaml";
+  const auto notices = [&](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const auto& n : load_config(file, sets).notices) all += n + "\n";
+    return all;
+  };
+  CHECK_THAT(notices({"fluid.kinematic_viscosity=0.006"}),
+             Catch::Contains("Re = |U| L / nu = 166.667 has no centre-line table of Ghia, Ghia & Shin (1982)"));
+  CHECK_THAT(notices({}), !Catch::Contains("centre-line table"));
+  CHECK_THAT(notices({"fluid.kinematic_viscosity=0.0025"}), !Catch::Contains("centre-line table"));  // Re 400
+}
