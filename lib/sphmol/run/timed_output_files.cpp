@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 namespace sphmol {
@@ -21,11 +22,15 @@ std::vector<std::pair<double, std::string>> timed_output_files(const OutputSink&
     if (name.rfind(prefix, 0) != 0) continue;
     // Only the names the run writes, <prefix><number>.csv: plot scripts quote these names, so a name
     // with a quote or a '|' in it must never be picked up (a checkpoint carries the list on restart).
+    // The time is what lies between the prefix and ".csv", parsed whole: strtod on "1.csv" would take
+    // "1." and leave "csv", and the file of t = 1 was never drawn.
+    constexpr std::string_view suffix = ".csv";
+    if (name.size() <= prefix.size() + suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    const std::string number = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (number.find_first_not_of("0123456789.eE+-") != std::string::npos) continue;
     char* end = nullptr;
-    const char* number = name.c_str() + prefix.size();
-    const double t = std::strtod(number, &end);
-    if (end == number || std::string_view(end) != ".csv") continue;
-    if (std::string_view(number, end).find_first_not_of("0123456789.eE+-") != std::string_view::npos) continue;
+    const double t = std::strtod(number.c_str(), &end);
+    if (end != number.c_str() + number.size()) continue;
     files.emplace_back(t, name);
   }
   std::sort(files.begin(), files.end());
