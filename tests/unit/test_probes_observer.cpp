@@ -154,7 +154,11 @@ TEST_CASE("probe observer: CSV files of points, lines, gauges and forces", "[pro
   REQUIRE(cont.size() == 4);
   CHECK(cells(cont[2])[0] == "0.5");
   CHECK(cells(cont[3])[0] == "1");
-  CHECK(again.plots(out).size() == 7);
+  // Every probe but `above`, which no fluid reaches: all its cells are empty, and gnuplot failed on
+  // a plot with no points ("x range is invalid"), a warning per such probe.
+  const auto plots = again.plots(out);
+  CHECK(plots.size() == 6);
+  for (const auto& p : plots) CHECK(p.png != "probe_above.png");
 }
 
 TEST_CASE("probe observer: `every` probes ask the run loop for their own times", "[probes][observer]") {

@@ -636,12 +636,42 @@ void ProbeObserver<D>::restore_state(const nlohmann::json& state, const OutputSi
   }
 }
 
+namespace {
+
+// Whether a row of `rows` (CSV lines) whose first cell is `t` (any row if `t` is empty) has a value in a
+// column from `first` (0-based) on: a probe with no fluid near it has only empty cells there, and
+// gnuplot refuses to draw a plot with no points.
+bool has_values(const std::string& rows, std::size_t first, const std::string& t) {
+  std::stringstream lines(rows);
+  for (std::string line; std::getline(lines, line);) {
+    std::stringstream cells(line);
+    std::size_t k = 0;
+    for (std::string cell; std::getline(cells, cell, ','); ++k) {
+      if (k == 0 && !t.empty() && cell != t) break;
+      if (k >= first && !cell.empty()) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 template <int D>
 std::vector<PlotScript> ProbeObserver<D>::plots(const OutputSink&) const {
   std::vector<PlotScript> list;
   for (const auto& s : series_) {
     if (s.rows.empty()) continue;
     const ProbeConfig& c = s.cfg;
+    // Line and plane probes draw their last sampled time, the others every time.
+    const bool at_last = c.type == "line" || c.type == "plane";
+    std::string t_last;
+    if (at_last) {
+      const std::size_t end = s.rows.rfind('\n', s.rows.size() - 2);
+      const std::string last = s.rows.substr(end == std::string::npos ? 0 : end + 1);
+      t_last = last.substr(0, last.find(','));
+    }
+    // No value to draw (no fluid reached the probe yet): no plot, its file says so with empty cells.
+    if (!has_values(s.rows, at_last ? 1 + D : 1, t_last)) continue;
     const std::string csv = gnuplot_file(file_name(c.name)), png = "probe_" + c.name + ".png";
     // Column names from the header (without the newline).
     std::vector<std::string> cols;
@@ -674,10 +704,7 @@ std::vector<PlotScript> ProbeObserver<D>::plots(const OutputSink&) const {
         g << "unset multiplot\n";
       }
     } else {
-      // Line / plane: the last sampled time.
-      const std::size_t end = s.rows.rfind('\n', s.rows.size() - 2);
-      const std::string last = s.rows.substr(end == std::string::npos ? 0 : end + 1);
-      const std::string t_last = last.substr(0, last.find(','));
+      // Line / plane: the last sampled time (t_last).
       const std::size_t first_field = 1 + D + 1;  // gnuplot column of the first field
       if (c.type == "line") {
         // Against the coordinate that varies most along the line.
