@@ -57,3 +57,19 @@ TEST_CASE("output folder: a failed claim keeps folders that were there or hold f
   CHECK(fs::exists(base / "ok" / sphmol::kOutputLockFile));
   fs::remove_all(base);
 }
+
+TEST_CASE("output folder: a study refuses a run's folder and keeps its own earlier results", "[output-folder]") {
+  // A study into a run's folder wrote its files beside the run's, where the run's --overwrite (which
+  // deletes the files its summary lists) would leave them.
+  const fs::path base = scratch("folder-study");
+  fs::create_directories(base / "run");
+  std::ofstream(base / "run" / "summary.json") << R"({"files": ["summary.json"]})";
+  CHECK_THROWS_WITH(OutputFolder((base / "run").string(), OutputFolder::Options{.lock_only = true}),
+                    Catch::Contains("holds the results of a run (summary.json); a study does not write into a run's folder"));
+  // A study's own folder is claimed again (its fixed file names are rewritten).
+  fs::create_directories(base / "study");
+  std::ofstream(base / "study" / "comparison.json") << "{}";
+  { const OutputFolder folder((base / "study").string(), OutputFolder::Options{.lock_only = true}); }
+  CHECK(fs::exists(base / "study" / "comparison.json"));
+  fs::remove_all(base);
+}

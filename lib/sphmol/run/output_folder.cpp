@@ -81,7 +81,12 @@ OutputFolder::OutputFolder(const std::string& directory, Options options)
     return OutputFolderError(message);
   };
   const fs::path summary = fs::path(directory) / "summary.json";
-  if (options.lock_only || options.continuing || !fs::exists(fs::symlink_status(summary))) return;
+  if (options.continuing || !fs::exists(fs::symlink_status(summary))) return;
+  // A study's files beside a run's would be neither in that run's file list (its --overwrite leaves
+  // them) nor told apart from it.
+  if (options.lock_only)
+    throw refuse("output directory " + directory + " holds the results of a run (summary.json); a study does not write "
+                 "into a run's folder: choose another --output");
   if (!options.overwrite)
     throw refuse("output directory " + directory +
                  " holds the results of another run (summary.json); choose another --output, or give "

@@ -5,7 +5,8 @@
 // - a folder that holds another run's summary.json is refused unless `overwrite`, which first deletes
 //   exactly the files that run listed in its summary (nothing else in the folder is touched);
 // - `continuing` (a restart into its own run folder) accepts the summary the interrupted run left;
-// - `lock_only` takes the lock and leaves the folder's contents alone;
+// - `lock_only` (a study) takes the lock and leaves the folder's contents alone, but refuses a folder
+//   that holds a run's summary.json;
 // - a folder whose own name is a symbolic link is refused (io/links.hpp), and so is a summary.json
 //   that is a link, a FIFO, a device or larger than a summary can be;
 // - folders it created are removed again when it is destroyed by an exception while they hold
@@ -26,7 +27,8 @@ class OutputFolder {
     bool overwrite = false;
     bool continuing = false;
     // Only the lock: a study (compare, converge, stability) rewrites its own fixed file names, and a
-    // second study into the same folder while the first runs is what must be stopped.
+    // second study into the same folder while the first runs is what must be stopped; a run's folder
+    // is refused.
     bool lock_only = false;
   };
   // Creates the folder if needed (and its parents), locks it and checks it. Throws OutputFolderError.
