@@ -222,3 +222,28 @@ TEST_CASE("csv: the study and kernel tables have one header row and no comment l
     CHECK(csv_problems(f, curves) == "");
   }
 }
+
+TEST_CASE("csv: output.profiles false writes no per-output-time files in any case", "[integration][csv][output]") {
+  // The hydrostatic tank (pressure_t<t>.csv) and the cavity (centreline_[uv]_t<t>.csv) wrote them anyway.
+  const fs::path dir = scratch("no-profiles");
+  const std::string v = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"hydrostatic.yaml", "discretization.particles_across=10"}, {"cavity.yaml", "discretization.particles_across=10"},
+      {"couette.yaml", "discretization.particles_across=20"}, {"shock_tube_1d.yaml", "discretization.spacing=0.02"}};
+  for (const auto& [config, size] : runs) {
+    INFO(config);
+    const fs::path out = dir / config;
+    const auto r = test_support::run_process(SPHMOL_BINARY,
+                                             {"--config", v + config, "-q", "--threads", "1", "--output", out.string(), "--set", size,
+                                              "--set", "time.t_end=0.05", "--set", "output.times=[0.05]", "--set", "output.profiles=false"},
+                                             (dir / "err").string());
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    for (const auto& f : csv_files(out)) {
+      INFO(f.filename().string());
+      CHECK(f.filename().string().find("_t0.05") == std::string::npos);
+    }
+    const auto summary = json_file(out / "summary.json");
+    for (const auto& [pattern, what] : summary["csv_files"].items()) CHECK(pattern.find("_t<t>") == std::string::npos);
+  }
+}

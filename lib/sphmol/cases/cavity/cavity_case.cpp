@@ -30,6 +30,7 @@ std::unique_ptr<SphSystem<2>> CavityCase::build(const Config& config) {
   ghia_ = load_ghia(reference_data_file("ghia1982_u_vertical_centreline.csv"),
                     reference_data_file("ghia1982_v_horizontal_centreline.csv"), Re_);
   kernel_ = config.discretization.kernel;
+  profiles_ = config.output.profiles;
   BoxWalls<2> walls{};
   for (int d = 0; d < 2; ++d) walls[d][0].present = walls[d][1].present = true;
   walls[1][1].velocity = {U_, 0.0};
@@ -162,7 +163,7 @@ nlohmann::json CavityCase::measure_pieces(const SphSystem<2>& whole, const Owned
     ++nv;
     csv_v << xx << ',' << v << ',' << ghia_->v[k] << '\n';
   }
-  if (out.enabled) {
+  if (out.enabled && profiles_) {
     std::ostringstream tag;
     tag << "_t" << output_time_text(t) << ".csv";
     last_u_csv_ = "centreline_u" + tag.str();
@@ -216,7 +217,7 @@ void CavityCase::annotate(nlohmann::json& summary) const {
       "per convective time L/U between the last two outputs: relative kinetic-energy change (ke_rate) and RMS "
       "change of the centre-line velocities / U (centreline_rate); steady if both < 5e-3";
   summary["discretization"]["spacing"] = spacing_;
-  if (ghia_) {
+  if (ghia_ && profiles_) {
     std::ostringstream r;
     r << " vs Ghia, Ghia & Shin (1982) Tables I and II at Re = " << Re_
       << "; SPH velocities interpolated to the table points by linear moving least squares, output time t";

@@ -48,6 +48,7 @@ class CavityCase final : public Case<2> {
   std::optional<GhiaTable> ghia_;
   double U_ = 1.0, L_ = 1.0, Re_ = 0.0, spacing_ = 0.0, ke_prev_ = -1.0;
   std::string kernel_;
+  bool profiles_ = true;  // output.profiles: centreline_[uv]_t<t>.csv
   static constexpr double kSteadyRate = 5e-3;
   double t_prev_ = 0.0;
   std::vector<double> line_prev_;  // centre-line values at the previous output

@@ -32,6 +32,7 @@ std::unique_ptr<SphSystem<D>> HydrostaticCase<D>::build(const Config& config) {
   if (!along_last)
     throw std::invalid_argument("fluid.body_force: hydrostatic needs gravity along the last axis, pointing down, g > 0");
   settle_ = 2.0 * config.fluid.body_force_ramp;
+  profiles_ = config.output.profiles;
   BoxWalls<D> walls{};
   for (int d = 0; d < D; ++d) walls[d][0].present = walls[d][1].present = true;
   walls[D - 1][1].present = false;  // open top: free surface
@@ -74,7 +75,7 @@ nlohmann::json HydrostaticCase<D>::measure_pieces(const SphSystem<D>& whole, con
   PieceReduction r;
   const auto count = r.sum(), s2 = r.sum(), sy = r.sum(), sp = r.sum(), syy = r.sum(), syp = r.sum(), srho = r.sum();
   const auto emax = r.largest();
-  const bool file = writes_files(piece, out.enabled);
+  const bool file = profiles_ && writes_files(piece, out.enabled);
   std::vector<PressureRow> rows;
   for (std::size_t k = 0; k < piece.fluid_rows.size(); ++k) {
     const std::size_t i = piece.fluid_rows[k];
@@ -163,9 +164,10 @@ void HydrostaticCase<D>::annotate(nlohmann::json& summary) const {
       "exact gradient of the weakly compressible column): worst over output times t >= settle_time; max_drift over all RHS evaluations; "
       "drift_creep: growth of max_drift from the first output at t >= t_last / 2 (drift_creep_since) to the last";
   summary["discretization"]["spacing"] = spacing_;
-  summary["csv_files"]["pressure_t<t>.csv"] =
-      std::string("pressure of every fluid particle vs the hydrostatic p = rho0 g (depth - ") + (D == 3 ? "z" : "y") +
-      ") at output time t";
+  if (profiles_)
+    summary["csv_files"]["pressure_t<t>.csv"] =
+        std::string("pressure of every fluid particle vs the hydrostatic p = rho0 g (depth - ") + (D == 3 ? "z" : "y") +
+        ") at output time t";
 }
 
 // p against depth at the last output time: every fluid particle, and the line rho0 g depth.

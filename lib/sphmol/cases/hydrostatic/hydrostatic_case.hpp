@@ -39,6 +39,7 @@ class HydrostaticCase final : public Case<D> {
 
  private:
   double rho0_ = 0.0, g_ = 0.0, depth_ = 0.0, spacing_ = 0.0, settle_ = 0.0;
+  bool profiles_ = true;  // output.profiles: pressure_t<t>.csv
   std::shared_ptr<double> drift_ = std::make_shared<double>(0.0);
 };
 
