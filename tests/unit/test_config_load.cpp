@@ -321,3 +321,20 @@ TEST_CASE("config: output.every past t_end leaves t_end alone with a notice", "[
   REQUIRE(c.notices.size() == 1);
   CHECK(c.notices[0] == "--set output.every=0.2: output.every: 0.2 s is past time.t_end = 0.1 s: the only output time is t_end");
 }
+
+TEST_CASE("config: parameters of the position correction auto did not choose get a notice", "[config]") {
+  // They were dropped with nothing said but "auto: transport_velocity".
+  const std::string tg = std::string(SPHMOL_SOURCE_DIR) + "/verification/taylor_green.yaml";
+  const auto notices_of = [&](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const auto& n : load_config(tg, sets).notices) all += n + "\n";
+    return all;
+  };
+  CHECK_THAT(notices_of({}), !Contains("not used"));  // Re_h = 4: the transport velocity, with the file's parameters
+  CHECK_THAT(notices_of({"discretization.particle_shifting={coefficient: 2}"}),
+             Contains("discretization.particle_shifting.coefficient: not used: position_correction auto chose transport_velocity (Re_h"));
+  CHECK_THAT(notices_of({"fluid.kinematic_viscosity=0.001"}),
+             Contains("discretization.transport_velocity.step_factor: not used: position_correction auto chose particle_shifting (Re_h"));
+  CHECK_THAT(notices_of({"discretization.position_correction=none"}),
+             Contains("discretization.transport_velocity.step_factor: not used: position_correction none"));
+}

@@ -209,7 +209,7 @@ bool select_position_correction(DiscretizationConfig& d, std::optional<bool> tv_
 }
 
 // What the chosen correction needs of the flow. The messages name the key that selected it.
-void check_position_correction(const Config& c, const CaseModule& module, MapReader& disc) {
+void check_position_correction(Config& c, const CaseModule& module, MapReader& disc) {
   const auto& d = c.discretization;
   const auto& pc = d.position_correction;
   const bool by_key = !pc.setting.empty();
@@ -227,6 +227,26 @@ void check_position_correction(const Config& c, const CaseModule& module, MapRea
                   "needs a flow without a free surface; case '" + c.case_name + "' has one" + via);
   if (d.particle_shifting.enabled && d.transport_velocity.enabled)  // only the maps, without position_correction
     disc.fail("particle_shifting", "is an alternative to discretization.transport_velocity: give one of the two");
+  // Parameters given for the scheme position_correction did not choose (with auto: "when chosen").
+  if (!pc.setting.empty()) {
+    const std::pair<const char*, std::vector<std::string>> maps[] = {
+        {"transport_velocity", {"background_pressure", "step_factor", "extra_stress"}},
+        {"particle_shifting", {"coefficient", "velocity", "correction"}}};
+    for (const auto& [map, keys] : maps) {
+      if (pc.chosen == map || !disc.has(map)) continue;
+      MapReader m = disc.section(map, [&] {
+        auto all = keys;
+        all.push_back("enabled");
+        return all;
+      }());
+      for (const auto& key : keys)
+        if (m.has(key)) {
+          c.notices.push_back(m.where(key) + ": not used: position_correction " + pc.setting +
+                              (pc.setting == "auto" ? " chose " + pc.chosen + (pc.reason.empty() ? "" : " (" + pc.reason + ")") : ""));
+          break;
+        }
+    }
+  }
 }
 
 // position_correction: auto left to the rule: the transport velocity below the cell Reynolds number
