@@ -338,3 +338,20 @@ TEST_CASE("config: parameters of the position correction auto did not choose get
   CHECK_THAT(notices_of({"discretization.position_correction=none"}),
              Contains("discretization.transport_velocity.step_factor: not used: position_correction none"));
 }
+
+TEST_CASE("config: wall_beta_max without Morris' wall model and vtk_walls without VTK get a notice", "[config]") {
+  const auto notices_of = [](const std::vector<std::string>& sets) {
+    std::string all;
+    for (const auto& n : load_config_string(base, sets, "case.yaml").notices) all += n + "\n";
+    return all;
+  };
+  CHECK_THAT(notices_of({"discretization.wall_model=prescribed", "discretization.wall_beta_max=2"}),
+             Contains("discretization.wall_beta_max: has no effect: it caps the extrapolation of wall_model: morris (wall_model is 'prescribed')"));
+  CHECK_THAT(notices_of({"discretization.wall_model=morris", "discretization.wall_beta_max=2"}), !Contains("wall_beta_max"));
+  CHECK_THAT(notices_of({"output.vtk=false", "output.vtk_walls=false"}), Contains("output.vtk_walls: has no effect: output.vtk is false"));
+  CHECK_THAT(notices_of({"output.vtk=true", "output.vtk_walls=false"}), !Contains("vtk_walls"));
+  // The resolved config writes neither where it is not read, so it loads back without them.
+  const Config c = load_config_string(base, {"discretization.wall_model=prescribed", "output.vtk=false"});
+  CHECK_THAT(to_yaml(c), !Contains("wall_beta_max") && !Contains("vtk_walls"));
+  CHECK(load_config_string(to_yaml(c)).notices.empty());
+}

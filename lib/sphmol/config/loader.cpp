@@ -463,6 +463,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     }
     if (const auto v = disc.real("wall_beta_max")) d.wall_beta_max = *v;
     disc.check("wall_beta_max", d.wall_beta_max >= 1, d.wall_beta_max, ">= 1");
+    // A value other than the default (config/defaults.yaml lists every key with its default).
+    if (disc.has("wall_beta_max") && d.wall_beta_max != DiscretizationConfig{}.wall_beta_max && d.wall_model != "morris")
+      c.notices.push_back(disc.where("wall_beta_max") + ": has no effect: it caps the extrapolation of wall_model: morris (wall_model is '" +
+                          d.wall_model + "')");
     if (const auto v = disc.integer("wall_layers")) {
       disc.check("wall_layers", *v >= 0, static_cast<double>(*v), ">= 0; 0 = fill the kernel support");
       disc.check("wall_layers", *v <= 1000, static_cast<double>(*v), "<= 1000");
@@ -798,6 +802,7 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = out.boolean("profiles")) o.profiles = *v;
     if (const auto v = out.boolean("vtk")) o.vtk = *v;
     if (const auto v = out.boolean("vtk_walls")) o.vtk_walls = *v;
+    if (out.has("vtk_walls") && o.vtk_walls != OutputConfig{}.vtk_walls && !o.vtk) c.notices.push_back(out.where("vtk_walls") + ": has no effect: output.vtk is false");
     if (const auto v = out.boolean("vtk_ghosts")) {
       o.vtk_ghosts = *v;
       if (o.vtk_ghosts && c.discretization.boundary != "ghost")

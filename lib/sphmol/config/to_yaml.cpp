@@ -72,9 +72,10 @@ std::string to_yaml(const Config& c) {
       << "    p1: " << num(d.repulsive.p1) << "\n"
       << "    p2: " << num(d.repulsive.p2) << "\n"
       << "    r0: " << num(d.repulsive.r0) << "\n";
+  y << "  wall_model: " << d.wall_model << "\n";
+  // Written only where it is read (the loader says it has no effect elsewhere).
+  if (d.wall_model == "morris") y << "  wall_beta_max: " << num(d.wall_beta_max) << "\n";
   y
-    << "  wall_model: " << d.wall_model << "\n"
-    << "  wall_beta_max: " << num(d.wall_beta_max) << "\n"
     << "  wall_layers: " << d.wall_layers << "\n"
     << "  neighbor_search: " << d.neighbor_search << "\n"
     << "  skin: " << num(d.skin) << "\n"
@@ -141,8 +142,9 @@ std::string to_yaml(const Config& c) {
   else y << "  times: " << list(o.times) << "\n";
   y
     << "  profiles: " << (o.profiles ? "true" : "false") << "\n"
-    << "  vtk: " << (o.vtk ? "true" : "false") << "\n"
-    << "  vtk_walls: " << (o.vtk_walls ? "true" : "false") << "\n"
+    << "  vtk: " << (o.vtk ? "true" : "false") << "\n";
+  if (o.vtk) y << "  vtk_walls: " << (o.vtk_walls ? "true" : "false") << "\n";
+  y
     << "  vtk_ghosts: " << (o.vtk_ghosts ? "true" : "false") << "\n"
     << "  plots: " << (o.plots ? "true" : "false") << "\n"
     << "  checkpoint_every: " << num(o.checkpoint_every) << "\n";
