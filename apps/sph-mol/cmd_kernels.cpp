@@ -114,16 +114,20 @@ int run_hydrostatic() {
   using namespace sphmol::analysis;
   const double aps[3] = {std::sqrt(3.0) / 2.0, std::numbers::pi / 4.0, 1.0};
   const char* ap_names[3] = {"sqrt3/2", "pi/4", "1"};
+  const char* ap_columns[3] = {"sqrt3_2", "pi_4", "1"};  // in CSV column names
   // Each file is assembled in memory and written whole through a fresh temporary (never through a
   // link planted at its name).
   const bool write = !opt.output.empty();
-  std::ostringstream table;
+  // One row per kernel and a_p, and the roots in their own table, one per row (a variable number of
+  // them would not fit fixed columns).
+  std::ostringstream table, roots;
   if (write) {
     std::error_code ec;
     std::filesystem::create_directories(opt.output, ec);
-    table << "kernel,a_p [-],eps_rho_roots k [-],eps_gradp_at_rho_roots [-],eps_gradp_roots k [-],"
-             "eps_rho_at_gradp_roots [-],condition22,best_k [-],best_max_abs_error [-]\n";
+    table << "kernel,a_p [-],eps_rho_roots [-],eps_gradp_roots [-],condition22,best_k [-],best_max_abs_error [-]\n";
+    roots << "kernel,a_p [-],root_of,k [-],other_error [-]\n";
     table.precision(10);
+    roots.precision(10);
   }
   std::printf("Hydrostatic kernel analysis, Potapov & Reshetnikova 2021, eqs 17-22: 2D triangular lattice edge d, h = k d, "
               "k in [0.75, 1.25], eps = %g\n", opt.eps);
@@ -137,7 +141,7 @@ int run_hydrostatic() {
       std::ostringstream curves;
       curves.precision(12);
       curves << "k [-]";
-      for (auto n : ap_names) curves << ",eps_rho_ap=" << n << " [-],eps_gradp_ap=" << n << " [-]";
+      for (auto n : ap_columns) curves << ",eps_rho_ap_" << n << " [-],eps_gradp_ap_" << n << " [-]";
       curves << "\n";
       for (int i = 0; i <= 500; ++i) {
         const double k = 0.75 + 0.5 * i / 500;
@@ -156,24 +160,17 @@ int run_hydrostatic() {
                   roots_text(row.rho_roots).c_str(), roots_text(row.gradp_roots).c_str(),
                   row.passes ? "pass" : "FAIL", row.best_k, row.best_err);
       if (write) {
-        auto list = [](const std::vector<HydrostaticRoot>& rs, bool k) {
-          std::string s;
-          char buf[32];
-          for (const auto& r : rs) {
-            std::snprintf(buf, sizeof buf, "%s%.10g", s.empty() ? "" : ";", k ? r.k : r.other);
-            s += buf;
-          }
-          return s;
-        };
-        table << e.name << "," << aps[a] << "," << list(row.rho_roots, true) << "," << list(row.rho_roots, false)
-              << "," << list(row.gradp_roots, true) << "," << list(row.gradp_roots, false) << ","
+        table << e.name << "," << aps[a] << "," << row.rho_roots.size() << "," << row.gradp_roots.size() << ","
               << (row.passes ? "pass" : "fail") << "," << row.best_k << "," << row.best_err << "\n";
+        for (const auto& r : row.rho_roots) roots << e.name << "," << aps[a] << ",eps_rho," << r.k << "," << r.other << "\n";
+        for (const auto& r : row.gradp_roots) roots << e.name << "," << aps[a] << ",eps_gradp," << r.k << "," << r.other << "\n";
       }
     }
   }
   if (write) {
     if (!write_output(opt.output + "/hydrostatic_table.csv", table.str())) return 1;
-    std::printf("wrote %s/hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv\n", opt.output.c_str());
+    if (!write_output(opt.output + "/hydrostatic_roots.csv", roots.str())) return 1;
+    std::printf("wrote %s/hydrostatic_table.csv, hydrostatic_roots.csv and hydrostatic_curves_<kernel>.csv\n", opt.output.c_str());
   }
   return 0;
 }
@@ -233,7 +230,7 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
     [](CLI::App& sub) {
       sub.add_option("--dimension,-d", opt.dimension, "Restrict to dimension D (1, 2 or 3)");
       sub.add_option("--analysis,-a", opt.analysis, "catalogue (default) or hydrostatic (Potapov & Reshetnikova 2021, Table 1)");
-      sub.add_option("--output,-o", opt.output, "Directory for hydrostatic_table.csv and hydrostatic_curves_<kernel>.csv");
+      sub.add_option("--output,-o", opt.output, "Directory for hydrostatic_table.csv, hydrostatic_roots.csv and hydrostatic_curves_<kernel>.csv");
       sub.add_option("--kernel,-k", opt.kernel, "Restrict to one kernel");
       sub.add_option("--eps", opt.eps, "Tolerance of condition 22 (default 0.01)");
       sub.add_option("--correction", opt.correction,
