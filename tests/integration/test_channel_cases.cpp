@@ -100,6 +100,9 @@ TEST_CASE("sph-mol writes summary.json with the contract keys and a profile per 
                           "rhs_evals", "neighbor_rebuilds", "wall_seconds", "threads", "active_terms",
                           "state_fields", "errors", "final_errors"})
     CHECK(s.contains(key));
+  // Lists that are there even when empty (they were left out when nothing was said or drawn).
+  CHECK(s["warnings"].is_array());
+  CHECK(s["plots"].is_array());
   CHECK(s["t_end"] == 0.045);
   // Where the wall time went: three non-negative parts that add up to it; no per-thread pair-row
   // times, since Couette's terms run over the stored pair list.

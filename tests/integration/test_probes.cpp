@@ -161,6 +161,7 @@ TEST_CASE("probes: a run that blows up writes the rows sampled before it", "[pro
   REQUIRE(r.code == 3);
   const auto summary = json_file(dir / "run" / "summary.json");
   const double t_blow = summary["blow_up"]["t"].get<double>();
+  CHECK(summary["csv_files"].contains("last_good_state.csv"));  // described like every other CSV
   for (const char* f : {"probe_bottom.csv", "probe_surface.csv", "probe_block.csv"}) {
     INFO(f);
     REQUIRE(fs::exists(dir / "run" / f));

@@ -454,6 +454,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["integrator"] = integrator->describe();
   j["outflow"] = outflow.to_json();
   if (const std::string w = outflow.warning(); !w.empty()) warnings.push_back(w);
+  // Always present, empty when nothing was said or drawn, so readers need not test for them.
+  j["warnings"] = nlohmann::json::array();
+  j["plots"] = nlohmann::json::array();
   for (const auto& w : warnings) j["warnings"].push_back(w);  // main prints them, even with --quiet
   j["t_end"] = config.time.t_end;
   j["steps"] = st.steps;
@@ -499,6 +502,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   j["wall_seconds_per_step_per_particle"] = st.steps > 0 ? wall / (static_cast<double>(st.steps) * n_fluid) : 0.0;
   c.annotate(j);
   for (const auto& o : observers) o->annotate(j);
+  if (blow_up.contains("state_file"))
+    j["csv_files"]["last_good_state.csv"] = "the fluid particles' positions and velocities at the last state that passed the health "
+                                            "checks (t = blow_up.last_good_t)";
   if (part) j["parallel"] = parallel;
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
