@@ -57,3 +57,22 @@ TEST_CASE("output times do not change the solution (cavity, Re 1000, fixed step)
   CHECK(a["integrator_state"]["steps"] == b["integrator_state"]["steps"]);
   fs::remove_all(base);
 }
+
+TEST_CASE("the log names every output time as the files do", "[integration][output_times]") {
+  // From the second line on the stream kept the wall time's precision of 2: t = 0.1125 read "0.11"
+  // while the file was profile_t0.1125.csv.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-log-times");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto r = test_support::run_process(
+      SPHMOL_BINARY,
+      {"--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "--threads", "1", "--output", (dir / "run").string(),
+       "--set", "discretization.particles_across=20", "--set", "time.t_end=0.1125", "--set", "output.times=[0.0225, 0.045, 0.1125]",
+       "--set", "output.plots=false"},
+      (dir / "err").string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  for (const char* t : {"t =     0.0225 s", "t =      0.045 s", "t =     0.1125 s"}) CHECK(r.err.find(t) != std::string::npos);
+  CHECK(fs::exists(dir / "run" / "profile_t0.1125.csv"));
+  fs::remove_all(dir);
+}

@@ -15,6 +15,7 @@
 #include "sphmol/run/conservation.hpp"
 #include "sphmol/run/health_check.hpp"
 #include "sphmol/run/last_good_state.hpp"
+#include "sphmol/run/timed_output_files.hpp"
 #include "sphmol/run/outflow.hpp"
 #include <stdexcept>
 
@@ -37,7 +38,9 @@ namespace sphmol {
 namespace {
 
 void log_line(std::ostream& log, const nlohmann::json& m, long steps, double wall) {
-  log << "t = " << std::setw(10) << m["t"].get<double>() << " s";
+  // The output time as in the files' names (six significant digits): the stream's precision is left
+  // at 2 by the wall time below, which printed 0.1125 as 0.11 from the second line on.
+  log << "t = " << std::setw(10) << output_time_text(m["t"].get<double>()) << " s";
   for (const auto& [key, value] : m.items())
     if (key != "t" && value.is_number()) log << "   " << key << " = " << std::scientific << std::setprecision(3) << value.get<double>() << std::defaultfloat;
   log << "   steps = " << steps << "   wall = " << std::fixed << std::setprecision(2) << wall << " s" << std::defaultfloat << '\n';
