@@ -20,6 +20,7 @@
 #include "sphmol/io/atomic_file.hpp"
 #include "sphmol/kernels/registry.hpp"
 #include "study_common.hpp"
+#include "number_checks.hpp"
 #include "subcommand.hpp"
 
 namespace {
@@ -31,6 +32,8 @@ struct Options {
   std::string kernel;
   std::string correction = "none";
   double eps = 0.01;
+  const CLI::Option* eps_option = nullptr;         // given: only the hydrostatic analysis reads it
+  const CLI::Option* correction_option = nullptr;  // given: only the catalogue reads it
 } opt;
 
 template <int D>
@@ -194,6 +197,10 @@ int run() {
     return 2;
   }
   if (opt.analysis == "hydrostatic") {
+    if (opt.correction_option->count() > 0) {
+      std::cerr << "sph-mol kernels: --correction is only used by the catalogue (without --analysis hydrostatic)\n";
+      return 2;
+    }
     if (opt.dimension != 0 && opt.dimension != 2) {
       std::cerr << "sph-mol kernels: the hydrostatic analysis is 2D (Potapov & Reshetnikova 2021, triangular lattice); "
                    "--dimension " << opt.dimension << " is not supported\n";
@@ -219,6 +226,10 @@ int run() {
     std::cerr << "sph-mol kernels: --output is only used with --analysis hydrostatic\n";
     return 2;
   }
+  if (opt.eps_option->count() > 0) {
+    std::cerr << "sph-mol kernels: --eps is only used with --analysis hydrostatic\n";
+    return 2;
+  }
   if (opt.dimension == 0 || opt.dimension == 1) { print_catalogue<1>(); print_consistency<1>(); }
   if (opt.dimension == 0 || opt.dimension == 2) { print_catalogue<2>(); print_consistency<2>(); }
   if (opt.dimension == 0 || opt.dimension == 3) { print_catalogue<3>(); print_consistency<3>(); }
@@ -232,8 +243,9 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--analysis,-a", opt.analysis, "catalogue (default) or hydrostatic (Potapov & Reshetnikova 2021, Table 1)");
       sub.add_option("--output,-o", opt.output, "Directory for hydrostatic_table.csv, hydrostatic_roots.csv and hydrostatic_curves_<kernel>.csv");
       sub.add_option("--kernel,-k", opt.kernel, "Restrict to one kernel");
-      sub.add_option("--eps", opt.eps, "Tolerance of condition 22 (default 0.01)");
-      sub.add_option("--correction", opt.correction,
+      opt.eps_option = sub.add_option("--eps", opt.eps, "Tolerance of condition 22 (default 0.01; --analysis hydrostatic)")
+                           ->check(sphmol::app::positive_number());
+      opt.correction_option = sub.add_option("--correction", opt.correction,
                      "none (default) or rkpm: also print the consistency sums with the RKPM / moment-matrix "
                      "correction (Vukčević 2012, eqs 92-99), which restores linear consistency at the wall")
           ->check(CLI::IsMember({"none", "rkpm"}));

@@ -127,3 +127,18 @@ TEST_CASE("command line: a number out of its range is named with its bound, not 
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("command line: kernels refuses the options of the other mode", "[cli][integration]") {
+  // --eps in the catalogue and --correction with the hydrostatic analysis were accepted and ignored.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-kernel-modes");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto eps = test_support::run_process(SPHMOL_BINARY, {"kernels", "--eps", "0.02"}, (dir / "err").string());
+  CHECK(eps.code == 2);
+  CHECK_THAT(eps.err, Catch::Matchers::Contains("--eps is only used with --analysis hydrostatic"));
+  const auto rkpm = test_support::run_process(SPHMOL_BINARY, {"kernels", "--analysis", "hydrostatic", "--correction", "rkpm"},
+                                              (dir / "err").string());
+  CHECK(rkpm.code == 2);
+  CHECK_THAT(rkpm.err, Catch::Matchers::Contains("--correction is only used by the catalogue"));
+  fs::remove_all(dir);
+}

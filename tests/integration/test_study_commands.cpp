@@ -73,6 +73,11 @@ TEST_CASE("sph-mol compare writes one row per integrator setting and names the f
   CHECK(j["fastest"][0]["fastest"]["wall_seconds"].get<double>() > 0.0);
   CHECK(std::filesystem::exists(out + "/comparison.csv"));
   CHECK(std::filesystem::exists(out + "/comparison.png"));
+  // Both charts are named in the JSON (the CPU-time one was not).
+  if (!j["chart"].is_null()) {
+    CHECK(j["cpu_chart"] == "comparison_cpu.png");
+    CHECK(std::filesystem::exists(out + "/comparison_cpu.png"));
+  }
 }
 
 TEST_CASE("sph-mol compare reports the implicit solves' Krylov iterations, 0 for the explicit runs", "[integration][compare]") {

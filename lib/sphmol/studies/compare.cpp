@@ -269,7 +269,7 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
                             (exact ? error_unit(exact_key) : std::string("-")) + "],status\n" + csv.str());
   const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");
   // The same against CPU time: on a shared machine other jobs stretch the wall time.
-  draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");
+  const std::string cpu_chart_problem = draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");
   nlohmann::json j{{"case", base.case_name},
                    {"error", error_key},
                    {"reference_run", reference},
@@ -277,7 +277,8 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
                    {"runs", runs},
                    {"fastest", fastest},
                    {"fastest_exact_error", fastest_exact},
-                   {"chart", chart_problem.empty() ? nlohmann::json("comparison.png") : nlohmann::json(nullptr)}};
+                   {"chart", chart_problem.empty() ? nlohmann::json("comparison.png") : nlohmann::json(nullptr)},
+                   {"cpu_chart", cpu_chart_problem.empty() ? nlohmann::json("comparison_cpu.png") : nlohmann::json(nullptr)}};
   if (!chart_problem.empty()) {
     j["chart_problem"] = chart_problem;
     if (opt.log) *opt.log << "compare: no chart: " << chart_problem << '\n';
