@@ -32,7 +32,8 @@ int run() {
   if (!opt.step_factors.empty() && !any_fixed)
     return sphmol::app::bad_option("compare", "--step-factors", "no integrator in --integrators takes a fixed or CFL step (leapfrog, leapfrog_kdk, leapfrog_imex do)");
   if (!sphmol::app::coarse_to_fine_ok("compare", "--rtols", opt.rtols) ||
-      !sphmol::app::coarse_to_fine_ok("compare", "--step-factors", opt.step_factors))
+      !sphmol::app::coarse_to_fine_ok("compare", "--step-factors", opt.step_factors) ||
+      !sphmol::app::distinct_ok("compare", "--targets", opt.targets))
     return 2;
   try {
     sphmol::CompareOptions o;
@@ -62,6 +63,9 @@ int run() {
   } catch (const sphmol::OutputFolderError& e) {
     std::cerr << "sph-mol compare: " << e.what() << '\n';
     return 2;  // the folder is in use: bad input, nothing written
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "sph-mol compare: " << e.what() << '\n';
+    return 2;  // a study the options cannot make (a reference step longer than the run): bad input
   } catch (const std::exception& e) {
     std::cerr << "sph-mol compare: " << e.what() << '\n';
     return 1;

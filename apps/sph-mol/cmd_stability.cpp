@@ -20,6 +20,9 @@ struct {
 
 int run() {
   if (!sphmol::app::output_option_ok("stability", opt.output)) return 2;
+  if (!sphmol::app::distinct_ok("stability", "--sound-speed-factors", opt.c_factors) ||
+      !sphmol::app::distinct_ok("stability", "--step-factors", opt.step_factors))
+    return 2;
   auto config = sphmol::app::load_study_config(opt.config, opt.overrides, "stability");
   if (!config) return 2;
   try {

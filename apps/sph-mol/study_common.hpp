@@ -56,6 +56,18 @@ inline bool coarse_to_fine_ok(const char* who, const std::string& option, const 
   return true;
 }
 
+// A list without a repeated value (a repeated one would run, or be reported, twice). True when it
+// is, else reports it.
+inline bool distinct_ok(const char* who, const std::string& option, const std::vector<double>& values) {
+  for (std::size_t k = 0; k < values.size(); ++k)
+    for (std::size_t m = 0; m < k; ++m)
+      if (values[k] == values[m]) {
+        bad_option(who, option, "gives " + number_text(values[k]) + " twice");
+        return false;
+      }
+  return true;
+}
+
 // The same --output checks as the run command's (command_line.hpp).
 inline bool output_option_ok(const char* who, const std::string& output) {
   const auto problem = output_option_problem(output);

@@ -368,7 +368,13 @@ TEST_CASE("stability on a shock tube refuses sound speed factors whose waves rea
   REQUIRE(ok == 0);
   const auto j = read_json(out + "/stability.json");
   REQUIRE(j["runs"].size() == 2);
-  for (const auto& r : j["runs"]) CHECK(r["class"] != "blown_up");
+  for (const auto& r : j["runs"]) {
+    CHECK(r["class"] == "not_blown_up");
+    // The tube has no e_signed: nothing was measured for oscillation (these read 0 before).
+    CHECK(r["sign_changes"].is_null());
+    CHECK(r["late_amplitude"].is_null());
+    CHECK(r["max_abs_e_signed"].is_null());
+  }
 }
 
 TEST_CASE("converge --refine time without --dt0 starts from the case's CFL step", "[integration][converge]") {
@@ -384,6 +390,47 @@ TEST_CASE("converge --refine time without --dt0 starts from the case's CFL step"
   CHECK(j["levels"][2]["dt"].get<double>() == Approx(dt0 / 4));
   CHECK(j["series"][0]["observed_order"].get<double>() > 1.5);  // the leapfrog is second order
   CHECK(slurp(out + ".log").find("CFL step at t = 0") != std::string::npos);
+}
+
+TEST_CASE("converge --refine time says when dt0 does not divide t_end", "[integration][converge]") {
+  // dt0 = 0.03 s and t_end = 0.05 s: every level ends with a shorter step, and nothing was said (the
+  // observed orders scattered: Bogacki-Shampine 2.48).
+  const std::string out = "reports/converge_uneven_dt0";
+  std::filesystem::remove_all(out);
+  REQUIRE(run({"converge", "--config", SPHMOL_SOURCE_DIR "/verification/shock_tube_1d.yaml", "--output", out, "--refine", "time", "--levels", "2",
+               "--dt0", "0.03", "--integrators", "leapfrog", "--set", "discretization.spacing=0.02", "--set", "time.t_end=0.05", "--set",
+               "output.times=[0.05]", "--set", "output.plots=false"},
+              out + ".log") == 0);
+  INFO(slurp(out + ".log"));
+  CHECK(slurp(out + ".log").find("dt0 = 0.03 s does not divide t = 0.05 s") != std::string::npos);
+  CHECK(read_json(out + "/convergence.json")["uniform_steps"] == false);
+}
+
+TEST_CASE("converge names levels whose error was not measured as such", "[integration][converge]") {
+  // The dam break before the first Martin & Moyce point has no primary error: the log read "error inf"
+  // while the CSV had an empty cell and the JSON null.
+  const std::string out = "reports/converge_unmeasured";
+  std::filesystem::remove_all(out);
+  REQUIRE(run(study_args("converge", "dam_break", out, {"--refine", "space", "--levels", "2", "--set", "time.t_end=0.02", "--set", "output.times=[0.02]"}),
+              out + ".log") == 0);
+  const std::string log = slurp(out + ".log");
+  INFO(log);
+  CHECK(log.find("error not measured") != std::string::npos);
+  CHECK(log.find("error inf") == std::string::npos);
+  CHECK(log.find("observed order not measured") != std::string::npos);
+}
+
+TEST_CASE("studies draw no chart with output.plots false", "[integration][studies]") {
+  // The charts were drawn whatever the config said.
+  const std::string out = "reports/study_no_plots";
+  std::filesystem::remove_all(out);
+  REQUIRE(run(study_args("stability", "couette", out, {"--sound-speed-factors", "1", "--step-factors", "1", "--samples", "3"}),
+              out + ".log") == 0);  // study_args gives output.plots=false
+  CHECK_FALSE(std::filesystem::exists(out + "/stability.png"));
+  CHECK_FALSE(std::filesystem::exists(out + "/stability.gp"));
+  const auto j = read_json(out + "/stability.json");
+  CHECK(j["chart"].is_null());
+  CHECK(j["chart_problem"] == "output.plots is false");
 }
 
 TEST_CASE("converge --refine space keeps the configured integrator and refines a spacing", "[integration][converge]") {

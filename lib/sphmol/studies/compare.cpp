@@ -137,6 +137,9 @@ void print_run_table(std::ostream& log, const nlohmann::json& runs) {
 
 nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
   // Locked for the study's lifetime: two studies into one folder would overwrite each other's files.
+  if (opt.reference_dt && !(*opt.reference_dt < base.time.t_end))
+    throw std::invalid_argument("--reference-dt " + fmt(*opt.reference_dt) + " s is not shorter than time.t_end = " + fmt(base.time.t_end) +
+                                " s; the reference run needs a step well below the compared runs' steps");
   const OutputFolder folder(opt.output_dir, OutputFolder::Options{.lock_only = true});
   nlohmann::json runs = nlohmann::json::array();
   std::ostringstream csv;
@@ -267,9 +270,10 @@ nlohmann::json run_compare(const Config& base, const CompareOptions& opt) {
                         "krylov_iterations_per_solve [-],error [" +
                             (reference_dt ? std::string("-") : error_unit(exact_key)) + "],exact_error [" +
                             (exact ? error_unit(exact_key) : std::string("-")) + "],status\n" + csv.str());
-  const std::string chart_problem = draw_chart(chart, opt.output_dir, "comparison");
+  // Charts unless the config says output.plots: false (the CSV and JSON hold every number).
+  const std::string chart_problem = base.output.plots ? draw_chart(chart, opt.output_dir, "comparison") : kPlotsOff;
   // The same against CPU time: on a shared machine other jobs stretch the wall time.
-  const std::string cpu_chart_problem = draw_chart(cpu_chart, opt.output_dir, "comparison_cpu");
+  const std::string cpu_chart_problem = base.output.plots ? draw_chart(cpu_chart, opt.output_dir, "comparison_cpu") : kPlotsOff;
   nlohmann::json j{{"case", base.case_name},
                    {"error", error_key},
                    {"reference_run", reference},

@@ -96,6 +96,7 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
   double ref_vmax = 0.0;
   std::string series_error_key = "e_rms";  // the case's primary error, from the first summary
   double dt0 = 0.0;
+  bool uneven_steps = false;  // dt0 does not divide t_end or an output time
   if (time) {
     if (opt.dt0) dt0 = *opt.dt0;
     else if (base.time.dt) dt0 = *base.time.dt;
@@ -105,7 +106,31 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
     if (dt0 > cfg.time.t_end)
       throw std::invalid_argument("--refine time: the coarsest step " + fmt(dt0) + " s is longer than time.t_end = " +
                                   fmt(cfg.time.t_end) + " s; give a smaller --dt0");
-    if (opt.log && !opt.dt0 && !base.time.dt) *opt.log << "converge: coarsest step dt0 = " << fmt(dt0) << " s (the CFL step at t = 0)\n";
+    if (!opt.dt0 && !base.time.dt) {
+      // The CFL step, shortened to divide t_end into whole steps (see below).
+      const double cfl = dt0, n = std::ceil(cfg.time.t_end / cfl * (1.0 - 1e-12));
+      dt0 = cfg.time.t_end / n;
+      if (opt.log)
+        *opt.log << "converge: coarsest step dt0 = " << fmt(dt0) << " s (the CFL step at t = 0, " << fmt(cfl) << " s, shortened to divide t_end into "
+                 << fmt(n) << " steps)\n";
+    }
+    // A fixed step that does not divide t_end (or an output time, where the run stops too) leaves a
+    // shorter step there, whose share of the error differs from level to level: the observed order scatters.
+    {
+      std::vector<double> stops = cfg.output.times;
+      stops.push_back(cfg.time.t_end);
+      for (const double t : stops) {
+        const double n = t / dt0;
+        if (std::abs(n - std::round(n)) > 1e-9 * std::max(1.0, n)) {
+          uneven_steps = true;
+          if (opt.log)
+            *opt.log << "converge: warning: dt0 = " << fmt(dt0) << " s does not divide t = " << fmt(t) << " s (" << fmt(n)
+                     << " steps): each level ends that interval with a shorter step and the observed order may scatter; "
+                     << "give --dt0 = " << fmt(t / std::ceil(n)) << " s or another divisor\n";
+          break;
+        }
+      }
+    }
     const double dt_fine = dt0 / std::pow(2.0, opt.levels - 1);
     for (int k = 0; k < opt.levels; ++k) levels.push_back({{"level", k}, {"dt", dt0 / std::pow(2.0, k)}});
     Config rc = cfg;
@@ -197,7 +222,11 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
       statuses.push_back(r.blown_up ? "blown_up" : "completed");
       if (opt.log)
         *opt.log << "converge: " << spec.label << (k == opt.levels ? " reference level " : " level ") << k << " (" << fmt(xk)
-                 << "): " << (r.blown_up ? std::string("blown up") : (quantity ? series_error_key + " " : "error ") + fmt(e)) << '\n';
+                 << "): "
+                 << (r.blown_up           ? std::string("blown up")
+                     : std::isfinite(e)   ? (quantity ? series_error_key + " " : "error ") + fmt(e)
+                                          : (quantity ? series_error_key : std::string("error")) + " not measured")
+                 << '\n';
     }
     if (quantity) {
       const double ref = errors.back();
@@ -268,13 +297,15 @@ nlohmann::json run_converge(const Config& base, const ConvergeOptions& opt) {
                         std::string("refine,integrator,level [-],") + (time ? "dt [s]" : "dx [m]") + ",error [" +
                             (time || quantity ? std::string("-") : error_unit(series_error_key)) +
                             "],observed_order [-],expected_order [-],wall_seconds [s],status\n" + csv.str());
-  const std::string problem = draw_chart(chart, opt.output_dir, "convergence");
+  const std::string problem = base.output.plots ? draw_chart(chart, opt.output_dir, "convergence") : kPlotsOff;
   nlohmann::json j{{"refine", opt.refine}, {"case", base.case_name}, {"levels", levels}, {"series", series}};
+  if (time) j["uniform_steps"] = !uneven_steps;
   j["error_measure"] = time ? "rms over all fluid velocity components at t_end of (v - v_ref) / max|v_ref|; reference: " +
                                   std::string(kReferenceTable) + " at dt_finest/" + std::to_string(kReferenceRefinement)
                   : quantity ? "|q - q_ref| / |q_ref| of the case's primary quantity " + series_error_key +
                                    ", q_ref from a run at half the finest spacing"
                              : "the case's primary final error " + series_error_key + " against its reference";
+  j["chart"] = problem.empty() ? nlohmann::json("convergence.png") : nlohmann::json(nullptr);
   if (!problem.empty()) j["chart_problem"] = problem;
   write_file_atomically(opt.output_dir + "/convergence.json", j.dump(2) + "\n");
   return j;

@@ -30,5 +30,7 @@ std::string chart_script(const Chart& chart, const std::string& stem);
 // Writes DIR/STEM.dat, DIR/STEM.gp and draws DIR/STEM.png. Returns an empty string on success,
 // otherwise why no PNG was made (gnuplot missing or failing); the data files are kept.
 std::string draw_chart(const Chart& chart, const std::string& dir, const std::string& stem);
+// The studies' "problem" in place of a chart when the config says output.plots: false.
+inline constexpr const char* kPlotsOff = "output.plots is false";
 
 }  // namespace sphmol

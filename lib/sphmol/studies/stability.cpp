@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -36,6 +37,7 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
     return c;
   }
   for (double x : s) c.max_abs_signed = std::max(c.max_abs_signed, std::abs(x));
+  c.signed_measured = true;
   // An error larger than the velocity scale itself is unbounded growth (a numerical instability
   // that has not yet thrown a particle out), not the bounded oscillation.
   if (c.max_abs_signed > kDivergedSigned) {
@@ -61,6 +63,7 @@ StabilityClass classify_run(const nlohmann::json& summary, double osc_threshold)
     last_sign = sign;
   }
   c.amplitude = 0.5 * (hi - lo);
+  c.swings_measured = true;
   c.label = c.sign_changes >= 2 ? "oscillating" : "stable";
   return c;
 }
@@ -114,18 +117,29 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
       std::string cause_csv = cause;
       for (char& ch : cause_csv)
         if (ch == ',' || ch == '"') ch = ';';
+      // Not measured (no e_signed, or blown up first): empty cells and nulls, not 0.
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const double swings = cl.swings_measured ? cl.sign_changes : nan, amplitude = cl.swings_measured ? cl.amplitude : nan;
+      const double max_signed = cl.signed_measured ? cl.max_abs_signed : nan;
+      const auto value = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
       csv << fmt(sound_speed) << ',' << fmt(step_value) << ',' << cl.label << ',' << r.summary["status"].get<std::string>() << ','
-          << cl.sign_changes << ',' << fmt(cl.amplitude) << ',' << fmt(cl.max_abs_signed) << ',' << csv_number(r.error) << ',' << r.summary["steps"] << ','
-          << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
+          << csv_number(swings) << ',' << csv_number(amplitude) << ',' << csv_number(max_signed) << ',' << csv_number(r.error) << ','
+          << r.summary["steps"] << ',' << fmt(r.summary["wall_seconds"].get<double>()) << ',' << cause_csv << '\n';
       runs.push_back({{"sound_speed", sound_speed}, {fixed ? "dt" : "cfl_factor", step_value}, {"class", cl.label},
-                      {"sign_changes", cl.sign_changes}, {"late_amplitude", cl.amplitude}, {"max_abs_e_signed", cl.max_abs_signed},
+                      {"sign_changes", cl.swings_measured ? nlohmann::json(cl.sign_changes) : nlohmann::json(nullptr)},
+                      {"late_amplitude", value(amplitude)}, {"max_abs_e_signed", value(max_signed)},
                       {"error", r.blown_up ? nlohmann::json(nullptr) : nlohmann::json(r.error)}, {"cause", cause}});
       by_class[cl.label].x.push_back(sound_speed);
       by_class[cl.label].y.push_back(step_value);
-      if (opt.log)
-        *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value)
-                 << ": " << cl.label << " (sign changes " << cl.sign_changes << ", late amplitude " << fmt(cl.amplitude) << ", max |e_signed| " << fmt(cl.max_abs_signed)
-                 << (cause.empty() ? "" : ", " + cause) << ")" << (r.note.empty() ? "" : "; " + r.note) << '\n';
+      if (opt.log) {
+        std::string details;
+        if (cl.swings_measured) details = "sign changes " + std::to_string(cl.sign_changes) + ", late amplitude " + fmt(cl.amplitude) + ", ";
+        if (cl.signed_measured) details += "max |e_signed| " + fmt(cl.max_abs_signed) + ", ";
+        details += cause;
+        if (details.size() >= 2 && details.compare(details.size() - 2, 2, ", ") == 0) details.resize(details.size() - 2);
+        *opt.log << "stability: c = " << fmt(sound_speed) << (fixed ? ", dt = " : ", cfl factor = ") << fmt(step_value) << ": "
+                 << cl.label << (details.empty() ? "" : " (" + details + ")") << (r.note.empty() ? "" : "; " + r.note) << '\n';
+      }
     }
   write_file_atomically(opt.output_dir + "/stability.csv",
                         std::string("sound_speed [m/s],") + (fixed ? "dt [s]" : "cfl_factor [-]") +
@@ -147,9 +161,10 @@ nlohmann::json run_stability(const Config& base, const StabilityOptions& opt) {
   chart.logy = spans_decade(&ChartSeries::y);
   for (const char* k : {"stable", "oscillating", "not_blown_up", "blown_up"})
     if (!by_class[k].x.empty()) chart.series.push_back(by_class[k]);
-  const std::string problem = draw_chart(chart, opt.output_dir, "stability");
+  const std::string problem = base.output.plots ? draw_chart(chart, opt.output_dir, "stability") : kPlotsOff;
   nlohmann::json j{{"case", base.case_name}, {"step_mode", fixed ? "fixed dt" : "cfl factor"}, {"osc_threshold", opt.osc_threshold},
                    {"samples", opt.samples}, {"runs", runs}};
+  j["chart"] = problem.empty() ? nlohmann::json("stability.png") : nlohmann::json(nullptr);
   if (!problem.empty()) j["chart_problem"] = problem;
   write_file_atomically(opt.output_dir + "/stability.json", j.dump(2) + "\n");
   return j;

@@ -36,7 +36,11 @@ struct StabilityOptions {
 
 // The classification of one run from its summary (exposed for tests).
 struct StabilityClass {
-  std::string label;  // stable | oscillating | blown_up
+  std::string label;  // stable | oscillating | blown_up | not_blown_up
+  // Measured only from a run's e_signed (false: a case without one, or a run that blew up before
+  // its samples were taken); the numbers below are then not written as values.
+  bool signed_measured = false;  // max_abs_signed
+  bool swings_measured = false;  // sign_changes, amplitude (the oscillation test ran)
   int sign_changes = 0;
   double max_abs_signed = 0.0;
   double amplitude = 0.0;  // half the range of e_signed - mean after the start-up
