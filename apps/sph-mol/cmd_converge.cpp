@@ -70,7 +70,7 @@ const sphmol::app::RegisterSubcommand reg{sphmol::app::Subcommand{
       sub.add_option("--integrators", opt.integrators,
                      "comma-separated (default for time: leapfrog, leapfrog_kdk and ERK tables of orders 2, 3, 4)");
       sub.add_option("--dt0", opt.dt0,
-                     "coarsest fixed step for --refine time (default: time.dt of the config, else the case's CFL step at t = 0)")
+                     "coarsest fixed step for --refine time (default: time.dt of the config, else the case's CFL step at t = 0 shortened to divide time.t_end)")
           ->check(sphmol::app::positive_number());
       sub.add_option("--output", opt.output, "output directory (default out/converge)");
       sub.add_option("--set", opt.overrides, "override a config value: key.path=value (repeatable)")->take_all()->expected(1);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sphmol/config/config.hpp"
-#include "sphmol/run/run_case.hpp"
+#include "in_process_run.hpp"
 
 using namespace sphmol;
 
@@ -17,11 +17,8 @@ namespace {
 
 std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
 
-nlohmann::json run(const std::string& file, std::vector<std::string> overrides) {
-  const Config c = load_config(verification(file), overrides);
-  RunOptions o;
-  o.write_files = false;
-  return run_case(c, o);
+nlohmann::json run(const std::string& file, const std::vector<std::string>& overrides) {
+  return in_process::run_verification(file, overrides);
 }
 
 double e_rms_at(const nlohmann::json& s, double t) {

@@ -142,3 +142,54 @@ TEST_CASE("command line: kernels refuses the options of the other mode", "[cli][
   CHECK_THAT(rkpm.err, Catch::Matchers::Contains("--correction is only used by the catalogue"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("command line: study lists without repeats and a reference step shorter than the run", "[cli][integration]") {
+  // stability ran a repeated factor twice (duplicate rows), compare reported a repeated target twice,
+  // and compare --reference-dt longer than t_end blew its reference run up and exited 1.
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-study-lists");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string tube = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube_1d.yaml";
+  const std::vector<std::string> small{"--set", "discretization.spacing=0.02", "--set", "time.t_end=0.05", "--set", "output.times=[0.05]"};
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"stability", "--config", tube, "--sound-speed-factors", "0.5,1", "--step-factors", "1,4,1"}, "--step-factors: gives 1 twice"},
+      {{"stability", "--config", tube, "--sound-speed-factors", "1,1"}, "--sound-speed-factors: gives 1 twice"},
+      {{"compare", "--config", tube, "--integrators", "leapfrog", "--targets", "0.02,0.02"}, "--targets: gives 0.02 twice"},
+      {{"compare", "--config", tube, "--integrators", "leapfrog", "--step-factors", "1", "--reference-dt", "0.1"},
+       "--reference-dt 0.1 s is not shorter than time.t_end = 0.05 s"},
+  };
+  for (const auto& c : cases) {
+    auto args = c.args;
+    args.insert(args.end(), {"--output", (dir / "x").string()});
+    args.insert(args.end(), small.begin(), small.end());
+    const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "err").string());
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Matchers::Contains(c.says));
+    CHECK_FALSE(fs::exists(dir / "x"));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("command line: --rebalance-threshold outside mpirun says it has no effect", "[cli][integration]") {
+  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-rebalance");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto r = test_support::run_process(
+      SPHMOL_BINARY,
+      {"--threads", "1", "-q", "--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "--output", (dir / "x").string(),
+       "--set", "discretization.particles_across=20", "--set", "time.t_end=0.01", "--set", "output.times=[0.01]", "--rebalance-threshold", "2"},
+      (dir / "err").string());
+  INFO(r.err);
+  if (r.code == 2) {  // a build without MPI has no such option
+    WARN("no --rebalance-threshold in this build: " << r.err);
+    return;
+  }
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("--rebalance-threshold has no effect: the run is not split over MPI ranks"));
+  fs::remove_all(dir);
+}

@@ -8,20 +8,17 @@
 
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/run_case.hpp"
+#include "in_process_run.hpp"
 
 using namespace sphmol;
 
 namespace {
-std::string verification(const std::string& name) { return std::string(SPHMOL_SOURCE_DIR) + "/verification/" + name; }
 
 nlohmann::json run(const std::string& file, std::vector<std::string> overrides) {
   overrides.push_back("time.t_end=0.2");
   overrides.push_back("output.times=[0.2]");
   overrides.push_back("output.plots=false");
-  const Config c = load_config(verification(file), overrides);
-  RunOptions o;
-  o.write_files = false;
-  return run_case(c, o);
+  return in_process::run_verification(file, overrides);
 }
 
 // 0.125 h^2 / nu of the shipped channels (40 across, h = 1.3 dx, nu = 1e-6).

@@ -12,16 +12,14 @@
 #include "sphmol/config/config.hpp"
 #include "sphmol/run/run_case.hpp"
 #include "run_helpers.hpp"
+#include "in_process_run.hpp"
 
 using namespace sphmol;
 
 namespace {
 
-nlohmann::json run(const std::string& file, std::vector<std::string> overrides) {
-  const Config c = load_config(std::string(SPHMOL_SOURCE_DIR) + "/verification/" + file, overrides);
-  RunOptions o;
-  o.write_files = false;
-  return run_case(c, o);
+nlohmann::json run(const std::string& file, const std::vector<std::string>& overrides) {
+  return in_process::run_verification(file, overrides);
 }
 
 // The same value to a relative `tolerance`: the mirrored run sums in another order.

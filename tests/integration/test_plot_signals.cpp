@@ -62,6 +62,7 @@ TEST_CASE("signals: a signal during the plots ends the run as interrupted", "[si
       CHECK(s["t_reached"].get<double>() == Approx(0.002));
       CHECK(fs::exists(out / "checkpoint-0.002" / "checkpoint.json"));
       CHECK_FALSE(fs::exists(out / "profiles.png"));
+      CHECK(fs::exists(out / "plot_profiles.gp"));  // docs/output.md: draw the plot with it
       for (const auto& e : fs::directory_iterator(out))  // no temporary (the run's lock file stays)
         if (e.path().filename() != ".sph-mol.lock") CHECK(e.path().filename().string().front() != '.');
     }

@@ -176,9 +176,9 @@ class DistributedHealthCheck {
         const bool live = kind[i] != Kind::Out;
         kx[i] = xi;
         kv[i] = vi;
-        bad |= static_cast<int>(!((std::abs(xi) <= big) & (std::abs(vi) <= big)) |
+        bad |= static_cast<int>((!((std::abs(xi) <= big) & (std::abs(vi) <= big))) |
                                 (live & ((closed_lo & (xi < xlo)) | (closed_hi & (xi > xhi)))));
-        outside |= static_cast<int>(live & !open & ((xi < xlo) | (xi > xhi)));
+        outside |= static_cast<int>(live & (!open) & ((xi < xlo) | (xi > xhi)));
       }
     }
     for (std::size_t k = L.velocities_end(); k < L.size(); ++k) {

@@ -511,8 +511,8 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
   if (part) j["parallel"] = parallel;
   if (restart) j["restarted_from"] = {{"checkpoint", opt.restart_from}, {"t", t_first}};
   // A signal that arrives after the last step (final observers, plots) is not lost either: gnuplot is
-  // stopped, and the run ends as interrupted at t_end with a checkpoint from which a restart redoes
-  // the end of the run (and the plots). Over ranks they agree here too (a collective, on every rank).
+  // stopped, and the run ends as interrupted at t_end with a checkpoint (its data files complete; the
+  // plot scripts stay for gnuplot). Over ranks they agree here too (a collective, on every rank).
   const auto signal_after_end = [&] {
     if (signal || !opt.handle_signals || !blow_up.is_null()) return;
     signal = part ? part->largest_signal(pending_signal()) : pending_signal();
