@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "run_helpers.hpp"
 #include "support/process.hpp"
 
 namespace fs = std::filesystem;
@@ -68,121 +69,86 @@ TEST_CASE("command line: a compare sweep not from coarse to fine is refused", "[
   fs::remove_all(dir);
 }
 
+namespace {
+
+// sph-mol with `args` is refused as bad input: exit 2, `says` in its message, no folder `dir/x`.
+void check_refused(const fs::path& dir, const std::vector<std::string>& args, const std::string& says) {
+  const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "err").string());
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains(says));
+  CHECK(r.err.size() < 600);  // one message, not a number printed in 300 digits
+  CHECK_FALSE(fs::exists(dir / "x"));
+}
+
+std::vector<std::string> with_sets(std::vector<std::string> args, const std::vector<std::string>& sets) {
+  for (const auto& s : sets) args.insert(args.end(), {"--set", s});
+  return args;
+}
+
+}  // namespace
+
 TEST_CASE("command line: term combinations the assembly cannot build are config errors (exit 2), not failed runs", "[cli][integration]") {
   // They were thrown by the assembly as plain errors: exit 1, "run failed", which scripts count as a
   // numerical failure.
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-combos");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = run_helpers::scratch("combos");
   const std::string v = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
-  struct Case {
-    std::string config;
-    std::vector<std::string> sets;
-    std::string says;
+  const auto run = [&](const std::string& config, const std::vector<std::string>& sets) {
+    return with_sets({"--threads", "1", "-q", "--config", v + config, "--output", (dir / "x").string()}, sets);
   };
-  const std::vector<Case> cases = {
-      {"couette.yaml", {"discretization.momentum=integral_approach"}, "'integral_approach' needs viscosity: none"},
-      {"dam_break.yaml", {"discretization.spacing=0.1", "discretization.momentum=integral_approach"},
-       "'integral_approach' is not available with density_diffusion"},
-      {"couette.yaml", {"discretization.wall_density_floor_width=0.01"}, "no wall is dynamic"},
-  };
-  for (const auto& c : cases) {
-    std::vector<std::string> args{"--threads", "1", "-q", "--config", v + c.config, "--output", (dir / "x").string()};
-    for (const auto& s : c.sets) {
-      args.push_back("--set");
-      args.push_back(s);
-    }
-    const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "err").string());
-    INFO(r.err);
-    CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Matchers::StartsWith("sph-mol: config error: ") && Catch::Matchers::Contains(c.says));
-    CHECK_FALSE(fs::exists(dir / "x"));
-  }
+  check_refused(dir, run("couette.yaml", {"discretization.momentum=integral_approach"}),
+                "sph-mol: config error: --set discretization.momentum=integral_approach: discretization.momentum: 'integral_approach' needs viscosity: none");
+  check_refused(dir, run("dam_break.yaml", {"discretization.spacing=0.1", "discretization.momentum=integral_approach"}),
+                "'integral_approach' is not available with density_diffusion");
+  check_refused(dir, run("couette.yaml", {"discretization.wall_density_floor_width=0.01"}),
+                "sph-mol: config error: discretization.wall_density_floor_width: is the floor of dynamic wall particles' density, and no wall is dynamic");
   fs::remove_all(dir);
 }
 
 TEST_CASE("command line: a number out of its range is named with its bound, not with the largest double", "[cli][integration]") {
   // CLI11's NonNegativeNumber and PositiveNumber printed "not in range 0.000000 to 1797693...", 300 digits.
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-ranges");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = run_helpers::scratch("ranges");
   const std::string cfg = std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml";
-  struct Case {
-    std::vector<std::string> args;
-    std::string says;
-  };
-  const std::vector<Case> cases = {
-      {{"--threads", "-1", "--config", cfg}, "--threads: Value -1 is not a number >= 0"},
-      {{"stability", "--config", cfg, "--sound-speed-factors", "1,-1"}, "--sound-speed-factors: Value -1 is not a number > 0"},
-      {{"stability", "--config", cfg, "--osc-threshold", "x"}, "--osc-threshold: Value x is not a number >= 0"},
-      {{"compare", "--config", cfg, "--step-factors", "0"}, "--step-factors: Value 0 is not a number > 0"},
-      {{"converge", "--config", cfg, "--refine", "time", "--dt0", "-1e-3"}, "--dt0: Value -1e-3 is not a number > 0"},
-  };
-  for (const auto& c : cases) {
-    const auto r = test_support::run_process(SPHMOL_BINARY, c.args, (dir / "err").string());
-    INFO(r.err);
-    CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Matchers::Contains(c.says));
-    CHECK(r.err.size() < 200);
-  }
+  check_refused(dir, {"--threads", "-1", "--config", cfg}, "--threads: Value -1 is not a number >= 0");
+  check_refused(dir, {"stability", "--config", cfg, "--sound-speed-factors", "1,-1"}, "--sound-speed-factors: Value -1 is not a number > 0");
+  check_refused(dir, {"stability", "--config", cfg, "--osc-threshold", "x"}, "--osc-threshold: Value x is not a number >= 0");
+  check_refused(dir, {"compare", "--config", cfg, "--step-factors", "0"}, "--step-factors: Value 0 is not a number > 0");
+  check_refused(dir, {"converge", "--config", cfg, "--refine", "time", "--dt0", "-1e-3"}, "--dt0: Value -1e-3 is not a number > 0");
   fs::remove_all(dir);
 }
 
 TEST_CASE("command line: kernels refuses the options of the other mode", "[cli][integration]") {
   // --eps in the catalogue and --correction with the hydrostatic analysis were accepted and ignored.
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-kernel-modes");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const auto eps = test_support::run_process(SPHMOL_BINARY, {"kernels", "--eps", "0.02"}, (dir / "err").string());
-  CHECK(eps.code == 2);
-  CHECK_THAT(eps.err, Catch::Matchers::Contains("--eps is only used with --analysis hydrostatic"));
-  const auto rkpm = test_support::run_process(SPHMOL_BINARY, {"kernels", "--analysis", "hydrostatic", "--correction", "rkpm"},
-                                              (dir / "err").string());
-  CHECK(rkpm.code == 2);
-  CHECK_THAT(rkpm.err, Catch::Matchers::Contains("--correction is only used by the catalogue"));
+  const fs::path dir = run_helpers::scratch("kernel-modes");
+  check_refused(dir, {"kernels", "--eps", "0.02"}, "--eps is only used with --analysis hydrostatic");
+  check_refused(dir, {"kernels", "--analysis", "hydrostatic", "--correction", "rkpm"}, "--correction is only used by the catalogue");
   fs::remove_all(dir);
 }
 
 TEST_CASE("command line: study lists without repeats and a reference step shorter than the run", "[cli][integration]") {
   // stability ran a repeated factor twice (duplicate rows), compare reported a repeated target twice,
   // and compare --reference-dt longer than t_end blew its reference run up and exited 1.
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-study-lists");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = run_helpers::scratch("study-lists");
   const std::string tube = std::string(SPHMOL_SOURCE_DIR) + "/verification/shock_tube_1d.yaml";
-  const std::vector<std::string> small{"--set", "discretization.spacing=0.02", "--set", "time.t_end=0.05", "--set", "output.times=[0.05]"};
-  struct Case {
-    std::vector<std::string> args;
-    std::string says;
+  const auto study = [&](std::vector<std::string> args) {
+    args.insert(args.end(), {"--config", tube, "--output", (dir / "x").string()});
+    return with_sets(args, {"discretization.spacing=0.02", "time.t_end=0.05", "output.times=[0.05]"});
   };
-  const std::vector<Case> cases = {
-      {{"stability", "--config", tube, "--sound-speed-factors", "0.5,1", "--step-factors", "1,4,1"}, "--step-factors: gives 1 twice"},
-      {{"stability", "--config", tube, "--sound-speed-factors", "1,1"}, "--sound-speed-factors: gives 1 twice"},
-      {{"compare", "--config", tube, "--integrators", "leapfrog", "--targets", "0.02,0.02"}, "--targets: gives 0.02 twice"},
-      {{"compare", "--config", tube, "--integrators", "leapfrog", "--step-factors", "1", "--reference-dt", "0.1"},
-       "--reference-dt 0.1 s is not shorter than time.t_end = 0.05 s"},
-  };
-  for (const auto& c : cases) {
-    auto args = c.args;
-    args.insert(args.end(), {"--output", (dir / "x").string()});
-    args.insert(args.end(), small.begin(), small.end());
-    const auto r = test_support::run_process(SPHMOL_BINARY, args, (dir / "err").string());
-    INFO(r.err);
-    CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Matchers::Contains(c.says));
-    CHECK_FALSE(fs::exists(dir / "x"));
-  }
+  check_refused(dir, study({"stability", "--sound-speed-factors", "0.5,1", "--step-factors", "1,4,1"}), "--step-factors: gives 1 twice");
+  check_refused(dir, study({"stability", "--sound-speed-factors", "1,1"}), "--sound-speed-factors: gives 1 twice");
+  check_refused(dir, study({"compare", "--integrators", "leapfrog", "--targets", "0.02,0.02"}), "--targets: gives 0.02 twice");
+  check_refused(dir, study({"compare", "--integrators", "leapfrog", "--step-factors", "1", "--reference-dt", "0.1"}),
+                "--reference-dt 0.1 s is not shorter than time.t_end = 0.05 s");
   fs::remove_all(dir);
 }
 
 TEST_CASE("command line: --rebalance-threshold outside mpirun says it has no effect", "[cli][integration]") {
-  const fs::path dir = fs::temp_directory_path() / ("sphmol-it-" + std::to_string(::getpid()) + "-rebalance");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = run_helpers::scratch("rebalance");
   const auto r = test_support::run_process(
       SPHMOL_BINARY,
-      {"--threads", "1", "-q", "--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "--output", (dir / "x").string(),
-       "--set", "discretization.particles_across=20", "--set", "time.t_end=0.01", "--set", "output.times=[0.01]", "--rebalance-threshold", "2"},
+      with_sets({"--threads", "1", "-q", "--config", std::string(SPHMOL_SOURCE_DIR) + "/verification/couette.yaml", "--output",
+                 (dir / "x").string(), "--rebalance-threshold", "2"},
+                {"discretization.particles_across=20", "time.t_end=0.01", "output.times=[0.01]"}),
       (dir / "err").string());
   INFO(r.err);
   if (r.code == 2) {  // a build without MPI has no such option
