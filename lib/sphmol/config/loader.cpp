@@ -234,11 +234,9 @@ void check_position_correction(Config& c, const CaseModule& module, MapReader& d
         {"particle_shifting", {"coefficient", "velocity", "correction"}}};
     for (const auto& [map, keys] : maps) {
       if (pc.chosen == map || !disc.has(map)) continue;
-      MapReader m = disc.section(map, [&] {
-        auto all = keys;
-        all.push_back("enabled");
-        return all;
-      }());
+      std::vector<std::string> all = keys;  // (no lambda: clang 14 cannot capture a structured binding)
+      all.push_back("enabled");
+      MapReader m = disc.section(map, all);
       for (const auto& key : keys)
         if (m.has(key)) {
           c.notices.push_back(m.where(key) + ": not used: position_correction " + pc.setting +
