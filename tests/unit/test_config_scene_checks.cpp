@@ -93,6 +93,35 @@ TEST_CASE("scene checks: a periodic length shorter than two neighbour radii name
         std::string::npos);
 }
 
+TEST_CASE("scene checks: ghost walls facing each other closer than the support less a spacing are refused", "[config][scene][ghost]") {
+  // The generator makes no images of images (through one wall, then the other); they lie gap + dx from
+  // the fluid. A 2D tube two spacings wide (Gaussian, h = 1.3 dx: support 3.9 dx) loaded and blew up
+  // at t = 0.049 s ("density <= 0"); three spacings (gap + dx = 4 dx) give the errors of five.
+  const std::vector<std::string> tube = {"discretization.spacing=0.005", "time.t_end=0.05", "output.times=[0.05]"};
+  const auto with = [&](std::vector<std::string> o, const std::string& extra) {
+    o.push_back(extra);
+    return o;
+  };
+  const std::string e = load_error("shock_tube", with(tube, "geometry.tube_width=0.01"));
+  INFO(e);
+  CHECK(e.find(": geometry.tube_width: ghost walls facing each other 0.01 m apart: the images of images through both walls, which "
+               "the ghost boundary does not make, would lie within the kernel support of the fluid (gap + dx = 0.015 m < support "
+               "0.0195 m). Widen the gap to at least 3 spacings (0.015 m), or use discretization.boundary: wall_particles") !=
+        std::string::npos);
+  CHECK(load_error("shock_tube", with(tube, "geometry.tube_width=0.015")) == "<no error>");
+  // With wall particles the width is periodic, with its own bound.
+  CHECK(load_error("shock_tube", with(with(tube, "geometry.tube_width=0.015"), "discretization.boundary=wall_particles"))
+            .find("the periodic length") != std::string::npos);
+  // The box cases: the cavity (Wendland C2 at h = 2 dx: support 4 dx) and the hydrostatic tank.
+  CHECK(load_error("cavity", {"discretization.boundary=ghost", "discretization.wall_model=prescribed", "discretization.particles_across=2"})
+            .find("geometry.box: ghost walls facing each other 1 m apart") != std::string::npos);
+  CHECK(load_error("cavity", {"discretization.boundary=ghost", "discretization.wall_model=prescribed", "discretization.particles_across=3"}) == "<no error>");
+  CHECK(load_error("hydrostatic", {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "geometry.box=[0.05, 0.9]"})
+            .find("geometry.box: ghost walls facing each other 0.05 m apart") != std::string::npos);
+  CHECK(load_error("hydrostatic", {"discretization.boundary=ghost", "discretization.wall_pressure=rest", "geometry.box=[0.075, 0.9]"}) ==
+        "<no error>");
+}
+
 TEST_CASE("scene checks: an inviscid channel is a config error, not a false blow-up", "[config][scene]") {
   // nu = 0 used to load and then end as "fluid particle inside a wall": the reference series threw
   // for nu = 0 and the measurement took that for a particle outside the channel.

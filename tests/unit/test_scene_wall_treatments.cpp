@@ -409,6 +409,17 @@ TEST_CASE("scene treatments and densities: what makes no sense is an error at it
           "scene.yaml:6: scene.walls[0].shape: this ghost mirror and the domain's lower x face meet at 135 degrees within the "
           "kernel support (0.26 m) of the domain; mirrors need right angles where the fluid reaches both (use "
           "discretization.boundary: wall_particles)");
+    // Facing each other (h = 0.13 m here, support 0.26 m): images of images are not made, and they lie
+    // gap + dx from the fluid (boundary/facing_mirrors.hpp).
+    const std::string low = "scene:\n  domain: {lo: [0, 0], hi: [1, 1]}\n  fluid:\n    - shape: {type: box, lo: [0, 0], hi: [1, 0.1]}\n";
+    CHECK(error_of(low + "  walls:\n    - shape: {type: plane, point: [0, 0.1], normal: [0, -1]}\n", g) ==
+          "scene.yaml:6: scene.walls[0].shape: this ghost mirror and the domain's lower y face: ghost walls facing each other 0.1 m "
+          "apart: the images of images through both walls, which the ghost boundary does not make, would lie within the kernel "
+          "support of the fluid (gap + dx = 0.2 m < support 0.26 m). Widen the gap to at least 2 spacings (0.2 m), or use "
+          "discretization.boundary: wall_particles");
+    CHECK(error_of(low + "  walls:\n    - shape: {type: plane, point: [0, 0.2], normal: [0, -1]}\n", g) == "<no error>");
+    CHECK_THAT(error_of("scene:\n  domain: {lo: [0, 0], hi: [1, 0.1]}\n  fluid:\n    - shape: {type: box, lo: [0, 0], hi: [1, 0.1]}\n", g),
+               Contains("the domain's faces: ghost walls facing each other 0.1 m apart"));
   }
   CHECK_THAT(error_of(wall + "      treatment: fixed\n", c), Contains("scene.yaml:7: scene.walls[0].treatment: unknown value 'fixed'"));
   CHECK(error_of(wall + "      repulsive: {strength: 1}\n", c) ==

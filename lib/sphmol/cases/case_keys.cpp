@@ -93,7 +93,12 @@ SceneSize box_scene_size(CaseReaders& r, MapReader& geo, const Config& c, double
     else if (d.boundary == "virtual_repulsive")
       wall = 2.0 * (2.0 * nx + (top ? 2.0 : 1.0) * ny_box);
   }
-  return {dx, nx * ny, wall};
+  SceneSize size{dx, nx * ny, wall};
+  if (walls && d.boundary == "ghost") {
+    size.mirror_gaps.push_back({geo.where("box"), Lx});
+    if (top) size.mirror_gaps.push_back({geo.where("box"), Ly});
+  }
+  return size;
 }
 
 }  // namespace sphmol::case_keys

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "sphmol/boundary/facing_mirrors.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
@@ -94,6 +95,10 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
       throw ConfigError(where + ": the periodic length " + shown(length) + " m is shorter than two neighbour radii (2 x " + shown(radius) +
                         " m: (support " + shown(support) + " + skin " + shown(d.skin) + ") h, h = " + shown(d.smoothing_ratio) +
                         " dx); use more particles or a smaller smoothing_ratio or skin");
+  const double support_m = d.smoothing_ratio * support * s.spacing;
+  for (const auto& [where, gap] : s.mirror_gaps)
+    if (facing_mirrors_too_close(gap, s.spacing, support_m))
+      throw ConfigError(where + ": " + facing_mirrors_message(gap, s.spacing, support_m));
 
   // Memory: per particle the state and workspace fields (a few hundred bytes) and, per neighbour
   // within the list radius, the pair list entry and a stored pair's kernel values (32 bytes);

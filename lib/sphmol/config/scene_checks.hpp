@@ -39,12 +39,20 @@ struct SceneSize {
     double length;
   };
   std::vector<Periodic> periodic;
+  // Ghost mirrors that face each other across the fluid (boundary: ghost): the distance between
+  // them, with where it came from. The generator mirrors through one mirror at a time (and through
+  // mirrors at right angles together), not through both of a facing pair in turn.
+  struct MirrorGap {
+    std::string where;
+    double gap;
+  };
+  std::vector<MirrorGap> mirror_gaps;
 };
 
 // The checks every scene shares, once the case module has read its keys and measured its scene
 // (`size`): term combinations the assembly cannot build, periodic lengths against the neighbour
-// radius, memory, step and checkpoint counts. Throws ConfigError through the readers; fills in
-// size.bytes_per_particle.
+// radius, facing ghost mirrors against the kernel support, memory, step and checkpoint counts.
+// Throws ConfigError through the readers; fills in size.bytes_per_particle.
 void check_scene(const Config& c, CaseReaders& r, SceneSize& size);
 
 // Physical memory of this machine in bytes (sysconf), the limit for SceneSize::bytes().

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "sphmol/boundary/facing_mirrors.hpp"
 #include "sphmol/scene/scene_messages.hpp"
 
 namespace sphmol {
@@ -151,6 +152,19 @@ std::vector<GhostPlane<D>> ghost_planes(const SceneSpec& spec, const Config& con
   all.insert(all.end(), planes.begin(), planes.end());
   double size = 0.0;
   for (int d = 0; d < D; ++d) size = std::max(size, dom.hi[d] - dom.lo[d]);
+  // Mirrors facing each other across the fluid (normals opposed, fluid sides overlapping) must be far
+  // enough apart that the images of images, which are not made, stay out of the support.
+  for (std::size_t a = 0; a < all.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b) {
+      double c = 0.0;
+      for (int d = 0; d < D; ++d) c += all[a].normal[d] * all[b].normal[d];
+      if (std::abs(c + 1.0) > kMirrorRightAngle) continue;
+      const double gap = -(all[a].offset + all[b].offset);
+      if (facing_mirrors_too_close(gap, dx, support))
+        fail(a < n_faces ? dom.where_hi : where[a - n_faces],
+             (a < n_faces ? "the domain's faces: " : "this ghost mirror and " + (b < n_faces ? names[b] : "the ghost mirror at " + where[b - n_faces]) + ": ") +
+                 facing_mirrors_message(gap, dx, support));
+    }
   for (std::size_t a = n_faces; a < all.size(); ++a)
     for (std::size_t b = 0; b < a; ++b) {
       double c = 0.0;

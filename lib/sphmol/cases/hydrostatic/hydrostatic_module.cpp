@@ -34,6 +34,8 @@ SceneSize tank_3d_size(CaseReaders& r, MapReader& geo, const Config& c, const st
   size.spacing = dx;
   size.fluid = nx * ny * nz;
   if (d.boundary == "wall_particles") size.wall = (nx + 2 * layers) * (ny + 2 * layers) * (nz_tank + layers) - nx * ny * nz_tank;
+  if (d.boundary == "ghost")
+    for (int k = 0; k < 2; ++k) size.mirror_gaps.push_back({geo.where("box"), box[k]});
   return size;
 }
 

@@ -163,6 +163,7 @@ CaseRead read_shock_tube(CaseReaders& r, const Config& c) {
   if (c.dimension == 2 && d.boundary == "virtual_repulsive") wall += 2.0 * 2.0 * nx;
   CaseRead out{s, {dx, nx * ny, wall}};
   if (c.dimension == 2 && d.boundary == "wall_particles") out.size.periodic.push_back({geo.where("tube_width"), W});
+  if (c.dimension == 2 && d.boundary == "ghost") out.size.mirror_gaps.push_back({geo.where("tube_width"), W});
   return out;
 }
 
