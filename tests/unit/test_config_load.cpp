@@ -290,6 +290,25 @@ TEST_CASE("config: time settings the integrator does not read get a notice", "[c
   CHECK(notices_of({"time.integrator=leapfrog", "time.cfl.acoustic=0.1"}).empty());
 }
 
+TEST_CASE("config: health.max_outflow_fraction without a face open to outflow gets a notice", "[config]") {
+  const auto notices = [](const Config& c) {
+    std::string all;
+    for (const auto& n : c.notices) all += n + "\n";
+    return all;
+  };
+  const std::string set = "health.max_outflow_fraction=0.2";
+  CHECK_THAT(notices(load_config_string(base, {set}, "case.yaml")),
+             Contains("--set health.max_outflow_fraction=0.2: health.max_outflow_fraction: has no effect: case 'couette' has no face "
+                      "open to outflow"));
+  const std::string dir = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  CHECK_THAT(notices(load_config(dir + "dam_break.yaml", {set})), !Contains("max_outflow_fraction"));
+  CHECK_THAT(notices(load_config(dir + "hydrostatic.yaml", {set})), !Contains("max_outflow_fraction"));
+  CHECK_THAT(notices(load_config(dir + "scene_tank.yaml", {set})), !Contains("max_outflow_fraction"));
+  // The same scene with its top closed has no open face.
+  CHECK_THAT(notices(load_config(dir + "scene_tank.yaml", {set, "scene.domain.open_faces=[]"})),
+             Contains("health.max_outflow_fraction: has no effect: case 'scene' has no face open to outflow"));
+}
+
 TEST_CASE("config: the resolved config writes only the time settings the integrator reads", "[config]") {
   const Config lf = load_config_string(base, {"time.integrator=leapfrog", "time.dt=1e-5"});
   const std::string y = to_yaml(lf);

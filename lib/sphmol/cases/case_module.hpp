@@ -29,6 +29,9 @@ struct CaseRead {
   std::string spacing_rule = {};
   // Said to the user with the loader's other notices (a setting that has no effect, ...).
   std::vector<std::string> notices = {};
+  // Whether the domain has a face open to outflow (run/outflow.hpp): without one,
+  // health.max_outflow_fraction has nothing to count.
+  bool open_to_outflow = false;
 };
 
 struct CaseModule {

@@ -813,8 +813,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     out.check("checkpoint_every", o.checkpoint_every >= 0, o.checkpoint_every, ">= 0 s; 0 = no checkpoints");
   }
   // health (run/health_check.hpp, run/outflow.hpp)
+  std::string outflow_where;  // where max_outflow_fraction was given, for the notice below
   {
     MapReader health = top.section("health", {"max_outflow_fraction"});
+    if (health.has("max_outflow_fraction")) outflow_where = health.where("max_outflow_fraction");
     auto& h = c.health;
     if (const auto v = health.real("max_outflow_fraction")) h.max_outflow_fraction = *v;
     health.check("max_outflow_fraction", h.max_outflow_fraction >= 0 && h.max_outflow_fraction <= 1, h.max_outflow_fraction,
@@ -824,6 +826,9 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
   c.notices.insert(c.notices.end(), own.notices.begin(), own.notices.end());
+  if (!outflow_where.empty() && !own.open_to_outflow)
+    c.notices.push_back(outflow_where + ": has no effect: case '" + c.case_name + "' has no face open to outflow (fluid "
+                        "beyond a closed face or wall ends the run as blown up)");
   if (c.discretization.particles_across == 0 && !(c.discretization.spacing > 0.0)) {
     if (!(own.size.spacing > 0.0))
       disc.fail_missing("particles_across", "or discretization.spacing: case '" + c.case_name + "' derived no spacing");

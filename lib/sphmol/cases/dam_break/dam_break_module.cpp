@@ -44,6 +44,7 @@ CaseRead read_dam_break(CaseReaders& r, const Config& c) {
   const double nyt = case_keys::whole_spacings(geo, "box", Ly, dx, "geometry.box[1]");
   const double layers = case_keys::wall_layers(c);
   CaseRead out{s, {dx, nx * ny, (nxt + 2 * layers) * layers + 2 * layers * nyt}};
+  out.open_to_outflow = true;  // the tank's open top
   if (!experiments_apply(a, H))
     out.notices.push_back(geo.where("column") + ": H/a = " + number_text(H / a) +
                           ": the experiments of Martin & Moyce (1952, n^2 = 2) and Koshizuka & Oka (1996) have H = 2a "

@@ -112,10 +112,12 @@ CaseRead read_hydrostatic(CaseReaders& r, const Config& c) {
   // The side walls reach 1.2 x depth, a whole number of spacings (HydrostaticCase::build).
   const double dx0 = case_keys::spacing(cs, width);
   const double tank = std::round(1.2 * depth / dx0) * dx0;
-  return {s,
-          c.dimension == 3 ? tank_3d_size(r, geo, cs, s->box, tank)
-                           : case_keys::box_scene_size(r, geo, cs, width, depth, tank, true, false),
-          rule};
+  CaseRead out{s,
+               c.dimension == 3 ? tank_3d_size(r, geo, cs, s->box, tank)
+                                : case_keys::box_scene_size(r, geo, cs, width, depth, tank, true, false),
+               rule};
+  out.open_to_outflow = true;  // the tank's open top
+  return out;
 }
 
 }  // namespace
