@@ -309,6 +309,24 @@ TEST_CASE("config: health.max_outflow_fraction without a face open to outflow ge
              Contains("health.max_outflow_fraction: has no effect: case 'scene' has no face open to outflow"));
 }
 
+TEST_CASE("config: discretization.wall_layers where no wall particles are made gets a notice", "[config]") {
+  const auto notices = [](const Config& c) {
+    std::string all;
+    for (const auto& n : c.notices) all += n + "\n";
+    return all;
+  };
+  const std::string dir = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  const std::string set = "discretization.wall_layers=2";
+  CHECK_THAT(notices(load_config(dir + "taylor_green.yaml", {set})),
+             Contains("discretization.wall_layers: has no effect: case 'taylor_green' makes no wall particles here (it has no walls)"));
+  CHECK_THAT(notices(load_config(dir + "cavity.yaml", {set, "discretization.boundary=ghost", "discretization.wall_model=prescribed"})),
+             Contains("discretization.wall_layers: has no effect: case 'cavity' makes no wall particles here (boundary 'ghost')"));
+  // Read: wall particles, and the shock tube's end walls behind its ghost walls.
+  CHECK_THAT(notices(load_config(dir + "cavity.yaml", {set})), !Contains("wall_layers"));
+  CHECK_THAT(notices(load_config(dir + "shock_tube.yaml", {set})), !Contains("wall_layers"));
+  CHECK_THAT(notices(load_config(dir + "scene_tank.yaml", {set})), !Contains("wall_layers"));
+}
+
 TEST_CASE("config: the resolved config writes only the time settings the integrator reads", "[config]") {
   const Config lf = load_config_string(base, {"time.integrator=leapfrog", "time.dt=1e-5"});
   const std::string y = to_yaml(lf);

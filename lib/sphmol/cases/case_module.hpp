@@ -32,6 +32,9 @@ struct CaseRead {
   // Whether the domain has a face open to outflow (run/outflow.hpp): without one,
   // health.max_outflow_fraction has nothing to count.
   bool open_to_outflow = false;
+  // Whether size.wall counts the scene's wall particles (a scene too large to count while loading
+  // does not): a counted 0 means discretization.wall_layers has nothing to set.
+  bool wall_count_known = true;
 };
 
 struct CaseModule {

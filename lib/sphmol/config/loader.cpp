@@ -816,9 +816,12 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   std::string outflow_where;  // where max_outflow_fraction was given, for the notice below
   {
     MapReader health = top.section("health", {"max_outflow_fraction"});
-    if (health.has("max_outflow_fraction")) outflow_where = health.where("max_outflow_fraction");
     auto& h = c.health;
     if (const auto v = health.real("max_outflow_fraction")) h.max_outflow_fraction = *v;
+    // Given at a value other than the default, which config/defaults.yaml and the resolved config.yaml
+    // write for every case.
+    if (health.has("max_outflow_fraction") && h.max_outflow_fraction != HealthConfig{}.max_outflow_fraction)
+      outflow_where = health.where("max_outflow_fraction");
     health.check("max_outflow_fraction", h.max_outflow_fraction >= 0 && h.max_outflow_fraction <= 1, h.max_outflow_fraction,
                  "in [0, 1]: the fraction of the fluid mass that may leave the domain; 0 = none");
   }
@@ -826,6 +829,13 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
   CaseRead own = module.read(readers, c);
   c.case_settings = std::move(own.settings);
   c.notices.insert(c.notices.end(), own.notices.begin(), own.notices.end());
+  // A value other than the default (0, fill the support), which config/defaults.yaml and the resolved
+  // config.yaml write for every case.
+  if (disc.has("wall_layers") && c.discretization.wall_layers != DiscretizationConfig{}.wall_layers && own.wall_count_known &&
+      own.size.wall == 0.0)
+    c.notices.push_back(disc.where("wall_layers") + ": has no effect: case '" + c.case_name + "' makes no wall particles here (" +
+                        (c.discretization.boundary == "wall_particles" ? std::string("it has no walls")
+                                                                       : "boundary '" + c.discretization.boundary + "'") + ")");
   if (!outflow_where.empty() && !own.open_to_outflow)
     c.notices.push_back(outflow_where + ": has no effect: case '" + c.case_name + "' has no face open to outflow (fluid "
                         "beyond a closed face or wall ends the run as blown up)");
