@@ -154,8 +154,6 @@ int main(int argc, char** argv) {
 #ifdef SPHMOL_HAVE_MPI
     // The config's memory check asks this machine for its ranks' shares of the scene.
     if (world) sphmol::set_ranks_on_machine({ranks, world->ranks_on_this_machine()});
-#endif
-#ifdef SPHMOL_HAVE_MPI
     if (ranks == 1 && app.get_option("--rebalance-threshold")->count() > 0)
       std::cerr << "sph-mol: --rebalance-threshold has no effect: the run is not split over MPI ranks (start it with mpirun -n N, N > 1)\n";
 #endif
