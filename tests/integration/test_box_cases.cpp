@@ -207,7 +207,7 @@ TEST_CASE("cavity with ghost walls: the lid's corners do not pump fluid through 
   // along the side wall's normal, so source and image crossed the side wall at U/2 on average: the
   // particles next to the lid left the box at its downstream corner and this run blew up at
   // t = 0.92 s (0.44 s at 40 x 40). With every wall-normal component mirrored it reaches t = 2 s with
-  // u_rms 0.061, v_rms 0.061 (measured). It still blows up later (2.6 s here, 0.98 s at 40 x 40):
+  // u_rms 0.061, v_rms 0.061 (measured). It still blows up later (2.1 s here, 1.25 s at 40 x 40):
   // particles cross the side walls where their images' repulsion vanishes (README, known limitations).
   const auto s = run("cavity.yaml", {"discretization.boundary=ghost", "discretization.wall_model=prescribed",
                                      "discretization.particles_across=20", "time.dt=2e-3", "time.t_end=2",

@@ -125,24 +125,33 @@ TEST_CASE("ghost generator: mirror positions, no-slip velocities, corner images,
       // Each component is normal to one of the walls and mirrored about that wall's normal velocity
       // (0): the bottom's belt speed runs into the left wall and the left's into the bottom, so
       // neither enters (with -v + v_left + v_bottom the pair moved through the walls on average).
-      CHECK(s.w.v[0][k] == Approx(-0.2));
+      CHECK(s.w.v_viscous[0][k] == Approx(-0.2));
+      CHECK(s.w.v_viscous[1][k] == Approx(0.4));
+      CHECK(s.w.v[0][k] == Approx(-0.2));  // free slip through both: the same here
       CHECK(s.w.v[1][k] == Approx(0.4));
     }
-    if (i == 1) {  // bottom image: 2 v_w - v
+    if (i == 1) {  // bottom image: 2 v_w - v for the viscous terms, free slip for the rest
       CHECK(s.w.x[0][k] == Approx(0.5));
       CHECK(s.w.x[1][k] == Approx(-0.02));
-      CHECK(s.w.v[0][k] == Approx(2.0 - 0.1));
+      CHECK(s.w.v_viscous[0][k] == Approx(2.0 - 0.1));
+      CHECK(s.w.v_viscous[1][k] == Approx(-0.5));
+      CHECK(s.w.v[0][k] == Approx(0.1));
       CHECK(s.w.v[1][k] == Approx(-0.5));
     }
     if (i == 3) {  // right wall image, no image through the open top
       CHECK(mask[g] == 0b0010);
       CHECK(s.w.x[0][k] == Approx(1.03));
       CHECK(s.w.x[1][k] == Approx(0.95));
-      CHECK(s.w.v[1][k] == Approx(-0.1));
+      CHECK(s.w.v_viscous[1][k] == Approx(-0.1));
+      CHECK(s.w.v[1][k] == Approx(0.1));
     }
     CHECK(i != 2);
   }
   CHECK(corner == 1);
+  // The viscous velocities of the fluid and of the scene's wall particle are their own.
+  REQUIRE(s.w.v_viscous[0].size() == s.w.n);
+  for (std::size_t i = 0; i < base; ++i)
+    for (int d = 0; d < 2; ++d) CHECK(s.w.v_viscous[d][i] == s.w.v[d][i]);
   // Same configuration again: same set, no rebuild needed; a particle leaving the band changes it.
   CHECK_FALSE(gen.generate(base, s.pt, s.w));
   s.w.x[1][1] = 0.3;
@@ -161,6 +170,7 @@ TEST_CASE("ghost generator: free slip mirrors only the normal component (Niedoba
   Scene s;
   const std::size_t base = s.w.n;
   gen.generate(base, s.pt, s.w);
+  CHECK(s.w.v_viscous[0].empty());  // no no-slip mirror: the viscous terms read w.v
   for (std::size_t g = 0; g < gen.count(); ++g) {
     const std::size_t k = base + g, i = gen.sources()[g];
     if (i == 1) {  // bottom wall: tangential kept, normal mirrored about v_w,n = 0
@@ -256,7 +266,7 @@ TEST_CASE("ghost generator: oblique mirror planes, their corners and the box fac
   for (std::size_t g = 0; g < gen.count(); ++g) {
     const auto q = rel(g);
     const std::size_t i = gen.sources()[g];
-    const double vx = w.v[0][base + g], vy = w.v[1][base + g];
+    const double vx = w.v_viscous[0][base + g], vy = w.v_viscous[1][base + g];
     if (gen.masks()[g] == 0b001) {  // the floor: up -> -up; no slip: 2 v_w - v
       ++floor_images;
       CHECK(q[0] == Approx(i == 0 ? 0.05 : 0.16));
@@ -313,6 +323,7 @@ TEST_CASE("ghost generator: oblique mirror planes, their corners and the box fac
     for (int d = 0; d < 2; ++d) {
       CHECK(b.w.x[d][k] == Approx(a.w.x[d][k]).margin(1e-15));
       CHECK(b.w.v[d][k] == Approx(a.w.v[d][k]).margin(1e-15));
+      CHECK(b.w.v_viscous[d][k] == Approx(a.w.v_viscous[d][k]).margin(1e-15));
     }
 }
 
@@ -335,7 +346,7 @@ TEST_CASE("ghost generator in 3D: an oblique plane and a box face at right angle
     const std::uint32_t m = gen.masks()[g];
     CHECK(up == Approx(m & 0b10u ? -0.04 : 0.04));       // bit 1: the floor (after the box face)
     CHECK(w.x[1][k] == Approx(m & 0b01u ? -0.03 : 0.03));  // bit 0: the y face
-    for (int d = 0; d < 3; ++d) CHECK(w.v[d][k] == Approx(-pt.v[d][0]));  // no slip at rest: -v
+    for (int d = 0; d < 3; ++d) CHECK(w.v_viscous[d][k] == Approx(-pt.v[d][0]));  // no slip at rest: -v
   }
 }
 
@@ -358,7 +369,10 @@ TEST_CASE("ghost generator: no-slip corner images keep every wall impermeable, t
     if (gen.masks()[g] != 0b11u) continue;
     CHECK(w.x[1][k] == Approx(-0.03));
     CHECK(w.x[2][k] == Approx(1.02));
-    CHECK(w.v[0][k] == Approx(U - 0.7));
+    CHECK(w.v_viscous[0][k] == Approx(U - 0.7));
+    CHECK(w.v_viscous[1][k] == Approx(-0.2));
+    CHECK(w.v_viscous[2][k] == Approx(0.1));
+    CHECK(w.v[0][k] == Approx(0.7));  // free slip: the edge's tangent kept
     CHECK(w.v[1][k] == Approx(-0.2));
     CHECK(w.v[2][k] == Approx(0.1));
   }
@@ -376,10 +390,12 @@ TEST_CASE("ghost generator: no-slip corner images keep every wall impermeable, t
   for (std::size_t g = 0; g < 3; ++g) {
     const std::size_t k = 1 + g;
     if (g2.masks()[g] == 0b11u) {
-      CHECK(w2.v[0][k] == Approx(-0.6));
-      CHECK(w2.v[1][k] == Approx(0.3));
+      CHECK(w2.v_viscous[0][k] == Approx(-0.6));
+      CHECK(w2.v_viscous[1][k] == Approx(0.3));
     } else if (g2.masks()[g] == 0b10u) {  // the lid alone: 2 U - u along it, -v across
-      CHECK(w2.v[0][k] == Approx(2.0 * U - 0.6));
+      CHECK(w2.v_viscous[0][k] == Approx(2.0 * U - 0.6));
+      CHECK(w2.v_viscous[1][k] == Approx(0.3));
+      CHECK(w2.v[0][k] == Approx(0.6));  // free slip for every other term: the lid's normal mirrored only
       CHECK(w2.v[1][k] == Approx(0.3));
     }
   }

@@ -11,8 +11,14 @@
 // (boundary/ghost_hydrostatic_pressure.hpp, after the EOS). Velocities, with v_w the wall velocity:
 //   free slip (Niedoba 2012, eqs 2.77-2.78): tangential component kept, normal component mirrored about v_w;
 //   no slip: v_g = 2 v_w - v, so the mean of a pair is v_w on the wall (a linear profile continues
-//   through the wall);
-//   corner image: free slip = both mirrors in turn; no slip = per direction: the component along each
+//   through the wall), in the viscous terms only (Workspace::v_viscous, read by the Morris and the
+//   strain-rate viscosity). Every other pair sum (continuity, pressure, energy, artificial viscosity)
+//   sees the free-slip image, which holds the flow through the wall to v_w.n and nothing else: as
+//   with Adami et al. (2012)'s wall velocity for wall particles, the no-slip velocity in the
+//   continuity sum would compress or expand the fluid beside the wall wherever it slips along it (an
+//   inviscid dam break in a ghost-walled scene gained kinetic energy beyond what gravity put in and
+//   blew up at t = 0.086 s; a 2D shock tube with no-slip mirrors at t = 0.026 s);
+//   corner image: free slip = both mirrors in turn; no slip (viscous) = per direction: the component along each
 //   mirror's normal n_k mirrored about that wall's own normal velocity (2 v_wk.n_k - v.n_k, so no
 //   wall lets fluid through), and the component tangent to every mirror of the corner (the edge
 //   direction in 3D; none in 2D) as 2 <v_w> - v, <v_w> the mean of the walls' tangential velocities
@@ -90,6 +96,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
       for (int s = 0; s < 2; ++s)
         if (walls[d][s].present) mirrors_.push_back({face_plane(d, s, walls[d][s]), d, walls[d][s].position});
     for (const auto& p : planes) mirrors_.push_back({p, -1, 0.0});
+    for (const auto& m : mirrors_) any_no_slip_ = any_no_slip_ || m.plane.no_slip;
     if (mirrors_.size() > 32) throw std::invalid_argument("ghost walls: at most 32 mirror planes");
     for (std::size_t a = 0; a < mirrors_.size(); ++a) {
       std::uint32_t bits = 0;
@@ -164,9 +171,17 @@ class GhostGenerator final : public ParticleGenerator<D> {
     w.e.resize(n);
     w.hs.resize(n, w.h);
     for (auto& s : w.strain) s.resize(n);
+    // With a no-slip mirror the viscous terms read their own velocities: the fluid's (and the scene's
+    // wall particles') own, and the images' no-slip ones.
+    const bool viscous = any_no_slip_;
+    if (viscous)
+      for (int d = 0; d < D; ++d) {
+        w.v_viscous[d].resize(n);
+        std::copy(w.v[d].begin(), w.v[d].begin() + static_cast<std::ptrdiff_t>(n_base), w.v_viscous[d].begin());
+      }
     for (std::size_t g = 0; g < source_.size(); ++g) {
       const std::size_t i = source_[g];
-      image(w, i, mask_[g], n_base + g);
+      image(w, i, mask_[g], n_base + g, viscous);
       w.rho[n_base + g] = w.rho[i];
       w.e[n_base + g] = w.e[i];
       w.hs[n_base + g] = w.hs[i];
@@ -219,13 +234,16 @@ class GhostGenerator final : public ParticleGenerator<D> {
     return s;
   }
 
-  void image(Workspace<D>& w, std::size_t i, std::uint32_t mask, std::size_t g) const {
-    double v[D];
+  // Writes image g of particle i through the mirrors in `mask`: its position, its free-slip velocity
+  // into w.v and, with `viscous` (a no-slip mirror in the scene), its viscous velocity into
+  // w.v_viscous (no slip through the no-slip mirrors, the free-slip rule through the others).
+  void image(Workspace<D>& w, std::size_t i, std::uint32_t mask, std::size_t g, bool viscous) const {
+    double v[D], vs[D];  // viscous (no slip where the mirror says so) and free slip
     int walls = 0;
     bool all_no_slip = true;
     for (int d = 0; d < D; ++d) {
       w.x[d][g] = w.x[d][i];
-      v[d] = w.v[d][i];
+      v[d] = vs[d] = w.v[d][i];
     }
     for (std::size_t k = 0; k < mirrors_.size(); ++k) {
       if (!(mask & (1u << k))) continue;
@@ -241,18 +259,29 @@ class GhostGenerator final : public ParticleGenerator<D> {
         for (int d = 0; d < D; ++d) dist += m.normal[d] * w.x[d][g];
         for (int d = 0; d < D; ++d) w.x[d][g] -= 2.0 * dist * m.normal[d];
       }
+      free_slip(mirror, vs);
       if (m.no_slip) {
         for (int c = 0; c < D; ++c) v[c] = 2.0 * m.velocity[c] - v[c];
-      } else if (mirror.axis >= 0) {
-        v[mirror.axis] = 2.0 * m.velocity[mirror.axis] - v[mirror.axis];
       } else {
-        double vn = 0.0;
-        for (int d = 0; d < D; ++d) vn += m.normal[d] * (v[d] - m.velocity[d]);
-        for (int c = 0; c < D; ++c) v[c] -= 2.0 * vn * m.normal[c];
+        free_slip(mirror, v);
       }
     }
     if (walls > 1 && all_no_slip) corner_no_slip(w, i, mask, walls, v);
-    for (int c = 0; c < D; ++c) w.v[c][g] = v[c];
+    for (int c = 0; c < D; ++c) w.v[c][g] = vs[c];
+    if (viscous)
+      for (int c = 0; c < D; ++c) w.v_viscous[c][g] = v[c];
+  }
+
+  // The normal component of v mirrored about the mirror's normal velocity (Niedoba 2012, eqs 2.77-2.78).
+  static void free_slip(const Mirror& mirror, double (&v)[D]) {
+    const GhostPlane<D>& m = mirror.plane;
+    if (mirror.axis >= 0) {
+      v[mirror.axis] = 2.0 * m.velocity[mirror.axis] - v[mirror.axis];
+      return;
+    }
+    double vn = 0.0;
+    for (int d = 0; d < D; ++d) vn += m.normal[d] * (v[d] - m.velocity[d]);
+    for (int c = 0; c < D; ++c) v[c] -= 2.0 * vn * m.normal[c];
   }
 
   // The no-slip corner image's velocity (the header's rule). The mirrors of a corner are pairwise at
@@ -295,6 +324,7 @@ class GhostGenerator final : public ParticleGenerator<D> {
   std::vector<Mirror> mirrors_;
   std::vector<std::uint32_t> perpendicular_;  // per mirror: the mirrors at right angles to it
   double support_;
+  bool any_no_slip_ = false;  // a no-slip mirror: images carry viscous velocities (Workspace::v_viscous)
   double reach_h_ = 0.0;
   std::size_t n_base_ = 0;
   std::vector<std::uint32_t> source_, new_source_;

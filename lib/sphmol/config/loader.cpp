@@ -424,6 +424,10 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (const auto v = disc.string("wall_slip")) {
       if (d.boundary != "ghost") disc.fail("wall_slip", "applies to boundary: ghost only");
       d.wall_slip = disc.choice("wall_slip", *v, {"no_slip", "free_slip"});
+      // The no-slip images' velocity enters the viscous terms only (boundary/ghost_particles.hpp).
+      if (d.wall_slip == "no_slip" && d.viscosity == "none")
+        c.notices.push_back(disc.where("wall_slip") + ": no_slip has no effect: it sets the ghost images' velocity in the "
+                            "viscous terms, and discretization.viscosity is 'none' (every other term sees free-slip images)");
     }
     if (const auto v = disc.string("wall_pressure")) {
       d.wall_pressure = disc.choice("wall_pressure", *v, {"rest", "extrapolated", "dynamic"});

@@ -6,7 +6,8 @@
 // equation (Vukčević 2012, eq 117) needs eps at the wall neighbours; wall rows see only fluid
 // particles, and a missing wall-wall pair contributes nothing for walls that move together.
 // Velocity differences of fluid-wall pairs are scaled by the wall model's factor
-// (rhs/workspace.hpp, vfac).
+// (rhs/workspace.hpp, vfac), and taken from the viscous velocities where a wall treatment sets them
+// (Workspace::v_viscous: no-slip ghost images), since the strain rate feeds the viscous stress only.
 // The 2/3 is Stokes' hypothesis for the fluid, not the dimension of the scene: eps is traceless in 3D,
 // and in 2D (1D) it is the in-plane (axial) deviatoric strain of a plane (one-dimensional) flow of
 // the same fluid, so the term holds in every dimension.
@@ -57,6 +58,8 @@ class StrainRate final : public Term<D> {
   static void gradient_sums(const Workspace<D>& w, std::size_t i, double (&g)[D][D], double (*M)[D]) {
     const auto& P = w.pairs;
     const auto& m = w.particles->mass;
+    const double* v[D];
+    for (int d = 0; d < D; ++d) v[d] = w.v_viscous[d].empty() ? w.v[d].data() : w.v_viscous[d].data();
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) {
         g[a][b] = 0.0;
@@ -68,7 +71,7 @@ class StrainRate final : public Term<D> {
       double dx[D], dv[D];
       for (int d = 0; d < D; ++d) {
         dx[d] = w.dx[d][k];
-        dv[d] = w.vfac[k] * (w.v[d][j] - w.v[d][i]);
+        dv[d] = w.vfac[k] * (v[d][j] - v[d][i]);
       }
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) {
