@@ -7,9 +7,10 @@
 // every fluid particle, so they are outside the kernel support when gap + dx >= support; a narrower
 // gap leaves holes in the sums near both walls (a 2D shock tube two spacings wide, Gaussian kernel
 // at h = 1.3 dx, blew up at t = 0.049 s).
-#include <charconv>
 #include <cmath>
 #include <string>
+
+#include "sphmol/core/six_digits.hpp"
 
 namespace sphmol {
 
@@ -20,16 +21,11 @@ inline bool facing_mirrors_too_close(double gap, double dx, double support) {
 
 // Why, for a ConfigError at the key that sets the gap.
 inline std::string facing_mirrors_message(double gap, double dx, double support) {
-  const auto text = [](double v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6);
-    return std::string(buf, r.ptr);
-  };
   const double spacings = std::ceil((support - dx) / dx * (1.0 - 1e-9));
-  return "ghost walls facing each other " + text(gap) + " m apart: the images of images through both walls, which the ghost "
-         "boundary does not make, would lie within the kernel support of the fluid (gap + dx = " + text(gap + dx) +
-         " m < support " + text(support) + " m). Widen the gap to at least " + text(spacings) + " spacings (" +
-         text(spacings * dx) + " m), or use discretization.boundary: wall_particles";
+  return "ghost walls facing each other " + six_digits(gap) + " m apart: the images of images through both walls, which the ghost "
+         "boundary does not make, would lie within the kernel support of the fluid (gap + dx = " + six_digits(gap + dx) +
+         " m < support " + six_digits(support) + " m). Widen the gap to at least " + six_digits(spacings) + " spacings (" +
+         six_digits(spacings * dx) + " m), or use discretization.boundary: wall_particles";
 }
 
 }  // namespace sphmol

@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -12,17 +11,12 @@
 #include <vector>
 
 #include "sphmol/boundary/facing_mirrors.hpp"
+#include "sphmol/core/six_digits.hpp"
 #include "sphmol/kernels/registry.hpp"
 
 namespace sphmol {
 
 namespace {
-
-std::string shown(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6);
-  return std::string(buf, r.ptr);
-}
 
 double kernel_support(int dim, const std::string& name) {
   switch (dim) {
@@ -70,14 +64,14 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
   if (d.wall_pressure == "extrapolated" && !barotropic)
     disc.fail("wall_pressure", "'extrapolated' inverts the EOS for the wall density; type 'ideal_gas' is not barotropic");
   if (d.boundary == "virtual_repulsive" && !(d.repulsive.r0 < support * d.smoothing_ratio))
-    disc.fail("repulsive", "r0 = " + shown(d.repulsive.r0) + " spacings must lie inside the kernel support (" +
-                               shown(support * d.smoothing_ratio) + " spacings: support " + shown(support) +
-                               " h, h = " + shown(d.smoothing_ratio) + " dx)");
+    disc.fail("repulsive", "r0 = " + six_digits(d.repulsive.r0) + " spacings must lie inside the kernel support (" +
+                               six_digits(support * d.smoothing_ratio) + " spacings: support " + six_digits(support) +
+                               " h, h = " + six_digits(d.smoothing_ratio) + " dx)");
   // The integral approach's gradients have no form for these terms (rhs/assemble.cpp).
   if (d.momentum == "integral_approach" && d.viscosity != "none")
     disc.fail("momentum", "'integral_approach' needs viscosity: none (got '" + d.viscosity + "')");
   if (d.momentum == "integral_approach" && d.density_diffusion > 0.0)
-    disc.fail("momentum", "'integral_approach' is not available with density_diffusion (got " + shown(d.density_diffusion) + ")");
+    disc.fail("momentum", "'integral_approach' is not available with density_diffusion (got " + six_digits(d.density_diffusion) + ")");
   if (d.pair_passes == "fused") {
     std::string stored;
     if (d.boundary == "virtual_repulsive") stored = "boundary: virtual_repulsive";
@@ -92,8 +86,8 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
   const double radius = d.smoothing_ratio * (support + d.skin) * s.spacing;
   for (const auto& [where, length] : s.periodic)
     if (length < 2.0 * radius)
-      throw ConfigError(where + ": the periodic length " + shown(length) + " m is shorter than two neighbour radii (2 x " + shown(radius) +
-                        " m: (support " + shown(support) + " + skin " + shown(d.skin) + ") h, h = " + shown(d.smoothing_ratio) +
+      throw ConfigError(where + ": the periodic length " + six_digits(length) + " m is shorter than two neighbour radii (2 x " + six_digits(radius) +
+                        " m: (support " + six_digits(support) + " + skin " + six_digits(d.skin) + ") h, h = " + six_digits(d.smoothing_ratio) +
                         " dx); use more particles or a smaller smoothing_ratio or skin");
   const double support_m = d.smoothing_ratio * support * s.spacing;
   for (const auto& [where, gap] : s.mirror_gaps)
@@ -112,18 +106,18 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
   const RanksOnMachine rk = ranks_on_machine();
   const double here = s.bytes() * rk.here / rk.ranks;
   if (limit > 0 && here > limit)
-    disc.fail(resolution_key(c), "the run needs about " + shown(s.bytes() / 1e9) + " GB (" + shown(s.fluid) + " fluid + " + shown(s.wall) +
-                      " wall particles at about " + shown(s.bytes_per_particle) + " bytes each)" +
-                      (rk.ranks > 1 ? ", " + shown(here / 1e9) + " GB of it on this machine (" + std::to_string(rk.here) +
+    disc.fail(resolution_key(c), "the run needs about " + six_digits(s.bytes() / 1e9) + " GB (" + six_digits(s.fluid) + " fluid + " + six_digits(s.wall) +
+                      " wall particles at about " + six_digits(s.bytes_per_particle) + " bytes each)" +
+                      (rk.ranks > 1 ? ", " + six_digits(here / 1e9) + " GB of it on this machine (" + std::to_string(rk.here) +
                                           " of the run's " + std::to_string(rk.ranks) + " MPI ranks)"
                                     : std::string()) +
-                      ", more than this machine's " + shown(limit / 1e9) + " GB of memory");
+                      ", more than this machine's " + six_digits(limit / 1e9) + " GB of memory");
 
   // Steps: a fixed step, or the CFL bound's smallest possible step (at rest), against max_steps.
   const auto& t = c.time;
   const double max_steps = static_cast<double>(t.max_steps);
   if (t.dt && t.t_end / *t.dt > max_steps)
-    r.time.fail("dt", "t_end / dt = " + shown(t.t_end) + " / " + shown(*t.dt) + " = " + shown(t.t_end / *t.dt) +
+    r.time.fail("dt", "t_end / dt = " + six_digits(t.t_end) + " / " + six_digits(*t.dt) + " = " + six_digits(t.t_end / *t.dt) +
                           " steps, more than time.max_steps = " + std::to_string(t.max_steps) +
                           " (raise time.max_steps or the step)");
   if (!t.dt) {
@@ -137,13 +131,13 @@ void check_scene(const Config& c, CaseReaders& r, SceneSize& s) {
     const double diffusivity = CflConfig::diffusivity(imex ? 0.0 : nu, d.bulk_zeta(f.eos.sound_speed, h));
     if (diffusivity > 0) dt_max = std::min(dt_max, t.cfl.viscous * h * h / diffusivity);
     if (t.t_end / dt_max > max_steps)
-      r.time.fail("max_steps", std::to_string(t.max_steps) + " steps cannot reach time.t_end = " + shown(t.t_end) +
-                                   " s: the CFL step is at most " + shown(dt_max) + " s (h = " + shown(h) + " m), so at least " +
-                                   shown(t.t_end / dt_max) + " steps are needed");
+      r.time.fail("max_steps", std::to_string(t.max_steps) + " steps cannot reach time.t_end = " + six_digits(t.t_end) +
+                                   " s: the CFL step is at most " + six_digits(dt_max) + " s (h = " + six_digits(h) + " m), so at least " +
+                                   six_digits(t.t_end / dt_max) + " steps are needed");
   }
   if (c.output.checkpoint_every > 0 && t.t_end / c.output.checkpoint_every > max_steps)
-    r.output.fail("checkpoint_every", shown(c.output.checkpoint_every) + " s gives " + shown(t.t_end / c.output.checkpoint_every) +
-                                          " checkpoints up to time.t_end = " + shown(t.t_end) + " s, more than time.max_steps = " +
+    r.output.fail("checkpoint_every", six_digits(c.output.checkpoint_every) + " s gives " + six_digits(t.t_end / c.output.checkpoint_every) +
+                                          " checkpoints up to time.t_end = " + six_digits(t.t_end) + " s, more than time.max_steps = " +
                                           std::to_string(t.max_steps) + " steps");
 }
 

@@ -1,19 +1,15 @@
 #include "sphmol/run/timed_output_files.hpp"
 
+#include "sphmol/core/six_digits.hpp"
+
 #include <algorithm>
 #include <cstdlib>
-#include <iomanip>
-#include <sstream>
 #include <string>
 #include <string_view>
 
 namespace sphmol {
 
-std::string output_time_text(double t) {
-  std::ostringstream s;
-  s << std::setprecision(6) << t;
-  return s.str();
-}
+std::string output_time_text(double t) { return six_digits(t); }
 
 std::vector<std::pair<double, std::string>> timed_output_files(const OutputSink& out, std::string_view prefix) {
   // Only what this run wrote: a reused folder may hold another run's files with the same prefix.

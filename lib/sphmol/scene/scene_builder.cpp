@@ -476,7 +476,7 @@ BuiltScene<D> build_scene(const SceneSpec& spec, const Config& config, SceneShar
       fluid_volume += static_cast<double>(out.fluid_counts[k]) * lat.cell_volume();
     }
     out.fills_domain = fluid_volume >= 0.99 * static_cast<double>(free_cells) * cubic.cell_volume();
-    for (int f = 0; f < 2 * D; ++f) out.open_faces = out.open_faces || (dom.boundary[f / 2] != AxisBoundary::periodic && dom.open[f]);
+    out.open_faces = dom.has_open_face();
   }
 
   // Domain walls.

@@ -37,6 +37,12 @@ struct DomainSpec {
   // open[2 d + side]: face left open (side 0 the lo face, 1 the hi face). Periodic axes: false.
   std::vector<bool> open;
   std::string where_lo, where_hi, where_boundaries, where_open;
+  // Whether fluid can leave through some face (open, on an axis that is not periodic).
+  bool has_open_face() const {
+    for (std::size_t f = 0; f < open.size(); ++f)
+      if (open[f] && boundary[f / 2] != AxisBoundary::periodic) return true;
+    return false;
+  }
 };
 
 // The value of a fluid body's `pressure` key for the hydrostatic initial state.

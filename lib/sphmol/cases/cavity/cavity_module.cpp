@@ -1,12 +1,11 @@
 // The lid-driven cavity case module: its geometry keys, checks and scene size.
 #include <cmath>
-#include <iomanip>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "sphmol/cases/case_keys.hpp"
 #include "sphmol/cases/case_module.hpp"
+#include "sphmol/core/six_digits.hpp"
 #include "sphmol/cases/cavity/cavity_case.hpp"
 #include "sphmol/cases/cavity/cavity_settings.hpp"
 #include "sphmol/reference/data_directory.hpp"
@@ -19,12 +18,6 @@ std::string CavitySettings::to_yaml() const {
 }
 
 namespace {
-
-std::string six_digits(double x) {
-  std::ostringstream s;
-  s << std::setprecision(6) << x;
-  return s.str();
-}
 
 CaseRead read_cavity(CaseReaders& r, const Config& c) {
   auto s = std::make_shared<CavitySettings>();

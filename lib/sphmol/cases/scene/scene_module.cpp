@@ -57,8 +57,7 @@ CaseRead read_scene_case(CaseReaders& r, const Config& c) {
       size.periodic.push_back({spec.domain.where_hi, spec.domain.hi[a] - spec.domain.lo[a]});
   CaseRead out{settings, size};
   out.wall_count_known = bound <= kCountWhileLoading;
-  for (int f = 0; f < 2 * c.dimension; ++f)
-    out.open_to_outflow = out.open_to_outflow || (spec.domain.boundary[f / 2] != AxisBoundary::periodic && spec.domain.open[f]);
+  out.open_to_outflow = spec.domain.has_open_face();
   // Only the continuity density is set from the start pressure; the summed densities come from the
   // particles' positions, whatever pressure the body was given.
   if (d.density != "continuity")
