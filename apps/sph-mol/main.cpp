@@ -118,16 +118,26 @@ int main(int argc, char** argv) {
       auto* sub = app.add_subcommand(s.name, s.description);
       s.setup(*sub);
     }
-    if (const auto code = sphmol::app::parse_command_line(app, argc, argv, std::cout, std::cerr)) return *code;
+    // Under mpirun every rank reads the same command line: rank 0 alone tells what is wrong with it
+    // (MPI starts after it, so the launcher's environment says which rank this is).
+#ifdef SPHMOL_HAVE_MPI
+    const bool first_rank = sphmol::parallel::MpiEnvironment::launched_rank() == 0;
+#else
+    const bool first_rank = true;
+#endif
+    std::ostringstream not_shown;
+    std::ostream& cli_out = first_rank ? std::cout : not_shown;
+    std::ostream& cli_err = first_rank ? std::cerr : not_shown;
+    if (const auto code = sphmol::app::parse_command_line(app, argc, argv, cli_out, cli_err)) return *code;
     // A short spin at barriers, so that a busy machine does not make two threads slower than one
     // (run/openmp_wait_policy.hpp). Before any parallel region, and before any message, which the
     // re-executed program would print again. Returns only if not re-executed.
     if (!sphmol::bound_openmp_spin(cmd.threads > 0 ? cmd.threads : omp_get_num_procs(), argv))
-      std::cerr << "sph-mol: warning: could not restart with GOMP_SPINCOUNT=" << sphmol::bounded_spin_count
+      cli_err << "sph-mol: warning: could not restart with GOMP_SPINCOUNT=" << sphmol::bounded_spin_count
                 << "; idle threads spin at barriers for libgomp's default time (set OMP_WAIT_POLICY=passive or "
                    "GOMP_SPINCOUNT to choose)\n";
     if (cmd.threads > omp_get_num_procs())  // oversubscribed threads only wait for each other
-      std::cerr << "sph-mol: warning: --threads " << cmd.threads << " is more than the " << omp_get_num_procs()
+      cli_err << "sph-mol: warning: --threads " << cmd.threads << " is more than the " << omp_get_num_procs()
                 << " cores of this machine\n";
     if (cmd.threads > 0) omp_set_num_threads(cmd.threads);
 #ifdef SPHMOL_HAVE_MPI

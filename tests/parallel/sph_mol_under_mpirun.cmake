@@ -5,7 +5,8 @@
 # checkpoint (state and integrator state); the 3 ranks' checkpoint continued on 2 ranks ends in the
 # same state, and so does the 1D Sod tube (energy equation, variable h); ARKODE and CVODE on 2
 # ranks end in the particles of 1 rank, and so does the dam break with a reordered workspace; rank 0
-# alone prints the summary; a subcommand ends every rank with exit code 2. Inputs: SPHMOL,
+# alone prints the summary; a subcommand ends every rank with exit code 2; rank 0 alone reports a
+# bad command line. Inputs: SPHMOL,
 # PIECES_EQUAL, MPIEXEC, NP_FLAG, FLAGS (comma-separated), SOURCE_DIR, WORK_DIR.
 string(REPLACE "," ";" FLAGS "${FLAGS}")
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -134,4 +135,18 @@ check_pieces(${WORK_DIR}/reorder-n1/fluid_0001.vtp ${WORK_DIR}/reorder-n2/fluid_
 execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} kernels RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "does not run over several MPI ranks")
   message(FATAL_ERROR "a subcommand over 2 ranks: exit ${rc}, expected 2\n${err}")
+endif()
+
+# The command line is the same on every rank: its errors and warnings are printed once, by rank 0.
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --no-such-option RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX MATCHALL "was not expected: --no-such-option" lines "${out}${err}")
+list(LENGTH lines printed)
+if(NOT rc EQUAL 2 OR NOT printed EQUAL 1)
+  message(FATAL_ERROR "an unknown option over 2 ranks: exit ${rc} (expected 2), the error printed ${printed} times (expected 1)\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${MPIEXEC} ${NP_FLAG} 2 ${FLAGS} ${SPHMOL} --threads 100000 kernels RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX MATCHALL "--threads 100000 is more than" lines "${out}${err}")
+list(LENGTH lines printed)
+if(NOT printed EQUAL 1)
+  message(FATAL_ERROR "--threads above the cores over 2 ranks: the warning printed ${printed} times (expected 1)\n${out}\n${err}")
 endif()

@@ -9,6 +9,7 @@
 using namespace sphmol;
 using config_test::base;
 using config_test::error_of;
+using config_test::has_notice;
 using config_test::with;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
@@ -325,6 +326,41 @@ TEST_CASE("config: discretization.wall_layers where no wall particles are made g
   CHECK_THAT(notices(load_config(dir + "cavity.yaml", {set})), !Contains("wall_layers"));
   CHECK_THAT(notices(load_config(dir + "shock_tube.yaml", {set})), !Contains("wall_layers"));
   CHECK_THAT(notices(load_config(dir + "scene_tank.yaml", {set})), !Contains("wall_layers"));
+}
+
+TEST_CASE("config: time.cfl.viscous where no viscous step limit applies gets a notice", "[config]") {
+  const std::string dir = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  const std::string set = "time.cfl.viscous=0.1";
+  // The implicit-viscosity integrators: the viscous limit drops out of their CFL step.
+  for (const char* imex : {"time.integrator=leapfrog_imex", "time.integrator=arkode_imex"})
+    CHECK(has_notice(load_config(dir + "couette.yaml", {set, imex}),
+                     "time.cfl.viscous: has no effect: '" + std::string(imex).substr(16) +
+                         "' treats the viscosity implicitly and no bulk_viscosity is set"));
+  // An inviscid fluid.
+  CHECK(has_notice(load_config(dir + "dam_break.yaml", {set}), "time.cfl.viscous: has no effect: the fluid is inviscid"));
+  // Read: an explicit viscous run, a bulk viscosity with an implicit shear viscosity, the default value.
+  CHECK_FALSE(has_notice(load_config(dir + "couette.yaml", {set, "time.integrator=leapfrog"}), "cfl.viscous"));
+  CHECK_FALSE(has_notice(load_config(dir + "dam_break.yaml", {set, "discretization.bulk_viscosity=0.5"}), "cfl.viscous"));
+  CHECK_FALSE(has_notice(load_config(dir + "couette.yaml", {"time.cfl.viscous=0.125", "time.integrator=leapfrog_imex"}), "cfl.viscous"));
+  // At a fixed step the notice on time.cfl covers it.
+  const Config fixed = load_config(dir + "couette.yaml", {set, "time.integrator=leapfrog", "time.dt=1e-5"});
+  CHECK(has_notice(fixed, "time.cfl: has no effect"));
+  CHECK_FALSE(has_notice(fixed, "cfl.viscous"));
+}
+
+TEST_CASE("config: combine_terms false where nothing combines gets a notice", "[config]") {
+  const std::string dir = std::string(SPHMOL_SOURCE_DIR) + "/verification/";
+  const std::string off = "discretization.combine_terms=false";
+  CHECK(has_notice(load_config(dir + "couette.yaml", {off}), "discretization.combine_terms: has no effect: nothing to combine here"));
+  CHECK(has_notice(load_config(dir + "shock_tube.yaml", {off}), "discretization.combine_terms: has no effect"));
+  CHECK(has_notice(load_config(dir + "dam_break.yaml", {off, "discretization.artificial_viscosity.form=monaghan_1997",
+                                                         "discretization.artificial_viscosity.eta=null"}),
+                   "discretization.combine_terms: has no effect"));
+  // The dam break's formulation combines: off is read (and measured against on).
+  CHECK_FALSE(has_notice(load_config(dir + "dam_break.yaml", {off}), "combine_terms"));
+  CHECK(load_config(dir + "dam_break.yaml").discretization.has_combinable_terms());
+  CHECK_FALSE(load_config(dir + "dam_break.yaml", {"discretization.density_diffusion_form=hydrostatic_corrected"})
+                  .discretization.has_combinable_terms());
 }
 
 TEST_CASE("config: the resolved config writes only the time settings the integrator reads", "[config]") {

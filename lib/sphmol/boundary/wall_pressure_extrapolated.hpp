@@ -56,33 +56,14 @@ class WallPressureExtrapolated final : public Term<D> {
     }
   }
 
- // The acceleration of the wall's material at wall particle i at time t; none for a wall that does
-  // not accelerate. A moving body: the central difference of the particle's velocity. A body held in
-  // place (core/wall_motion.hpp, stationary) carries a velocity field v(x, t) through fixed particles:
-  // the material acceleration dv/dt + (v . grad) v, whose convective part for a rotation at rate
-  // omega is omega k x v (the centripetal -omega^2 r of a spinning cylinder); zero for a belt.
+  // The acceleration of the wall's material at wall particle i at time t (core/wall_motion.hpp,
+  // WallMotion::acceleration); none for a wall that does not accelerate (no motion, a translation).
   static std::optional<std::array<double, D>> wall_acceleration(const Particles<D>& pt, std::size_t i, double t) {
     if (i >= pt.motion.size() || pt.motion[i] < 0) return std::nullopt;
     const auto& m = pt.motions[pt.motion[i]];
     if (m.kind == WallMotionKind::translation) return std::nullopt;  // constant velocity
-    constexpr double dt = 1e-6;
-    const auto up = pt.wall_state(i, t + dt), down = pt.wall_state(i, t - dt);
-    std::array<double, D> a{};
-    for (int d = 0; d < D; ++d) a[d] = (up.v[d] - down.v[d]) / (2.0 * dt);
-    if (m.stationary && m.rotates()) {
-      const auto now = pt.wall_state(i, t);
-      const double rate = m.frame(t).rate;
-      if constexpr (D == 2) {
-        a[0] -= rate * now.v[1];
-        a[1] += rate * now.v[0];
-      } else if constexpr (D == 3) {
-        const auto& k = m.axis;
-        a[0] += rate * (k[1] * now.v[2] - k[2] * now.v[1]);
-        a[1] += rate * (k[2] * now.v[0] - k[0] * now.v[2]);
-        a[2] += rate * (k[0] * now.v[1] - k[1] * now.v[0]);
-      }
-    }
-    return a;
+    const auto now = pt.wall_state(i, t);
+    return m.acceleration(m.frame(t), now.x, now.n, pt.wall_depth[i], now.v);
   }
 
  private:

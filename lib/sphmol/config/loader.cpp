@@ -621,9 +621,14 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     if (d.smoothing_length != "constant" && d.neighbor_search != "kdtree")
       disc.fail("smoothing_length", "'" + d.smoothing_length + "' needs discretization.neighbor_search: kdtree (got '" +
                                         d.neighbor_search + "')");
+    if (disc.has("combine_terms") && !d.combine_terms && !d.has_combinable_terms())
+      c.notices.push_back(disc.where("combine_terms") + ": has no effect: nothing to combine here (it merges continuity "
+                          "density with continuity: mass, the symmetric_117 pressure gradient and monaghan_1992 artificial "
+                          "viscosity, where there is no physical viscosity, energy equation or hydrostatic_corrected diffusion)");
   }
 
   // time
+  std::string cfl_viscous_where;  // where time.cfl.viscous was given, for the notice after the case
   MapReader time = top.section("time", {"t_end", "integrator", "table", "rtol", "atol", "cfl", "dt", "max_steps", "krylov"});
   {
     auto& t = c.time;
@@ -690,6 +695,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     cfl.check("viscous", t.cfl.viscous > 0 && t.cfl.viscous <= CflConfig::kMaxViscous, t.cfl.viscous,
           "(0, 0.125]: the explicit viscous step limit dt <= 0.125 h^2/nu of Morris, Fox & Zhu 1997; "
           "the leapfrog Couette flow diverges at 0.15");
+    // Given at a value other than the default, which the resolved config.yaml writes for every run.
+    if (cfl.has("viscous") && t.cfl.viscous != CflConfig{}.viscous) cfl_viscous_where = cfl.where("viscous");
     if (const auto v = time.real("dt")) {
       time.check("dt", *v > 0, *v, "> 0 s");
       if (t.integrator == "cvode_adams")
@@ -840,6 +847,17 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
     c.notices.push_back(disc.where("wall_layers") + ": has no effect: case '" + c.case_name + "' makes no wall particles here (" +
                         (c.discretization.boundary == "wall_particles" ? std::string("it has no walls")
                                                                        : "boundary '" + c.discretization.boundary + "'") + ")");
+  // The viscous step limit binds only an explicit viscosity (rhs/sph_system.hpp, cfl_step).
+  if (!cfl_viscous_where.empty() && c.time.takes_cfl()) {  // else the notice on time.cfl says it all
+    const bool imex = c.time.implicit_viscosity();
+    const double nu = std::max(c.fluid.kinematic_viscosity, own.size.kinematic_viscosity);
+    if (CflConfig::diffusivity(imex ? 0.0 : nu, c.discretization.bulk_viscosity) == 0.0)
+      c.notices.push_back(cfl_viscous_where + ": has no effect: " +
+                          (imex && nu > 0.0 ? "'" + c.time.integrator + "' treats the viscosity implicitly and no bulk_viscosity is set, so "
+                                              "no viscous step limit applies (it bounds the steps of the explicit integrators)"
+                                            : std::string("the fluid is inviscid (kinematic_viscosity 0, no bulk_viscosity), so no "
+                                                          "viscous step limit applies")));
+  }
   if (!outflow_where.empty() && !own.open_to_outflow)
     c.notices.push_back(outflow_where + ": has no effect: case '" + c.case_name + "' has no face open to outflow (fluid "
                         "beyond a closed face or wall ends the run as blown up)");

@@ -67,7 +67,8 @@ struct WallMotion {
   // the angle and the angular rate) or the displacement and velocity of a translation.
   struct Frame {
     double cos = 1.0, sin = 0.0, rate = 0.0;
-    std::array<double, D> shift{}, velocity{};
+    double rate_change = 0.0;  // the angular acceleration theta'' (pitching)
+    std::array<double, D> shift{}, velocity{}, acceleration{};
   };
   Frame frame(double t) const {
     Frame f;
@@ -84,6 +85,7 @@ struct WallMotion {
         for (int d = 0; d < D; ++d) {
           f.shift[d] = amplitude[d] * s;
           f.velocity[d] = amplitude[d] * w * c;
+          f.acceleration[d] = -amplitude[d] * w * w * s;
         }
         break;
       }
@@ -97,6 +99,7 @@ struct WallMotion {
         f.cos = std::cos(theta);
         f.sin = std::sin(theta);
         f.rate = angle_amplitude * w * std::cos(w * t + phase);
+        f.rate_change = -angle_amplitude * w * w * std::sin(w * t + phase);
         break;
       }
     }
@@ -129,6 +132,23 @@ struct WallMotion {
       v = cross_axis(r);
       for (int d = 0; d < D; ++d) v[d] *= f.rate;
     }
+  }
+
+  // The acceleration of the wall's material at a particle with position x, normal n, depth `depth` and
+  // velocity v at the frame's time (as apply() gives them). Exact, from the motion's derivatives, so
+  // that no difference step sets a frequency beyond which it is wrong. A translation: its A''; a
+  // rotation: theta'' k x r + theta' k x v, r from the axis to the surface point x + depth n (the
+  // tangential and centripetal parts). For a stationary body, the material acceleration
+  // dv/dt + (v . grad) v of the velocity field the fixed particles carry, which is the same expression.
+  std::array<double, D> acceleration(const Frame& f, const std::array<double, D>& x, const std::array<double, D>& n,
+                                     double depth, const std::array<double, D>& v) const {
+    if (!rotates()) return f.acceleration;
+    std::array<double, D> r{};
+    for (int d = 0; d < D; ++d) r[d] = x[d] + depth * n[d] - centre[d];
+    const auto tangential = cross_axis(r), centripetal = cross_axis(v);
+    std::array<double, D> a{};
+    for (int d = 0; d < D; ++d) a[d] = f.rate_change * tangential[d] + f.rate * centripetal[d];
+    return a;
   }
 
   // The largest speed a particle at x_ref (normal n_ref, depth `depth`) carries over time (for energy bounds).

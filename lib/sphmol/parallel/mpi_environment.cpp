@@ -1,6 +1,7 @@
 #include "sphmol/parallel/mpi_environment.hpp"
 
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 namespace sphmol::parallel {
@@ -23,6 +24,16 @@ bool MpiEnvironment::launched() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
     if (std::getenv(v)) return true;
   return false;
+}
+
+int MpiEnvironment::launched_rank() {
+  for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* rank = std::getenv(v)) {
+      char* end = nullptr;
+      const long r = std::strtol(rank, &end, 10);
+      return end != rank && *end == '\0' && r >= 0 && r <= std::numeric_limits<int>::max() ? static_cast<int>(r) : 0;
+    }
+  return 0;
 }
 
 MpiEnvironment::~MpiEnvironment() {

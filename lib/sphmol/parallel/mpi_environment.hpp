@@ -14,6 +14,10 @@ class MpiEnvironment {
   // starts MPI only then, since a stand-alone MPI_Init needs the MPI runtime (Open MPI spawns a
   // daemon for it) where a serial run needs none.
   static bool launched();
+  // This process's rank as its launcher's environment gives it (0 if not launched, or if the launcher
+  // does not say): known before MPI starts, for messages about the command line, which every rank
+  // would print alike.
+  static int launched_rank();
   ~MpiEnvironment();
   MpiEnvironment(const MpiEnvironment&) = delete;
   MpiEnvironment& operator=(const MpiEnvironment&) = delete;

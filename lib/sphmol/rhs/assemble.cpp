@@ -146,8 +146,7 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   // formulation), equal to the four separate terms to round-off.
   const bool signal_velocity = av.form == "monaghan_1997";
   const bool hydrostatic_diffusion = disc.density_diffusion > 0.0 && disc.density_diffusion_form == "hydrostatic_corrected";
-  const bool wc_row = disc.combine_terms && disc.density == "continuity" && !m116 && !ia && disc.viscosity == "none" &&
-                      av.enabled && !signal_velocity && !disc.energy && disc.continuity == "mass" && !hydrostatic_diffusion;
+  const bool wc_row = disc.combine_terms && disc.has_combinable_terms();
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width(), av.band_offset()};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
