@@ -50,6 +50,17 @@ TEST_CASE("config: without sound_speed, c = 10 U from the case's velocity scale"
     CHECK(c.fluid.eos.sound_speed == 10.0);
     CHECK_FALSE(has_notice(c, "sound_speed"));
   }
+  SECTION("taken out by an override: the notice names the override") {
+    const std::string cavity = shipped("cavity.yaml");
+    const Config c = load_config_string(cavity, {"fluid.eos.sound_speed=null"}, "cavity.yaml");
+    CHECK(has_notice(c, "--set fluid.eos.sound_speed=null: fluid.eos.sound_speed: not given: c = 10 U = 10 m/s"));
+    // Not an earlier override of the same key, which the removal discarded.
+    const Config d = load_config_string(cavity, {"fluid.eos.sound_speed=7", "fluid.eos.sound_speed=null"}, "cavity.yaml");
+    CHECK(has_notice(d, "--set fluid.eos.sound_speed=null: fluid.eos.sound_speed: not given"));
+    // A later override of a whole section replaces what earlier ones set inside it.
+    const Config e = load_config_string(cavity, {"fluid.eos.sound_speed=7", "fluid.eos={type: linear}"}, "cavity.yaml");
+    CHECK(has_notice(e, "--set fluid.eos={type: linear}: fluid.eos.sound_speed: not given"));
+  }
   SECTION("cavity: U = |lid speed|, also for a lid along -x") {
     const std::string cavity = without_line(shipped("cavity.yaml"), "sound_speed:");
     const Config c = load_config_string(cavity, {}, "cavity.yaml");

@@ -65,6 +65,7 @@ void apply_override(YAML::Node& root, const std::string& text, YamlOrigin& origi
   // steps, particles_across=null beside a spacing. A key that is not there leaves nothing to do.
   const std::string raw = trim(text.substr(eq + 1));
   if (raw == "null" || raw == "~" || raw == "Null" || raw == "NULL") {
+    origin.add_override(path, text);  // messages about the absent key name the removal
     YAML::Node cur;
     cur.reset(root);
     for (std::size_t i = 0; i + 1 < segments.size(); ++i) {

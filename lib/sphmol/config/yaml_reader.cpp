@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "sphmol/core/join.hpp"
@@ -118,6 +119,15 @@ YAML::Node parse_yaml(const std::string& text, const std::string& name) {
   } catch (const YAML::ParserException& e) {
     throw ConfigError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
+}
+
+void YamlOrigin::add_override(const std::string& path, const std::string& text) {
+  for (auto it = overrides_.begin(); it != overrides_.end();) {
+    const std::string& p = it->first;
+    const bool under = p.size() > path.size() && p.compare(0, path.size(), path) == 0 && (p[path.size()] == '.' || p[path.size()] == '[');
+    it = under ? overrides_.erase(it) : std::next(it);
+  }
+  overrides_[path] = text;
 }
 
 std::string YamlOrigin::locate(const std::string& path, const YAML::Mark& mark) const {

@@ -39,8 +39,9 @@ class YamlOrigin {
  public:
   explicit YamlOrigin(std::string file) : file_(std::move(file)) {}
   const std::string& file() const { return file_; }
-  // Records that `path` (and everything under it) now comes from override text `text`.
-  void add_override(const std::string& path, const std::string& text) { overrides_[path] = text; }
+  // Records that `path` (and everything under it) now comes from override text `text`, which
+  // replaces or removes (key=null) what earlier overrides set under it.
+  void add_override(const std::string& path, const std::string& text);
   // "FILE:LINE" for a node at `mark`, or "--set path=value" if `path` was overridden.
   std::string locate(const std::string& path, const YAML::Mark& mark) const;
 
