@@ -1,6 +1,7 @@
 // A SIGINT/SIGTERM that arrives while gnuplot draws the plots at the end of a run is not lost: gnuplot
 // is stopped, no PNG is left under its name, and sph-mol ends as interrupted (exit 128 + signal,
-// summary "status": "interrupted", a checkpoint at t_end). A stand-in gnuplot that never finishes
+// summary "status": "interrupted", a checkpoint at t_end, from which a restart draws the plots and
+// completes the run). A stand-in gnuplot that never finishes
 // (first on PATH) makes the timing certain.
 #include <catch2/catch.hpp>
 
@@ -65,6 +66,14 @@ TEST_CASE("signals: a signal during the plots ends the run as interrupted", "[si
       CHECK(fs::exists(out / "plot_profiles.gp"));  // docs/output.md: draw the plot with it
       for (const auto& e : fs::directory_iterator(out))  // no temporary (the run's lock file stays)
         if (e.path().filename() != ".sph-mol.lock") CHECK(e.path().filename().string().front() != '.');
+      // The checkpoint at t_end finishes the run: the plots drawn (by the real gnuplot), the run completed.
+      const auto r = sph_mol("-q --restart '" + (out / "checkpoint-0.002").string() + "'", dir / "restart-err");
+      INFO(slurp(dir / "restart-err"));
+      CHECK(r.code == 0);
+      const auto done = json_file(out / "summary.json");
+      CHECK(done["status"] == "completed");
+      CHECK(done["steps"] == s["steps"]);
+      CHECK(fs::exists(out / "profiles.png"));
     }
   }
 }

@@ -137,7 +137,28 @@ TEST_CASE("restart: a rerun keeps its own newest checkpoints beside later ones o
   CHECK(fs::path(written[1].get<std::string>()).filename() == "checkpoint-0.1");
 }
 
-TEST_CASE("restart: a checkpoint with a NaN, negative or final time is refused (exit 2, file and field named)", "[restart][integration]") {
+TEST_CASE("restart: a checkpoint at t_end does the run's end again: summary and plots", "[restart][integration]") {
+  // What a signal while gnuplot draws leaves (docs/output.md, "Plots"): the data files and a checkpoint
+  // at t_end. It was refused ("nothing to continue"), so the run could not be finished but by hand.
+  const fs::path dir = scratch("restart-at-end");
+  const fs::path out = dir / "out";
+  REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.05"}), dir / "e1").code == 0);
+  const nlohmann::json first = json_file(out / "summary.json");
+  fs::remove(out / "summary.json");
+  const auto r = run_bounded({"--restart", (out / "checkpoint-0.05").string(), "--set", "output.plots=true"}, dir / "e2");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("the checkpoint is at time.t_end = 0.05 s: nothing to integrate"));
+  const nlohmann::json s = json_file(out / "summary.json");
+  CHECK(s["status"] == "completed");
+  CHECK(s["steps"] == first["steps"]);
+  CHECK(s["final_errors"] == first["final_errors"]);
+  CHECK(s["restarted_from"]["t"] == 0.05);
+  CHECK(s["plots"] == nlohmann::json::array({"profiles.png"}));
+  CHECK(fs::exists(out / "profiles.png"));
+}
+
+TEST_CASE("restart: a checkpoint with a NaN, negative or past-the-end time is refused (exit 2, file and field named)", "[restart][integration]") {
   const fs::path dir = scratch("restart-time");
   const fs::path out = dir / "out";
   REQUIRE(run_bounded(couette_args(out, {"--set", "time.t_end=0.05", "--set", "output.checkpoint_every=0.025"}), dir / "e1").code == 0);
@@ -145,10 +166,10 @@ TEST_CASE("restart: a checkpoint with a NaN, negative or final time is refused (
   const std::string file = (cp / "checkpoint.json").string();
   const nlohmann::json good = json_file(cp / "checkpoint.json");
 
-  // At t_end: nothing to continue.
-  auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r0").string()}, dir / "e");
+  // After t_end: nothing to continue.
+  auto r = run_bounded({"--restart", cp.string(), "--output", (dir / "r0").string(), "--set", "time.t_end=0.04"}, dir / "e");
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Catch::Matchers::Contains(file + ": t_bits: the checkpoint is at t = 0.050000 s, not before time.t_end"));
+  CHECK_THAT(r.err, Catch::Matchers::Contains(file + ": t_bits: the checkpoint is at t = 0.050000 s, after time.t_end"));
   for (const auto& [bits, shown] : std::vector<std::pair<std::string, std::string>>{
            {sphmol::encode_doubles({std::nan("")}), "nan"}, {sphmol::encode_doubles({-0.01}), "-0.010000"}}) {
     auto j = good;

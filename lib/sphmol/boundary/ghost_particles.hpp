@@ -188,6 +188,8 @@ class GhostGenerator final : public ParticleGenerator<D> {
     }
     return changed;
   }
+  // No viscous term reads the images' no-slip velocities (an inviscid fluid): they are not made.
+  void without_viscous_terms() { any_no_slip_ = false; }
   std::size_t count() const override { return source_.size(); }
   double max_wall_speed() const override {
     double s = 0.0;

@@ -190,25 +190,33 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
   if (disc.wall_model != "prescribed" && disc.boundary != "wall_particles")
     throw std::invalid_argument("discretization.wall_model: " + disc.wall_model + " needs boundary: wall_particles (got '" + disc.boundary +
                                 "'); use wall_model: prescribed");
-  if (disc.wall_model == "morris") add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
-  else if (disc.wall_model == "adami") {
+  // Fluids of several viscosities (Particles::viscosity): Morris' form with each particle's own mu.
+  const bool variable_mu = !particles.viscosity.empty();
+  // A viscous term of a fluid without viscosity adds zeros (viscosity: morris is the default): with the
+  // explicit integrators it is not built, nor are the wall velocities only it reads. The implicit ones
+  // keep it, as the implicit side of their split.
+  const bool viscous = disc.viscosity != "none" && (variable_mu || mu > 0.0 || config.time.implicit_viscosity());
+  if (ghosts && !viscous) ghosts->without_viscous_terms();
+  if (disc.wall_model == "adami") {
     // Adami et al. (2012): no-slip velocities for the viscous term, and the extrapolated pressure.
     if (disc.wall_pressure != "extrapolated")
       throw std::invalid_argument("discretization.wall_model: adami needs wall_pressure: extrapolated (got '" + disc.wall_pressure + "')");
     if (disc.viscosity == "strain_rate")
       throw std::invalid_argument("discretization.wall_model: adami needs viscosity: morris or none");
-    add("discretization.wall_model", std::make_unique<AdamiWallVelocity<D>>());
+    if (viscous) add("discretization.wall_model", std::make_unique<AdamiWallVelocity<D>>());
+  } else if (disc.wall_model == "morris") {
+    if (viscous) add("discretization.wall_model", std::make_unique<MorrisWallVelocity<D>>(disc.wall_beta_max, disc.viscosity == "strain_rate"));
   } else if (disc.wall_model != "prescribed")
     throw std::invalid_argument("discretization.wall_model: unsupported '" + disc.wall_model + "'");
   // Free-slip wall bodies: after the wall model, which sets every wall pair's factor.
-  if (disc.viscosity != "none" &&
+  if (viscous &&
       std::any_of(particles.free_slip_body.begin(), particles.free_slip_body.end(), [](std::uint8_t f) { return f != 0; }))
     add("discretization.viscosity", std::make_unique<FreeSlipWalls<D>>(particles.free_slip_body, disc.viscosity == "strain_rate"));
-  // Fluids of several viscosities (Particles::viscosity): Morris' form with each particle's own mu.
-  const bool variable_mu = !particles.viscosity.empty();
   if (variable_mu && disc.viscosity != "morris")
     throw std::invalid_argument("fluid bodies of their own kinematic_viscosity need discretization.viscosity: morris");
-  if (disc.viscosity == "strain_rate") {
+  if (!viscous) {
+    if (!wc_row) add("discretization.momentum", pressure());
+  } else if (disc.viscosity == "strain_rate") {
     add("discretization.viscosity", std::make_unique<StrainRate<D>>());
     add("discretization.momentum", pressure());
     add("discretization.viscosity", std::make_unique<StrainRateViscosity117<D>>(mu));
@@ -232,8 +240,6 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
       else if (disc.laplacian_correction == "none") morris(std::integral_constant<LC, LC::none>{}, nullptr);
       else throw std::invalid_argument("discretization.laplacian_correction: unsupported '" + disc.laplacian_correction + "'");
     }
-  } else if (disc.viscosity == "none") {
-    if (!wc_row) add("discretization.momentum", pressure());
   } else {
     throw std::invalid_argument("discretization.viscosity: unsupported '" + disc.viscosity + "'");
   }

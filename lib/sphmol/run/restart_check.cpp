@@ -71,9 +71,11 @@ std::vector<ConfigChange> config_changes(const Config& before, const Config& aft
 void check_restart(const Checkpoint& cp, const Config& config, const std::string& checkpoint_dir,
                    bool allow_physics_change) {
   const std::string where = (std::filesystem::path(checkpoint_dir) / "checkpoint.json").string() + ": ";
-  if (!(cp.t < config.time.t_end))
+  // At t_end there is nothing to integrate, but the run's end can still be done: a run stopped by a
+  // signal while it plotted left such a checkpoint.
+  if (!(cp.t <= config.time.t_end))
     throw CheckpointError(where + "t_bits: the checkpoint is at t = " + std::to_string(cp.t) +
-                          " s, not before time.t_end = " + std::to_string(config.time.t_end) +
+                          " s, after time.t_end = " + std::to_string(config.time.t_end) +
                           " s: nothing to continue (raise time.t_end with --set)");
   Config written;
   try {

@@ -26,7 +26,8 @@ std::vector<ConfigChange> config_changes(const Config& before, const Config& aft
 bool changes_physics(const std::string& key);
 
 // Throws CheckpointError "DIR/checkpoint.json: field: message" if `cp` cannot be continued with
-// `config` (time not before t_end; physics changed and not allowed).
+// `config` (time after t_end; physics changed and not allowed). A checkpoint at t_end is accepted: the
+// restart does the run's end (summary, plots) again.
 void check_restart(const Checkpoint& cp, const Config& config, const std::string& checkpoint_dir,
                    bool allow_physics_change);
 

@@ -192,6 +192,9 @@ nlohmann::json run_with(Case<D>& c, const Config& config, const RunOptions& opt,
       warnings.push_back(w.str());
       if (opt.log && root) *opt.log << "warning: " << warnings.back() << '\n';
     }
+    if (!(t < config.time.t_end) && opt.log && root)
+      *opt.log << "the checkpoint is at time.t_end = " << config.time.t_end << " s: nothing to integrate; the run's end "
+               << "(summary, plots) is done again (raise time.t_end with --set to continue the run)\n";
   }
   // Everything that can reject the input (scene, first RHS evaluation, checkpoint) has run: only
   // now does the output directory appear, locked for this run (run/output_folder.hpp).
