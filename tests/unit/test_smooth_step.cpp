@@ -2,6 +2,8 @@
 // switch (physics/artificial_viscosity.hpp), built on the C^6 polynomial step of core/polynomial_step.hpp.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "sphmol/core/smooth_step.hpp"
@@ -56,6 +58,25 @@ TEST_CASE("smooth min(x, 0), the switch at offset 0: exact outside the band, of 
     CHECK(switched_vx(x, w, 0.0) > x);
   }
   for (double x : {-2.0, -1e-300, 0.0, 1e-300, 3.0}) CHECK(switched_vx(x, 0.0, 0.0) == std::min(x, 0.0));
+}
+
+TEMPLATE_TEST_CASE("the sharp switch's shortcut is the width-0 switch bit for bit, signed zeros and NaN included",
+                   "[smooth_step][physics]", MonaghanPi, SignalVelocityPi) {
+  // ArtificialViscosity takes Pi::sharp (no polynomial) for its rows at width 0.
+  TestType pi{};
+  pi.alpha = 1.0;
+  pi.beta = 2.0;
+  if constexpr (std::is_same_v<TestType, MonaghanPi>) pi.eta = 0.1;
+  const auto bits = [](double x) {
+    std::uint64_t u;
+    std::memcpy(&u, &x, sizeof u);
+    return u;
+  };
+  for (const double vx : {-3.0, -1e-300, -0.0, 0.0, 1e-300, 2.0, std::numeric_limits<double>::quiet_NaN()})
+    for (const double r2 : {0.0, 1e-4, 2.5}) {
+      CAPTURE(vx, r2);
+      CHECK(bits(pi.sharp(vx, r2, 0.013, 1.7, 998.0)) == bits(pi(vx, r2, 0.013, 1.7, 998.0)));
+    }
 }
 
 TEMPLATE_TEST_CASE("smooth viscosity switch: Monaghan outside the band, zero when receding, Pi >= 0, smooth at 0",

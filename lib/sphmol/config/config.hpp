@@ -164,11 +164,11 @@ struct DiscretizationConfig {
   // bit-identical, off only to measure the gain.
   bool combine_terms = true;
   // Whether the scene has the terms combine_terms merges: continuity density (mass form), optional
-  // plain delta-SPH, the 117 pressure gradient and Monaghan's 1992 viscosity, with no physical
+  // plain delta-SPH, the 117 pressure gradient and optional Monaghan 1992 viscosity, with no physical
   // viscosity and no energy equation (the dam break's formulation).
   bool has_combinable_terms() const {
     return density == "continuity" && continuity == "mass" && momentum == "symmetric_117" && viscosity == "none" &&
-           artificial_viscosity.enabled && artificial_viscosity.form == "monaghan_1992" && !energy &&
+           (!artificial_viscosity.enabled || artificial_viscosity.form == "monaghan_1992") && !energy &&
            !(density_diffusion > 0.0 && density_diffusion_form == "hydrostatic_corrected");
   }
   ArtificialViscosityConfig artificial_viscosity;

@@ -624,8 +624,8 @@ Config validate(const YAML::Node& root, const YamlOrigin& origin) {
                                         d.neighbor_search + "')");
     if (disc.has("combine_terms") && !d.combine_terms && !d.has_combinable_terms())
       c.notices.push_back(disc.where("combine_terms") + ": has no effect: nothing to combine here (it merges continuity "
-                          "density with continuity: mass, the symmetric_117 pressure gradient and monaghan_1992 artificial "
-                          "viscosity, where there is no physical viscosity, energy equation or hydrostatic_corrected diffusion)");
+                          "density with continuity: mass, the symmetric_117 pressure gradient and, if any, monaghan_1992 "
+                          "artificial viscosity, where there is no physical viscosity, energy equation or hydrostatic_corrected diffusion)");
   }
 
   // time

@@ -142,16 +142,19 @@ std::unique_ptr<SphSystem<D>> assemble_system(const Config& config, Particles<D>
       throw ConfigError("discretization.momentum: integral_approach is not available with density_diffusion");
   }
   const auto& av = disc.artificial_viscosity;
-  // Continuity, delta-SPH, pressure and artificial viscosity in one pair loop (the dam break's
-  // formulation), equal to the four separate terms to round-off.
+  // Continuity, delta-SPH, pressure and artificial viscosity (each of the last three optional) in one
+  // pair loop (the dam break's formulation), equal to the separate terms to round-off.
   const bool signal_velocity = av.form == "monaghan_1997";
   const bool hydrostatic_diffusion = disc.density_diffusion > 0.0 && disc.density_diffusion_form == "hydrostatic_corrected";
   const bool wc_row = disc.combine_terms && disc.has_combinable_terms();
   const MonaghanPi monaghan{av.alpha, av.beta, av.eta, av.band_width(), av.band_offset()};
   const double diffusion = disc.density_diffusion * h * fluid.eos.sound_speed;
   if (wc_row) {
-    if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, monaghan));
-    else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, monaghan));
+    // Without artificial viscosity the row runs with Pi_ij = 0: alpha = beta = 0, and an eta that keeps
+    // its denominator positive for coincident particles.
+    const MonaghanPi pi = av.enabled ? monaghan : MonaghanPi{0.0, 0.0, 0.1};
+    if (diffusion > 0.0) add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, true>>(diffusion, pi, av.enabled));
+    else add("discretization.combine_terms", std::make_unique<WeaklyCompressibleRow<D, false>>(0.0, pi, av.enabled));
   }
   // The IA matrices: after the densities of every particle (ghost copies included) and before any
   // term that reads them.
